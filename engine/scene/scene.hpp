@@ -1,0 +1,181 @@
+// Scene: the CPU description of one frame (camera, objects, materials, lights, environment,
+// render settings). Knows nothing of OpenGL. Loaded from JSON by scene_loader.hpp; the format is
+// documented in docs/scene-format.md.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace hv {
+
+struct Camera {
+  glm::vec3 position{0.0f, 1.0f, 5.0f};
+  glm::vec3 target{0.0f, 0.0f, 0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float fov_y_deg = 45.0f;  // vertical field of view
+  float near_plane = 0.05f;
+  float far_plane = 200.0f;
+};
+
+// Shading-model IDs as stored in the G-buffer (see docs/gbuffer.md). 0 marks background pixels.
+// Values are spaced so clear coat / cloth etc. fit without a new render target.
+enum class ShadingModel : uint8_t { Background = 0, Unlit = 1, DefaultLit = 2 };
+
+// A decoded image owned by the scene (glTF textures). 8-bit RGBA, row 0 = top.
+struct ImageData {
+  std::string name;
+  int width = 0;
+  int height = 0;
+  std::vector<uint8_t> rgba;
+};
+
+enum class Wrap : uint8_t { Repeat, ClampToEdge, MirroredRepeat };
+enum class Filter : uint8_t { Nearest, Linear };
+
+struct Sampler {
+  Wrap wrap_s = Wrap::Repeat;
+  Wrap wrap_t = Wrap::Repeat;
+  Filter mag = Filter::Linear;
+  Filter min = Filter::Linear;
+  bool mipmaps = true;
+};
+
+struct TextureRef {
+  int image = -1;    // index into Scene::images; -1 = none
+  int texcoord = 0;  // 0 or 1
+  Sampler sampler;
+  float scale = 1.0f;  // normalTexture.scale / occlusionTexture.strength
+  bool valid() const { return image >= 0; }
+};
+
+enum class AlphaMode : uint8_t { Opaque, Mask, Blend };
+
+struct Material {
+  std::string name;
+  glm::vec3 base_color{0.8f};  // linear
+  float metallic = 0.0f;
+  float roughness = 0.5f;  // perceptual; alpha = roughness^2 (Karis 2013)
+  float cavity = 1.0f;     // small-scale occlusion, 1 = none
+  glm::vec3 emissive{0.0f};  // linear radiance added as-is
+  ShadingModel model = ShadingModel::DefaultLit;
+  AlphaMode alpha_mode = AlphaMode::Opaque;
+  float alpha_cutoff = 0.5f;
+  float base_alpha = 1.0f;
+  bool double_sided = false;
+  TextureRef base_color_tex;          // sRGB
+  TextureRef metallic_roughness_tex;  // B = metallic, G = roughness
+  TextureRef normal_tex;
+  TextureRef occlusion_tex;  // R -> Cavity
+  TextureRef emissive_tex;   // sRGB
+};
+
+struct Vertex {
+  glm::vec3 position{0.0f};
+  glm::vec3 normal{0.0f, 1.0f, 0.0f};
+  glm::vec4 tangent{1.0f, 0.0f, 0.0f, 1.0f};  // w = handedness
+  glm::vec2 uv0{0.0f};
+  glm::vec2 uv1{0.0f};
+};
+
+// Triangle list in object space.
+struct Mesh {
+  std::string name;
+  std::vector<Vertex> vertices;
+  std::vector<uint32_t> indices;
+  int material = 0;  // index into Scene::materials
+};
+
+struct Object {
+  std::string name;
+  glm::mat4 transform{1.0f};  // object -> world
+  std::vector<int> meshes;    // indices into Scene::meshes
+};
+
+enum class LightType : uint8_t { Point = 0, Sphere = 1, Tube = 2 };
+
+// Physical meaning of each field: docs/lights.md.
+struct Light {
+  LightType type = LightType::Point;
+  glm::vec3 position{0.0f};
+  glm::vec3 color{1.0f};      // linear RGB, multiplied by intensity
+  float intensity = 10.0f;    // radiant intensity I (W/sr per unit color); see docs/lights.md
+  float radius = 0.0f;        // sphere radius / tube capsule radius
+  float length = 0.0f;        // tube segment length
+  glm::vec3 axis{1.0f, 0.0f, 0.0f};  // tube segment direction (normalized on load)
+  float range = 10.0f;        // falloff window radius R of Karis eq. 9; also the culling bound
+};
+
+enum class EnvironmentKind : uint8_t { None, Uniform, Sky, HdrFile };
+
+struct Environment {
+  EnvironmentKind kind = EnvironmentKind::Sky;
+  std::string path;             // HdrFile: absolute path after loading
+  glm::vec3 color{1.0f};        // Uniform: radiance
+  float intensity = 1.0f;
+  float rotation_deg = 0.0f;    // about +Y
+  int cube_size = 256;
+  int prefilter_samples = 256;
+};
+
+// Term choices; defaults are Karis 2013's choice. Each maps to a define (docs/brdf.md).
+enum class DistributionTerm : uint8_t { GGX, Beckmann, BlinnPhong };
+enum class VisibilityTerm : uint8_t {
+  SchlickGGX,           // k = alpha/2 (Karis 2013 eq. 4; remap_roughness for analytic lights)
+  SmithGGXCorrelated,   // Heitz 2014 exact height-correlated
+  SmithGGXCorrelatedFast,  // Hammon 2017 / UE4 Vis_SmithJointApprox
+  SmithGGXSeparable,    // Walter 2007 exact separable G1 for GGX
+  SmithBeckmannSeparable,  // Walter 2007 rational approximation
+  CookTorrance,
+  Implicit
+};
+enum class FresnelTerm : uint8_t { SchlickPow5, SchlickSG, Exact, SchlickF90Occlusion };
+enum class DiffuseTerm : uint8_t { Lambert, Burley };
+enum class SphereDiffuse : uint8_t { KarisPoint, HorizonCorrect };
+enum class TubeSpecular : uint8_t { ClosestPointEq19, SmallestAngleEq18 };
+enum class Culling : uint8_t { Tiled, BruteForce };
+enum class ToneMap : uint8_t { Reinhard, ReinhardLuminance, None };
+enum class Gamma : uint8_t { Gamma22, SRGB };
+enum class EnvBrdf : uint8_t { Table, Analytic };
+enum class Irradiance : uint8_t { SH9, Cubemap };
+
+struct RenderSettings {
+  int width = 960;
+  int height = 540;
+  float exposure = 1.0f;
+  ToneMap tone_map = ToneMap::Reinhard;
+  Gamma gamma = Gamma::Gamma22;
+  bool dither = true;
+  DistributionTerm d = DistributionTerm::GGX;
+  VisibilityTerm v = VisibilityTerm::SchlickGGX;
+  FresnelTerm f = FresnelTerm::SchlickPow5;
+  DiffuseTerm diffuse = DiffuseTerm::Lambert;
+  bool remap_roughness = true;       // Disney (roughness+1)/2 for analytic lights (Karis eq. 4)
+  bool falloff_plus_one = true;      // UE4's 1/(d^2+1); false = physical 1/d^2 (accuracy mode)
+  SphereDiffuse sphere_diffuse = SphereDiffuse::KarisPoint;
+  bool sphere_normalization = true;  // (alpha/alpha')^2, Karis eqs. 10 and 14
+  TubeSpecular tube_specular = TubeSpecular::ClosestPointEq19;
+  bool tube_normalization = true;    // alpha/alpha', Karis eq. 20
+  Culling culling = Culling::Tiled;
+  EnvBrdf env_brdf = EnvBrdf::Table;
+  bool energy_compensation = false;
+  Irradiance irradiance = Irradiance::SH9;
+  bool specular_occlusion = false;
+};
+
+struct Scene {
+  std::string source_path;  // the file it was loaded from (for error messages, relative paths)
+  Camera camera;
+  std::vector<Material> materials;
+  std::vector<Mesh> meshes;
+  std::vector<Object> objects;
+  std::vector<ImageData> images;
+  std::vector<Light> lights;
+  Environment environment;
+  RenderSettings settings;
+};
+
+}  // namespace hv

@@ -1,0 +1,1 @@
+#include "shading/shading.hpp"

@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# Configures and builds halfvec in ./build (Release, warnings as errors when HV_WERROR=ON).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+shared_assets=""
+if [ -d ../shared/assets ]; then shared_assets="-DHV_ASSETS_DIR=$(cd ../shared/assets && pwd)"; fi
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DHV_WERROR="${HV_WERROR:-ON}" $shared_assets >/dev/null
+cmake --build build -j"$(nproc)"
