@@ -58,8 +58,8 @@ struct Material {
   std::string name;
   glm::vec3 base_color{0.8f};  // linear
   float metallic = 0.0f;
-  float roughness = 0.5f;  // perceptual; alpha = roughness^2 (Karis 2013)
-  float cavity = 1.0f;     // small-scale occlusion, 1 = none
+  float roughness = 0.5f;    // perceptual; alpha = roughness^2 (Karis 2013)
+  float cavity = 1.0f;       // small-scale occlusion, 1 = none
   glm::vec3 emissive{0.0f};  // linear radiance added as-is
   ShadingModel model = ShadingModel::DefaultLit;
   AlphaMode alpha_mode = AlphaMode::Opaque;
@@ -101,22 +101,22 @@ enum class LightType : uint8_t { Point = 0, Sphere = 1, Tube = 2 };
 struct Light {
   LightType type = LightType::Point;
   glm::vec3 position{0.0f};
-  glm::vec3 color{1.0f};      // linear RGB, multiplied by intensity
-  float intensity = 10.0f;    // radiant intensity I (W/sr per unit color); see docs/lights.md
-  float radius = 0.0f;        // sphere radius / tube capsule radius
-  float length = 0.0f;        // tube segment length
+  glm::vec3 color{1.0f};    // linear RGB, multiplied by intensity
+  float intensity = 10.0f;  // radiant intensity I (W/sr per unit color); see docs/lights.md
+  float radius = 0.0f;      // sphere radius / tube capsule radius
+  float length = 0.0f;      // tube segment length
   glm::vec3 axis{1.0f, 0.0f, 0.0f};  // tube segment direction (normalized on load)
-  float range = 10.0f;        // falloff window radius R of Karis eq. 9; also the culling bound
+  float range = 10.0f;  // falloff window radius R of Karis eq. 9; also the culling bound
 };
 
 enum class EnvironmentKind : uint8_t { None, Uniform, Sky, HdrFile };
 
 struct Environment {
   EnvironmentKind kind = EnvironmentKind::Sky;
-  std::string path;             // HdrFile: absolute path after loading
-  glm::vec3 color{1.0f};        // Uniform: radiance
+  std::string path;       // HdrFile: absolute path after loading
+  glm::vec3 color{1.0f};  // Uniform: radiance
   float intensity = 1.0f;
-  float rotation_deg = 0.0f;    // about +Y
+  float rotation_deg = 0.0f;  // about +Y
   int cube_size = 256;
   int prefilter_samples = 256;
 };
@@ -124,10 +124,10 @@ struct Environment {
 // Term choices; defaults are Karis 2013's choice. Each maps to a define (docs/brdf.md).
 enum class DistributionTerm : uint8_t { GGX, Beckmann, BlinnPhong };
 enum class VisibilityTerm : uint8_t {
-  SchlickGGX,           // k = alpha/2 (Karis 2013 eq. 4; remap_roughness for analytic lights)
-  SmithGGXCorrelated,   // Heitz 2014 exact height-correlated
+  SchlickGGX,              // k = alpha/2 (Karis 2013 eq. 4; remap_roughness for analytic lights)
+  SmithGGXCorrelated,      // Heitz 2014 exact height-correlated
   SmithGGXCorrelatedFast,  // Hammon 2017 / UE4 Vis_SmithJointApprox
-  SmithGGXSeparable,    // Walter 2007 exact separable G1 for GGX
+  SmithGGXSeparable,       // Walter 2007 exact separable G1 for GGX
   SmithBeckmannSeparable,  // Walter 2007 rational approximation
   CookTorrance,
   Implicit
@@ -153,12 +153,12 @@ struct RenderSettings {
   VisibilityTerm v = VisibilityTerm::SchlickGGX;
   FresnelTerm f = FresnelTerm::SchlickPow5;
   DiffuseTerm diffuse = DiffuseTerm::Lambert;
-  bool remap_roughness = true;       // Disney (roughness+1)/2 for analytic lights (Karis eq. 4)
-  bool falloff_plus_one = true;      // UE4's 1/(d^2+1); false = physical 1/d^2 (accuracy mode)
+  bool remap_roughness = true;   // Disney (roughness+1)/2 for analytic lights (Karis eq. 4)
+  bool falloff_plus_one = true;  // UE4's 1/(d^2+1); false = physical 1/d^2 (accuracy mode)
   SphereDiffuse sphere_diffuse = SphereDiffuse::KarisPoint;
   bool sphere_normalization = true;  // (alpha/alpha')^2, Karis eqs. 10 and 14
   TubeSpecular tube_specular = TubeSpecular::ClosestPointEq19;
-  bool tube_normalization = true;    // alpha/alpha', Karis eq. 20
+  bool tube_normalization = true;  // alpha/alpha', Karis eq. 20
   Culling culling = Culling::Tiled;
   EnvBrdf env_brdf = EnvBrdf::Table;
   bool energy_compensation = false;

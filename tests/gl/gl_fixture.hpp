@@ -1,0 +1,13 @@
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "platform/context.hpp"
+
+// One headless context per test binary (creating EGL contexts repeatedly is slow on llvmpipe).
+inline hv::Context& testContext() {
+  static std::unique_ptr<hv::Context> ctx = hv::createHeadlessContext();
+  return *ctx;
+}
