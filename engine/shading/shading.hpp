@@ -11,6 +11,7 @@
 namespace hv::glsl {
 namespace {
 #include "../../shaders/common/math.glsl"
+#include "../../shaders/common/gbuffer.glsl"
 }  // namespace
 }  // namespace hv::glsl
 #pragma GCC diagnostic pop
