@@ -1,0 +1,175 @@
+#include "render/renderer.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include "render/pipeline_state.hpp"
+#include "render/targets.hpp"
+#include "shading/brdf.hpp"
+#include "shading/shading.hpp"
+
+namespace hv::render {
+
+namespace {
+constexpr const char* kDebugViewNames[] = {"none",      "basecolor", "metallic",
+                                           "roughness", "cavity",    "normal",
+                                           "depth",     "shading_model", "lights_per_tile"};
+}
+
+std::optional<DebugView> debugViewFromString(const std::string& s) {
+  for (size_t i = 0; i < std::size(kDebugViewNames); ++i) {
+    if (s == kDebugViewNames[i]) return static_cast<DebugView>(i);
+  }
+  return std::nullopt;
+}
+
+const char* toString(DebugView v) { return kDebugViewNames[static_cast<size_t>(v)]; }
+
+Renderer::Renderer() : targets_(std::make_unique<Targets>()) {
+  frame_ubo_ = gl::createBuffer("frame uniforms", sizeof(FrameBlock));
+  empty_vao_ = gl::createVertexArray("fullscreen triangle");
+  nearest_ = gl::createSampler("nearest clamp");
+  glSamplerParameteri(nearest_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glSamplerParameteri(nearest_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glSamplerParameteri(nearest_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(nearest_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+Renderer::~Renderer() = default;
+
+void Renderer::setScene(const Scene& scene) {
+  scene_ = &scene;
+  gpu_ = std::make_unique<GpuScene>(scene);
+  setEnvironment(scene);
+}
+
+void Renderer::updateMaterials() {
+  if (gpu_) gpu_->updateMaterials(*scene_);
+}
+
+void Renderer::updateLights() {
+  if (gpu_) gpu_->updateLights(*scene_);
+}
+
+gl::DefineSet Renderer::lightingDefines() const {
+  gl::DefineSet d;
+  for (auto& [k, v] : brdfDefines(scene_->settings)) d.push_back({k, v});
+  bool has[3] = {false, false, false};
+  for (const Light& l : scene_->lights) has[static_cast<int>(l.type)] = true;
+  d.push_back({"HV_HAS_POINT_LIGHTS", has[0] ? "1" : "0"});
+  d.push_back({"HV_HAS_SPHERE_LIGHTS", has[1] ? "1" : "0"});
+  d.push_back({"HV_HAS_TUBE_LIGHTS", has[2] ? "1" : "0"});
+  d.push_back({"HV_CULLING_BRUTE_FORCE",
+               scene_->settings.culling == Culling::BruteForce ? "1" : "0"});
+  return d;
+}
+
+void Renderer::ensureTargets(int w, int h) {
+  Targets& t = *targets_;
+  if (t.width == w && t.height == h && t.gbuffer) return;
+  t = Targets{};
+  t.width = w;
+  t.height = h;
+  t.base_cavity = gl::createTexture2D("gbuffer base color + cavity", GL_SRGB8_ALPHA8, w, h);
+  t.material = gl::createTexture2D("gbuffer metallic roughness model", GL_RGBA8, w, h);
+  t.normal = gl::createTexture2D("gbuffer octahedral normal", GL_RG16_SNORM, w, h);
+  t.depth = gl::createTexture2D("gbuffer depth (reversed Z)", GL_DEPTH_COMPONENT32F, w, h);
+  t.hdr = gl::createTexture2D("hdr accumulation", GL_RGBA16F, w, h);
+  t.ldr = gl::createTexture2D("tone-mapped output", GL_RGBA8, w, h);
+  t.gbuffer = gl::createFramebuffer("gbuffer", {{&t.base_cavity}, {&t.material}, {&t.normal}, {&t.hdr}},
+                                    &t.depth);
+  t.output = gl::createFramebuffer("output", {{&t.ldr}});
+}
+
+FrameStats Renderer::render(int width, int height, DebugView view,
+                            std::optional<GLuint> present_fbo) {
+  if (!scene_) throw gl::GlError("Renderer::render called before setScene");
+  if (width <= 0 || height <= 0) return {};
+  ensureTargets(width, height);
+  FrameBlock frame = makeFrameBlock(*scene_, width, height);
+  frame.counts.x = static_cast<uint32_t>(gpu_->lightCount());
+  frame.counts.z = static_cast<uint32_t>(view);
+  glNamedBufferSubData(frame_ubo_.id(), 0, sizeof frame, &frame);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 0, frame_ubo_.id());
+
+  gbufferPass(frame);
+  if (scene_->settings.culling == Culling::Tiled || view == DebugView::LightsPerTile) {
+    cullLightsPass(frame);
+  }
+  lightPass();
+  ambientPass();
+  tonemapPass(view, present_fbo, width, height);
+  applyState(PipelineState{});
+
+  FrameStats stats;
+  stats.passes = timer_.resolve();
+  for (auto& [name, ms] : stats.passes) stats.total_ms += ms;
+  stats.width = width;
+  stats.height = height;
+  return stats;
+}
+
+namespace {
+// GL rows go bottom-up; images here are top-down.
+template <class T>
+void flipRows(std::vector<T>& v, int w, int h, int comps) {
+  for (int y = 0; y < h / 2; ++y) {
+    std::swap_ranges(v.begin() + size_t(y) * w * comps, v.begin() + size_t(y + 1) * w * comps,
+                     v.begin() + size_t(h - 1 - y) * w * comps);
+  }
+}
+}  // namespace
+
+ImageRGBf Renderer::readHdr() const {
+  const Targets& t = *targets_;
+  std::vector<float> px(size_t(t.width) * t.height * 3);
+  glGetTextureImage(t.hdr.id(), 0, GL_RGB, GL_FLOAT, GLsizei(px.size() * sizeof(float)), px.data());
+  flipRows(px, t.width, t.height, 3);
+  ImageRGBf img = makeImageRGBf(t.width, t.height);
+  for (size_t i = 0; i < img.px.size(); ++i) img.px[i] = {px[3 * i], px[3 * i + 1], px[3 * i + 2]};
+  return img;
+}
+
+ImageRGBA8 Renderer::readLdr() const {
+  const Targets& t = *targets_;
+  ImageRGBA8 img = makeImageRGBA8(t.width, t.height);
+  glGetTextureImage(t.ldr.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(img.px.size()), img.px.data());
+  flipRows(img.px, t.width, t.height, 4);
+  return img;
+}
+
+GBufferReadback Renderer::readGBuffer() const {
+  const Targets& t = *targets_;
+  const size_t n = size_t(t.width) * t.height;
+  GBufferReadback g;
+  g.width = t.width;
+  g.height = t.height;
+  std::vector<float> base(n * 4), mat(n * 4), nrm(n * 2), depth(n);
+  // Reading the sRGB texture as float returns linear values (GL 4.5 spec 8.24).
+  glGetTextureImage(t.base_cavity.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(base.size() * 4), base.data());
+  glGetTextureImage(t.material.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(mat.size() * 4), mat.data());
+  glGetTextureImage(t.normal.id(), 0, GL_RG, GL_FLOAT, GLsizei(nrm.size() * 4), nrm.data());
+  glGetTextureImage(t.depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth.size() * 4), depth.data());
+  flipRows(base, t.width, t.height, 4);
+  flipRows(mat, t.width, t.height, 4);
+  flipRows(nrm, t.width, t.height, 2);
+  flipRows(depth, t.width, t.height, 1);
+  g.base_color.resize(n);
+  g.metallic.resize(n);
+  g.roughness.resize(n);
+  g.cavity.resize(n);
+  g.normal.resize(n);
+  g.model.resize(n);
+  g.depth = depth;
+  for (size_t i = 0; i < n; ++i) {
+    g.base_color[i] = {base[4 * i], base[4 * i + 1], base[4 * i + 2]};
+    g.cavity[i] = base[4 * i + 3];
+    g.metallic[i] = mat[4 * i];
+    g.roughness[i] = mat[4 * i + 1];
+    g.model[i] = static_cast<uint32_t>(mat[4 * i + 2] * 255.0f + 0.5f);
+    g.normal[i] = glsl::octDecode(glsl::vec2(nrm[2 * i], nrm[2 * i + 1]));
+  }
+  return g;
+}
+
+}  // namespace hv::render

@@ -1,0 +1,108 @@
+// The deferred renderer: G-buffer -> light culling -> light -> ambient -> tone map. It draws into
+// whatever context is current (headless EGL or a window) and never asks which.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "gl/program.hpp"
+#include "gl/timer.hpp"
+#include "image/image.hpp"
+#include "render/frame_data.hpp"
+#include "render/gpu_scene.hpp"
+#include "scene/scene.hpp"
+
+namespace hv::render {
+
+enum class DebugView : uint32_t {
+  None = 0,
+  BaseColor,
+  Metallic,
+  Roughness,
+  Cavity,
+  Normal,
+  Depth,
+  ShadingModel,
+  LightsPerTile
+};
+std::optional<DebugView> debugViewFromString(const std::string& s);
+const char* toString(DebugView v);
+
+struct FrameStats {
+  std::vector<std::pair<std::string, double>> passes;  // GPU ms per pass, in order
+  double total_ms = 0.0;
+  int width = 0, height = 0;
+  size_t tile_light_entries = 0;  // sum over tiles of lights in the tile's list
+  size_t lit_pixels = 0;
+  size_t light_pixel_evaluations = 0;  // lit pixels x lights in their tile (tiled) or all (brute)
+};
+
+// G-buffer contents read back and decoded, per pixel (row 0 = top).
+struct GBufferReadback {
+  int width = 0, height = 0;
+  std::vector<glm::vec3> base_color;  // linear
+  std::vector<float> metallic, roughness, cavity, depth;
+  std::vector<glm::vec3> normal;
+  std::vector<uint32_t> model;
+};
+
+constexpr int kGBufferBytesPerPixel = 16;  // RGBA8 + RGBA8 + RG16 + D32F (docs/gbuffer.md)
+
+class Renderer {
+ public:
+  Renderer();  // needs a current GL 4.5 context
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Uploads geometry, materials, lights and the environment. The scene must outlive the renderer
+  // or the next setScene call.
+  void setScene(const Scene& scene);
+  // Re-upload after the scene's materials or lights were edited in place.
+  void updateMaterials();
+  void updateLights();
+
+  // Renders one frame at width x height. The tone-mapped result stays in an internal RGBA8 target
+  // unless `present_fbo` is given (0 = a window's default framebuffer).
+  FrameStats render(int width, int height, DebugView view = DebugView::None,
+                    std::optional<GLuint> present_fbo = std::nullopt);
+
+  ImageRGBf readHdr() const;
+  ImageRGBA8 readLdr() const;
+  GBufferReadback readGBuffer() const;
+
+  const gl::ProgramCache& programs() const { return programs_; }
+  gl::ProgramCache& programs() { return programs_; }
+  // Defines every light/ambient program of the current scene is compiled with.
+  gl::DefineSet lightingDefines() const;
+
+ private:
+  struct Targets;
+  void ensureTargets(int width, int height);
+  void setEnvironment(const Scene& scene);
+  void gbufferPass(const FrameBlock& frame);
+  void cullLightsPass(const FrameBlock& frame);
+  void lightPass();
+  void ambientPass();
+  void tonemapPass(DebugView view, std::optional<GLuint> present_fbo, int width, int height);
+
+  const Scene* scene_ = nullptr;
+  std::unique_ptr<GpuScene> gpu_;
+  std::unique_ptr<Targets> targets_;
+  gl::ProgramCache programs_;
+  gl::PassTimer timer_;
+  gl::Buffer frame_ubo_;
+  gl::Buffer tile_ranges_, tile_indices_;
+  size_t tile_capacity_ = 0;        // uints in the tile index list (grows on overflow)
+  size_t tile_ranges_capacity_ = 0;  // bytes
+  size_t tile_entries_ = 0;          // entries the last culling pass produced
+  gl::VertexArray empty_vao_;
+  gl::Sampler nearest_;
+  struct Environment;
+  std::unique_ptr<Environment> env_;
+};
+
+}  // namespace hv::render

@@ -1,0 +1,27 @@
+// Per-frame uniforms (binding 0) and the resource bindings every pass agrees on.
+// C++ mirror: engine/render/frame_data.hpp (FrameBlock), checked by static_asserts there.
+#ifndef HV_FRAME_GLSL
+#define HV_FRAME_GLSL
+
+layout(std140, binding = 0) uniform FrameBlock {
+  mat4 u_view;
+  mat4 u_proj;
+  mat4 u_view_proj;
+  mat4 u_inv_view_proj;
+  vec4 u_camera_pos;   // xyz world position
+  uvec4 u_viewport;    // width, height, tiles x, tiles y
+  uvec4 u_counts;      // lights, tile-index capacity, debug view, unused
+  vec4 u_output;       // exposure, dither strength, environment intensity, environment rotation (rad)
+  vec4 u_near_params;  // near plane, unused...
+};
+
+// Storage-buffer bindings.
+#define HV_BINDING_MATERIALS 1
+#define HV_BINDING_LIGHTS 2
+#define HV_BINDING_TILE_RANGES 4
+#define HV_BINDING_TILE_INDICES 5
+
+// Light culling tile size in pixels (also the shading workgroup size).
+#define HV_TILE_SIZE 16
+
+#endif

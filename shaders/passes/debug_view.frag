@@ -1,0 +1,49 @@
+#version 450 core
+// Debug views of the G-buffer channels and of the light culling (u_counts.z selects,
+// hv::render::DebugView). Values are shown as stored, without tone mapping.
+#include "../common/frame.glsl"
+#include "../common/gbuffer.glsl"
+
+layout(binding = 0) uniform sampler2D t_base_cavity;
+layout(binding = 1) uniform sampler2D t_material;
+layout(binding = 2) uniform sampler2D t_normal;
+layout(binding = 3) uniform sampler2D t_depth;
+layout(std430, binding = HV_BINDING_TILE_RANGES) readonly buffer TileRangeBlock { uvec2 tile_ranges[]; };
+
+layout(location = 0) in vec2 v_uv;
+layout(location = 0) out vec4 o_color;
+
+vec3 heat(float t) {  // blue -> green -> red
+  t = clamp(t, 0.0, 1.0);
+  return clamp(vec3(2.0 * t - 0.5, 1.0 - abs(2.0 * t - 1.0) * 1.2, 1.5 - 2.0 * t), 0.0, 1.0);
+}
+
+void main() {
+  ivec2 px = ivec2(gl_FragCoord.xy);
+  vec4 bc = texelFetch(t_base_cavity, px, 0);
+  vec4 mat = texelFetch(t_material, px, 0);
+  uint model = uint(mat.b * 255.0 + 0.5);
+  vec3 c = vec3(0.0);
+  switch (u_counts.z) {
+    case 1u: c = pow(bc.rgb, vec3(1.0 / 2.2)); break;  // base color, display-encoded
+    case 2u: c = vec3(mat.r); break;
+    case 3u: c = vec3(mat.g); break;
+    case 4u: c = vec3(bc.a); break;
+    case 5u: c = model == HV_MODEL_BACKGROUND ? vec3(0.0)
+                                              : octDecode(texelFetch(t_normal, px, 0).xy) * 0.5 + 0.5; break;
+    case 6u: {
+      float d = texelFetch(t_depth, px, 0).r;  // reversed Z: show view distance on a log scale
+      c = d > 0.0 ? vec3(clamp(1.0 - log2(u_near_params.x / d + 1.0) / 10.0, 0.0, 1.0)) : vec3(0.0);
+      break;
+    }
+    case 7u: c = model == HV_MODEL_BACKGROUND ? vec3(0.0)
+               : model == HV_MODEL_UNLIT ? vec3(1.0, 0.8, 0.2) : vec3(0.2, 0.6, 1.0); break;
+    case 8u: {
+      uvec2 tile = uvec2(px) / uint(HV_TILE_SIZE);
+      uint n = tile_ranges[tile.y * u_viewport.z + tile.x].y;
+      c = n == 0u ? vec3(0.0) : heat(log2(float(n) + 1.0) / 10.0);  // 1 .. 1023 lights
+      break;
+    }
+  }
+  o_color = vec4(c, 1.0);
+}

@@ -1,0 +1,25 @@
+#version 450 core
+#include "../common/frame.glsl"
+
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec4 a_tangent;
+layout(location = 3) in vec2 a_uv0;
+layout(location = 4) in vec2 a_uv1;
+
+layout(location = 0) uniform mat4 u_model;
+layout(location = 1) uniform mat4 u_normal_matrix;  // inverse transpose of u_model
+
+layout(location = 0) out vec3 v_normal;
+layout(location = 1) out vec4 v_tangent;
+layout(location = 2) out vec2 v_uv0;
+layout(location = 3) out vec2 v_uv1;
+
+void main() {
+  vec4 world = u_model * vec4(a_position, 1.0);
+  v_normal = mat3(u_normal_matrix) * a_normal;
+  v_tangent = vec4(mat3(u_model) * a_tangent.xyz, a_tangent.w);
+  v_uv0 = a_uv0;
+  v_uv1 = a_uv1;
+  gl_Position = u_view_proj * world;
+}
