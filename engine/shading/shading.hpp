@@ -8,10 +8,14 @@
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored \
+    "-Wunused-parameter"  // dispatchers ignore arguments of unpicked terms
 namespace hv::glsl {
 namespace {
 #include "../../shaders/common/math.glsl"
+#include "../../shaders/common/brdf.glsl"
 #include "../../shaders/common/gbuffer.glsl"
+#include "../../shaders/common/tonemap.glsl"
 }  // namespace
 }  // namespace hv::glsl
 #pragma GCC diagnostic pop
