@@ -15,6 +15,10 @@
 #include "render/gpu_scene.hpp"
 #include "scene/scene.hpp"
 
+namespace hv {
+struct BakeTimings;
+}
+
 namespace hv::render {
 
 enum class DebugView : uint32_t {
@@ -74,6 +78,9 @@ class Renderer {
   ImageRGBA8 readLdr() const;
   GBufferReadback readGBuffer() const;
 
+  // Timings of the environment bake of the current scene (nullptr without an environment).
+  const BakeTimings* environmentTimings() const;
+
   const gl::ProgramCache& programs() const { return programs_; }
   gl::ProgramCache& programs() { return programs_; }
   // Defines every light/ambient program of the current scene is compiled with.
@@ -101,6 +108,8 @@ class Renderer {
   size_t tile_entries_ = 0;          // entries the last culling pass produced
   gl::VertexArray empty_vao_;
   gl::Sampler nearest_;
+  gl::Texture fallback_cube_;
+  GLuint fallbackCube();
   struct Environment;
   std::unique_ptr<Environment> env_;
 };

@@ -1,0 +1,45 @@
+#include "app/cli.hpp"
+
+#include <cstdio>
+#include <exception>
+
+#include "app/commands.hpp"
+
+namespace hv::app {
+
+namespace {
+constexpr const char* kHelp = R"(halfvec - a deferred PBR renderer (UE4 shading model), measured.
+
+Usage: halfvec <command> [options]
+
+Commands:
+  render SCENE.json     render headless to PNG (and HDR PFM), print per-pass GPU times
+  compare A.pfm B.pfm   error metrics between two HDR images (+ heat map)
+
+Run `halfvec <command> --help` for the options of each command.
+)";
+}  // namespace
+
+int runCli(const std::vector<std::string>& args) {
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    std::fputs(kHelp, stdout);
+    return args.empty() ? 2 : 0;
+  }
+  const std::string cmd = args[0];
+  const Args rest(args.begin() + 1, args.end());
+  try {
+    if (cmd == "render") return cmdRender(rest);
+    if (cmd == "compare") return cmdCompare(rest);
+    std::fprintf(stderr, "halfvec: unknown command '%s' (see halfvec --help)\n", cmd.c_str());
+    return 2;
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "halfvec %s: %s (see halfvec %s --help)\n", cmd.c_str(),
+                 e.message.c_str(), cmd.c_str());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "halfvec %s: error: %s\n", cmd.c_str(), e.what());
+    return 1;
+  }
+}
+
+}  // namespace hv::app

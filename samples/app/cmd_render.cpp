@@ -1,0 +1,170 @@
+// `halfvec render`: headless render of a scene file.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "app/commands.hpp"
+#include "platform/context.hpp"
+#include "render/renderer.hpp"
+#include "scene/enums.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace hv::app {
+
+namespace {
+constexpr const char* kRenderHelp = R"(Usage: halfvec render SCENE.json [options]
+
+Renders SCENE.json headless (EGL) and writes the tone-mapped image.
+
+Options:
+  --size WxH            output size (default: the scene's settings.width x settings.height)
+  --out FILE.png        tone-mapped 8-bit image (default: out/<scene name>.png)
+  --hdr FILE.pfm        linear radiance before tone mapping (PFM)
+  --stats FILE.json     per-pass GPU times, renderer, sizes, light counts, compiled variants
+  --set PATH=VALUE      override a scene field before validation, e.g. --set settings.exposure=2
+                        or --set lights.0.intensity=50 (repeatable; VALUE is JSON)
+  --view NAME           debug view: basecolor|metallic|roughness|cavity|normal|depth|
+                        shading_model|lights_per_tile
+  --frames N            render N frames and report the median pass times (default 1)
+  -h, --help            this text
+)";
+
+struct RenderArgs {
+  std::string scene, out, hdr, stats;
+  std::vector<std::string> overrides;
+  int width = 0, height = 0, frames = 1;
+  render::DebugView view = render::DebugView::None;
+};
+
+RenderArgs parse(const Args& args) {
+  RenderArgs r;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= args.size()) throw UsageError{a + " needs a value"};
+      return args[++i];
+    };
+    if (a == "--size") {
+      const std::string v = value();
+      if (std::sscanf(v.c_str(), "%dx%d", &r.width, &r.height) != 2 || r.width <= 0 ||
+          r.height <= 0 || r.width > 16384 || r.height > 16384) {
+        throw UsageError{"--size expects WxH with 1 <= W,H <= 16384, got '" + v + "'"};
+      }
+    } else if (a == "--out") {
+      r.out = value();
+    } else if (a == "--hdr") {
+      r.hdr = value();
+    } else if (a == "--stats") {
+      r.stats = value();
+    } else if (a == "--set") {
+      r.overrides.push_back(value());
+    } else if (a == "--frames") {
+      r.frames = std::atoi(value().c_str());
+      if (r.frames < 1 || r.frames > 1000) throw UsageError{"--frames expects 1..1000"};
+    } else if (a == "--view") {
+      const std::string v = value();
+      auto dv = render::debugViewFromString(v);
+      if (!dv) throw UsageError{"unknown --view '" + v + "'"};
+      r.view = *dv;
+    } else if (!a.empty() && a[0] == '-') {
+      throw UsageError{"unknown option '" + a + "'"};
+    } else if (r.scene.empty()) {
+      r.scene = a;
+    } else {
+      throw UsageError{"more than one scene file given"};
+    }
+  }
+  if (r.scene.empty()) throw UsageError{"no scene file given"};
+  return r;
+}
+
+}  // namespace
+
+int cmdRender(const Args& args) {
+  for (const auto& a : args) {
+    if (a == "--help" || a == "-h") {
+      std::fputs(kRenderHelp, stdout);
+      return 0;
+    }
+  }
+  RenderArgs ra = parse(args);
+  // Load and validate everything before any GL work: bad input renders nothing.
+  Scene scene = loadScene(ra.scene, ra.overrides);
+  const int w = ra.width ? ra.width : scene.settings.width;
+  const int h = ra.height ? ra.height : scene.settings.height;
+  if (ra.out.empty()) {
+    ra.out = "out/" + std::filesystem::path(ra.scene).stem().string() + ".png";
+  }
+
+  auto ctx = createHeadlessContext();
+  render::Renderer renderer;
+  const auto t0 = std::chrono::steady_clock::now();
+  renderer.setScene(scene);
+  const double setup_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  std::vector<render::FrameStats> frames;
+  for (int f = 0; f < ra.frames; ++f) frames.push_back(renderer.render(w, h, ra.view));
+  // Median per pass over the frames.
+  render::FrameStats stats = frames.back();
+  for (size_t p = 0; p < stats.passes.size(); ++p) {
+    std::vector<double> v;
+    for (auto& fr : frames) v.push_back(fr.passes[p].second);
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    stats.passes[p].second = v[v.size() / 2];
+  }
+  stats.total_ms = 0;
+  for (auto& [n, ms] : stats.passes) stats.total_ms += ms;
+
+  const auto out_dir = std::filesystem::path(ra.out).parent_path();
+  if (!out_dir.empty()) std::filesystem::create_directories(out_dir);
+  writePng(ra.out, renderer.readLdr());
+  if (!ra.hdr.empty()) writePfm(ra.hdr, renderer.readHdr());
+
+  std::printf("renderer: %s (%s)\n", ctx->renderer().c_str(), ctx->platform().c_str());
+  std::printf("scene: %s, %dx%d, %zu lights, %zu triangles\n", ra.scene.c_str(), w, h,
+              scene.lights.size(), size_t(0));
+  std::printf("%-14s %10s\n", "pass", "GPU ms");
+  for (auto& [name, ms] : stats.passes) std::printf("%-14s %10.3f\n", name.c_str(), ms);
+  std::printf("%-14s %10.3f\n", "total", stats.total_ms);
+  std::printf("setup (upload + environment bake): %.1f ms\n", setup_ms);
+  std::printf("image: %s\n", std::filesystem::absolute(ra.out).string().c_str());
+  if (!ra.hdr.empty()) std::printf("hdr: %s\n", std::filesystem::absolute(ra.hdr).string().c_str());
+
+  if (!ra.stats.empty()) {
+    nlohmann::ordered_json j;
+    j["renderer"] = ctx->renderer();
+    j["platform"] = ctx->platform();
+    j["gl_version"] = ctx->version();
+    j["scene"] = ra.scene;
+    j["width"] = w;
+    j["height"] = h;
+    j["frames"] = ra.frames;
+    nlohmann::ordered_json passes;
+    for (auto& [name, ms] : stats.passes) passes[name] = ms;
+    j["passes"] = passes;
+    j["total_ms"] = stats.total_ms;
+    j["setup_ms"] = setup_ms;
+    j["gbuffer_bytes_per_pixel"] = render::kGBufferBytesPerPixel;
+    nlohmann::ordered_json counts;
+    for (auto t : {LightType::Point, LightType::Sphere, LightType::Tube}) {
+      counts[std::string(toString(t))] =
+          std::count_if(scene.lights.begin(), scene.lights.end(),
+                        [&](const Light& l) { return l.type == t; });
+    }
+    j["light_counts"] = counts;
+    j["tile_light_entries"] = stats.tile_light_entries;
+    nlohmann::ordered_json vars = nlohmann::ordered_json::array();
+    for (const auto& v : renderer.programs().variants()) {
+      vars.push_back({{"program", v.name}, {"defines", v.defines}, {"compile_ms", v.compile_ms}});
+    }
+    j["program_variants"] = vars;
+    std::ofstream(ra.stats) << j.dump(2) << "\n";
+    std::printf("stats: %s\n", std::filesystem::absolute(ra.stats).string().c_str());
+  }
+  return 0;
+}
+
+}  // namespace hv::app

@@ -1,0 +1,5 @@
+#include "app/cli.hpp"
+
+int main(int argc, char** argv) {
+  return hv::app::runCli(std::vector<std::string>(argv + 1, argv + argc));
+}

@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# Runs the whole test suite: installs what is missing, builds (warnings are errors), runs CTest.
+# Tests that need ../shared/assets report "skipped" with the reason when it is absent.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+HV_WERROR=ON bash scripts/build.sh
+ctest --test-dir build --output-on-failure -j"$(nproc)" "$@"

@@ -1,0 +1,91 @@
+#version 450 core
+// Ambient pass (Karis 2013, "Image-Based Lighting"): split-sum specular from the GGX-prefiltered
+// radiance cube and the environment BRDF (table, or Karis's analytic approximation), diffuse from
+// SH9 (or an irradiance cube), Cavity on ambient diffuse (and, as an option, through Lagarde &
+// de Rousiers 2014's specular occlusion). Background pixels show the environment.
+// The bake already applied the environment's intensity and rotation: the cubes are world-space.
+#include "../common/frame.glsl"
+#include "../common/gbuffer.glsl"
+#include "../common/brdf.glsl"
+#include "../common/ibl.glsl"
+
+#ifndef HV_ENV_BRDF_ANALYTIC
+#define HV_ENV_BRDF_ANALYTIC 0
+#endif
+#ifndef HV_ENERGY_COMPENSATION
+#define HV_ENERGY_COMPENSATION 0
+#endif
+#ifndef HV_IRRADIANCE_CUBEMAP
+#define HV_IRRADIANCE_CUBEMAP 0
+#endif
+#ifndef HV_SPECULAR_OCCLUSION
+#define HV_SPECULAR_OCCLUSION 0
+#endif
+
+layout(local_size_x = HV_TILE_SIZE, local_size_y = HV_TILE_SIZE) in;
+
+layout(binding = 0) uniform sampler2D t_base_cavity;
+layout(binding = 1) uniform sampler2D t_material;
+layout(binding = 2) uniform sampler2D t_normal;
+layout(binding = 3) uniform sampler2D t_depth;
+layout(binding = 5) uniform samplerCube t_radiance;    // prefiltered: one roughness per mip
+layout(binding = 6) uniform sampler2D t_env_brdf;      // (scale, bias) over (NoV, roughness)
+layout(binding = 7) uniform samplerCube t_irradiance;  // E(n), not divided by pi
+layout(rgba16f, binding = 0) uniform image2D i_hdr;
+
+layout(std140, binding = 1) uniform EnvironmentBlock {
+  vec4 u_sh[9];      // radiance SH9 (ibl.glsl order)
+  vec4 u_env;        // max mip, env BRDF table size, 1 = environment present, unused
+};
+
+void main() {
+  ivec2 px = ivec2(gl_GlobalInvocationID.xy);
+  if (px.x >= int(u_viewport.x) || px.y >= int(u_viewport.y)) return;
+  vec4 mat = texelFetch(t_material, px, 0);
+  uint model = uint(mat.b * 255.0 + 0.5);
+  vec4 hdr = imageLoad(i_hdr, px);
+  if (model == HV_MODEL_BACKGROUND) {
+    vec2 uv = (vec2(px) + 0.5) / vec2(u_viewport.xy);
+    vec3 far_point = reconstructWorldPosition(uv, 1e-3, u_inv_view_proj);
+    vec3 dir = normalize(far_point - u_camera_pos.xyz);
+    vec3 sky = u_env.z > 0.5 ? textureLod(t_radiance, dir, 0.0).rgb : vec3(0.0);
+    imageStore(i_hdr, px, vec4(sky, 1.0));
+    return;
+  }
+  if (model != HV_MODEL_DEFAULT_LIT || u_env.z < 0.5) return;
+
+  vec4 bc = texelFetch(t_base_cavity, px, 0);
+  vec3 N = octDecode(texelFetch(t_normal, px, 0).xy);
+  vec2 uv = (vec2(px) + 0.5) / vec2(u_viewport.xy);
+  vec3 P = reconstructWorldPosition(uv, texelFetch(t_depth, px, 0).r, u_inv_view_proj);
+  vec3 V = normalize(u_camera_pos.xyz - P);
+  Surface s = makeSurface(N, bc.rgb, mat.r, mat.g, bc.a);
+  // N.V clamped away from 0: at grazing angles the table's first column is the limit anyway.
+  float NoV = clamp(dot(N, V), 1e-4, 1.0);
+  vec3 R = reflect(-V, N);
+
+#if HV_IRRADIANCE_CUBEMAP
+  vec3 E = textureLod(t_irradiance, N, 0.0).rgb;
+#else
+  vec3 sh[9];
+  for (int i = 0; i < 9; ++i) sh[i] = u_sh[i].rgb;
+  vec3 E = evalSH9Irradiance(sh, N);
+#endif
+  // Lambert: albedo / pi times irradiance; Cavity occludes ambient diffuse (Karis 2013).
+  vec3 diffuse = s.diffuse_color * E * (INV_PI * s.cavity);
+
+  vec3 prefiltered = textureLod(t_radiance, R, roughnessToMip(s.roughness, u_env.x)).rgb;
+#if HV_ENV_BRDF_ANALYTIC
+  vec2 ab = EnvBRDFApproxScaleBias(s.roughness, NoV);
+#else
+  vec2 ab = texture(t_env_brdf, vec2(NoV, s.roughness)).rg;
+#endif
+  vec3 specular = specularIBL(prefiltered, s.f0, ab);
+#if HV_ENERGY_COMPENSATION
+  specular *= energyCompensation(s.f0, ab);
+#endif
+#if HV_SPECULAR_OCCLUSION
+  specular *= specularOcclusion(NoV, s.cavity, s.alpha);
+#endif
+  imageStore(i_hdr, px, vec4(hdr.rgb + diffuse + specular, hdr.a));
+}

@@ -1,0 +1,34 @@
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "platform/context.hpp"
+#include "render/renderer.hpp"
+#include "scene/primitives.hpp"
+#include "scene/scene.hpp"
+
+// One headless context per test binary.
+inline hv::Context& testContext() {
+  static std::unique_ptr<hv::Context> ctx = hv::createHeadlessContext();
+  return *ctx;
+}
+
+// A plane at y = 0 seen straight from above (camera at height 2 looking down -y), one material.
+inline hv::Scene planeScene(const hv::Material& m, float size = 10.0f) {
+  hv::Scene s;
+  s.camera.position = {0.0f, 2.0f, 0.0f};
+  s.camera.target = {0.0f, 0.0f, 0.0f};
+  s.camera.up = {0.0f, 0.0f, -1.0f};
+  s.camera.fov_y_deg = 60.0f;
+  s.materials.push_back(m);
+  s.meshes.push_back(hv::makePlane(size, size));
+  s.meshes.back().material = 0;
+  hv::Object o;
+  o.meshes = {0};
+  s.objects.push_back(o);
+  s.environment.kind = hv::EnvironmentKind::Uniform;
+  s.environment.color = glm::vec3(0.0f);
+  return s;
+}

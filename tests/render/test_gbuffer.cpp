@@ -1,0 +1,80 @@
+// G-buffer round trip: known materials rendered, read back and decoded; each channel within its
+// quantization step of the input.
+#include <cmath>
+
+#include "render_fixture.hpp"
+#include "shading/shading.hpp"
+
+using namespace hv;
+
+namespace {
+// Linear -> 8-bit sRGB -> linear: the exact value the SRGB8 target returns.
+float srgbRoundTrip(float x) {
+  float s = x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
+  s = std::round(s * 255.0f) / 255.0f;
+  return s <= 0.04045f ? s / 12.92f : std::pow((s + 0.055f) / 1.055f, 2.4f);
+}
+}  // namespace
+
+TEST(GBuffer, RoundTripWithinQuantization) {
+  testContext();
+  const Material cases[] = {
+      [] { Material m; m.base_color = {0.9f, 0.2f, 0.05f}; m.metallic = 0.0f; m.roughness = 0.25f; m.cavity = 0.5f; return m; }(),
+      [] { Material m; m.base_color = {0.01f, 0.5f, 1.0f}; m.metallic = 1.0f; m.roughness = 1.0f; m.cavity = 1.0f; return m; }(),
+      [] { Material m; m.base_color = {0.0f, 0.0f, 0.0f}; m.metallic = 0.37f; m.roughness = 0.0f; m.cavity = 0.0f; m.model = ShadingModel::Unlit; return m; }(),
+  };
+  for (const Material& m : cases) {
+    Scene s = planeScene(m);
+    render::Renderer r;
+    r.setScene(s);
+    r.render(32, 32);
+    auto g = r.readGBuffer();
+    const size_t c = size_t(16) * 32 + 16;
+    for (int k = 0; k < 3; ++k) {
+      const float want = srgbRoundTrip(m.base_color[k]);
+      EXPECT_NEAR(g.base_color[c][k], want, 1e-4f) << "base color channel " << k;
+    }
+    EXPECT_NEAR(g.metallic[c], m.metallic, 0.5f / 255.0f + 1e-6f);
+    EXPECT_NEAR(g.roughness[c], m.roughness, 0.5f / 255.0f + 1e-6f);
+    EXPECT_NEAR(g.cavity[c], m.cavity, 0.5f / 255.0f + 1e-6f);
+    EXPECT_EQ(g.model[c], static_cast<uint32_t>(m.model));
+    // Plane normal +y; budget from docs/gbuffer.md (0.005 degrees).
+    const float angle = std::acos(std::min(1.0f, glm::dot(g.normal[c], glm::vec3(0, 1, 0))));
+    EXPECT_LT(glm::degrees(angle), 0.005f);
+  }
+}
+
+TEST(GBuffer, DepthReconstructsWorldPosition) {
+  testContext();
+  Scene s = planeScene(Material{});
+  render::Renderer r;
+  r.setScene(s);
+  const int w = 48, h = 32;
+  r.render(w, h);
+  auto g = r.readGBuffer();
+  const auto frame = render::makeFrameBlock(s, w, h);
+  float worst = 0.0f;
+  for (int y = 0; y < h; y += 5) {
+    for (int x = 0; x < w; x += 5) {
+      const float d = g.depth[size_t(y) * w + x];
+      ASSERT_GT(d, 0.0f);
+      // readback rows are top-down; GL uv has v up.
+      const glm::vec2 uv((x + 0.5f) / w, 1.0f - (y + 0.5f) / h);
+      const glm::vec3 p = glsl::reconstructWorldPosition(uv, d, frame.inv_view_proj);
+      worst = std::max(worst, std::abs(p.y));  // the plane is y = 0
+    }
+  }
+  EXPECT_LT(worst, 1e-4f) << "world position off the plane by " << worst;
+}
+
+TEST(GBuffer, BackgroundIsMarked) {
+  testContext();
+  Scene s = planeScene(Material{}, 0.5f);  // small plane: corners see the background
+  render::Renderer r;
+  r.setScene(s);
+  r.render(32, 32);
+  auto g = r.readGBuffer();
+  EXPECT_EQ(g.model[0], 0u);
+  EXPECT_EQ(g.depth[0], 0.0f);
+  EXPECT_EQ(g.model[size_t(16) * 32 + 16], static_cast<uint32_t>(ShadingModel::DefaultLit));
+}
