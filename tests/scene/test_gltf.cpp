@@ -1,0 +1,308 @@
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "scene/gltf_loader.hpp"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+fs::path assetsDir() {
+  if (const char* e = std::getenv("HV_ASSETS_DIR"); e && *e) return e;
+  return HV_ASSETS_DIR;
+}
+
+fs::path tempDir() {
+  fs::path d = fs::temp_directory_path() / ("hv_test_gltf_" + std::to_string(::getpid()));
+  fs::create_directories(d);
+  return d;
+}
+
+std::string base64(const std::vector<uint8_t>& in) {
+  static const char* t = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (size_t i = 0; i < in.size(); i += 3) {
+    uint32_t v = uint32_t(in[i]) << 16;
+    if (i + 1 < in.size()) v |= uint32_t(in[i + 1]) << 8;
+    if (i + 2 < in.size()) v |= in[i + 2];
+    out += t[(v >> 18) & 63];
+    out += t[(v >> 12) & 63];
+    out += i + 1 < in.size() ? t[(v >> 6) & 63] : '=';
+    out += i + 2 < in.size() ? t[v & 63] : '=';
+  }
+  return out;
+}
+
+// A quad: 4 positions (float VEC3) at offset 0, then 6 uint16 indices at offset 48, then
+// 4 UVs at offset 60. Returned as a model the tests then break.
+json quad() {
+  std::vector<uint8_t> buf;
+  auto put = [&](const void* p, size_t n) {
+    const auto* b = static_cast<const uint8_t*>(p);
+    buf.insert(buf.end(), b, b + n);
+  };
+  const float pos[12] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+  const uint16_t idx[6] = {0, 1, 2, 0, 2, 3};
+  const float uv[8] = {0, 1, 1, 1, 1, 0, 0, 0};
+  put(pos, sizeof pos);
+  put(idx, sizeof idx);
+  put(uv, sizeof uv);
+  json j;
+  j["asset"] = {{"version", "2.0"}};
+  j["buffers"] = {
+      {{"byteLength", buf.size()}, {"uri", "data:application/octet-stream;base64," + base64(buf)}}};
+  j["bufferViews"] = {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 48}},
+                      {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 12}},
+                      {{"buffer", 0}, {"byteOffset", 60}, {"byteLength", 32}}};
+  j["accessors"] = {{{"bufferView", 0},
+                     {"componentType", 5126},
+                     {"count", 4},
+                     {"type", "VEC3"},
+                     {"min", {0, 0, 0}},
+                     {"max", {1, 1, 0}}},
+                    {{"bufferView", 1}, {"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}},
+                    {{"bufferView", 2}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}}};
+  j["materials"] = {{{"name", "mat"},
+                     {"pbrMetallicRoughness",
+                      {{"baseColorFactor", {0.5, 0.25, 1, 1}},
+                       {"metallicFactor", 0.5},
+                       {"roughnessFactor", 0.75}}},
+                     {"alphaMode", "MASK"},
+                     {"alphaCutoff", 0.3},
+                     {"doubleSided", true}}};
+  j["meshes"] = {{{"primitives",
+                   {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 2}}},
+                     {"indices", 1},
+                     {"material", 0}}}}}};
+  j["nodes"] = {{{"mesh", 0}, {"translation", {1, 2, 3}}, {"children", {1}}},
+                {{"mesh", 0}, {"scale", {2, 2, 2}}}};
+  j["scenes"] = {{{"nodes", {0}}}};
+  j["scene"] = 0;
+  return j;
+}
+
+std::string write(const json& j, const std::string& name) {
+  const fs::path p = tempDir() / name;
+  std::ofstream(p) << j.dump();
+  return p.string();
+}
+
+std::string loadError(const json& j, const std::string& name) {
+  hv::Scene scene;
+  try {
+    hv::loadGltf(write(j, name), glm::mat4(1.0f), scene);
+  } catch (const hv::SceneError& e) {
+    EXPECT_TRUE(scene.meshes.empty() && scene.materials.empty() && scene.objects.empty())
+        << "half-loaded scene";
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(Gltf, LoadsHandBuiltQuad) {
+  hv::Scene scene;
+  scene.materials.push_back({});  // pre-existing content must keep its indices
+  std::vector<std::string> warnings;
+  hv::GltfOptions opt;
+  opt.warnings = &warnings;
+  hv::loadGltf(write(quad(), "quad.gltf"), glm::mat4(1.0f), scene, opt);
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  ASSERT_EQ(scene.objects.size(), 2u);
+  ASSERT_EQ(scene.materials.size(), 2u);
+  const hv::Mesh& m = scene.meshes[0];
+  EXPECT_EQ(m.material, 1);
+  const hv::Material& mat = scene.materials[1];
+  EXPECT_EQ(mat.alpha_mode, hv::AlphaMode::Mask);
+  EXPECT_FLOAT_EQ(mat.alpha_cutoff, 0.3f);
+  EXPECT_TRUE(mat.double_sided);
+  EXPECT_FLOAT_EQ(mat.roughness, 0.75f);
+  // No NORMAL: flat normals, one vertex per triangle corner, facing +Z (CCW quad).
+  EXPECT_EQ(m.vertices.size(), 6u);
+  for (const hv::Vertex& v : m.vertices) {
+    EXPECT_NEAR(v.normal.z, 1.0f, 1e-6f);
+    EXPECT_NEAR(v.tangent.x, 1.0f, 1e-5f);  // +u is +x
+    // +v (downwards in the image) is -y here: cross(N,T) = +y, so w = -1.
+    EXPECT_EQ(v.tangent.w, -1.0f);
+  }
+  // Child transform: parent translate * child scale.
+  const glm::vec4 p = scene.objects[1].transform * glm::vec4(1, 0, 0, 1);
+  EXPECT_NEAR(p.x, 3.0f, 1e-5f);
+  EXPECT_NEAR(p.y, 2.0f, 1e-5f);
+  EXPECT_NEAR(p.z, 3.0f, 1e-5f);
+}
+
+TEST(Gltf, StripAndFanConverted) {
+  json j = quad();
+  j["meshes"][0]["primitives"][0].erase("indices");
+  j["meshes"][0]["primitives"][0]["mode"] = 6;  // fan 0 1 2 3 -> (1 2 0) (2 3 0)
+  hv::Scene s;
+  hv::loadGltf(write(j, "fan.gltf"), glm::mat4(1.0f), s);
+  EXPECT_EQ(s.meshes[0].indices.size(), 6u);
+  j["meshes"][0]["primitives"][0]["mode"] = 5;  // strip 0 1 2 3 -> 2 triangles
+  hv::Scene s2;
+  hv::loadGltf(write(j, "strip.gltf"), glm::mat4(1.0f), s2);
+  EXPECT_EQ(s2.meshes[0].indices.size(), 6u);
+  for (const hv::Vertex& v : s.meshes[0].vertices) EXPECT_GT(v.normal.z, 0.0f);  // fan is CCW
+  // Strip order per glTF spec: triangle i = {i, i+1+i%2, i+2-i%2}. Flat normals de-index, so
+  // compare positions.
+  const float expect_x[6] = {0, 1, 1, 1, 0, 1};  // vertices 0 1 2, then 1 3 2
+  for (size_t k = 0; k < 6; ++k) {
+    EXPECT_EQ(s2.meshes[0].vertices[s2.meshes[0].indices[k]].position.x, expect_x[k]);
+  }
+}
+
+TEST(Gltf, RejectsBadFiles) {
+  EXPECT_NE(loadError(json::parse("{}"), "empty.gltf").find("empty.gltf"), std::string::npos);
+  {
+    std::ofstream(tempDir() / "broken.gltf") << "{ not json";
+    hv::Scene s;
+    EXPECT_THROW(hv::loadGltf((tempDir() / "broken.gltf").string(), glm::mat4(1.0f), s),
+                 hv::SceneError);
+  }
+  {
+    hv::Scene s;
+    EXPECT_THROW(hv::loadGltf((tempDir() / "absent.glb").string(), glm::mat4(1.0f), s),
+                 hv::SceneError);
+  }
+  json j = quad();
+  j["accessors"][0]["count"] = 5;  // 5 * 12 bytes > 48
+  EXPECT_NE(loadError(j, "oob.gltf").find("exceeds"), std::string::npos);
+  j = quad();
+  j["bufferViews"][0]["byteLength"] = 4000;
+  EXPECT_NE(loadError(j, "oob_view.gltf").find("bufferViews[0]"), std::string::npos);
+  j = quad();
+  j["meshes"][0]["primitives"][0]["attributes"].erase("POSITION");
+  EXPECT_NE(loadError(j, "nopos.gltf").find("no POSITION"), std::string::npos);
+  j = quad();
+  j["accessors"][1]["count"] = 3;
+  j["accessors"][1]["byteOffset"] = 0;
+  j["accessors"][0]["count"] = 2;  // indices 2 >= 2 vertices
+  j["accessors"][2]["count"] = 2;
+  EXPECT_NE(loadError(j, "idx.gltf").find(">= vertex count"), std::string::npos);
+  j = quad();
+  j["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+  j["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+  EXPECT_NE(loadError(j, "ext.gltf").find("KHR_draco_mesh_compression"), std::string::npos);
+  j = quad();
+  j["accessors"][1]["componentType"] = 5126;  // float indices
+  EXPECT_NE(loadError(j, "ftype.gltf").find("componentType"), std::string::npos);
+  j = quad();
+  j["buffers"][0]["uri"] = "missing.bin";
+  EXPECT_NE(loadError(j, "missingbin.gltf").find("missing.bin"), std::string::npos);
+}
+
+TEST(Gltf, RejectsPrimitiveRestart) {
+  json j = quad();
+  // Rewrite the index buffer via a data URI whose index 2 is 65535.
+  std::vector<uint8_t> buf(92, 0);
+  const float pos[12] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+  const uint16_t idx[6] = {0, 1, 65535, 0, 2, 3};
+  std::memcpy(buf.data(), pos, 48);
+  std::memcpy(buf.data() + 48, idx, 12);
+  j["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64(buf);
+  EXPECT_NE(loadError(j, "restart.gltf").find("primitive-restart"), std::string::npos);
+}
+
+TEST(Gltf, BlendWarnsOnce) {
+  json j = quad();
+  j["materials"][0]["alphaMode"] = "BLEND";
+  hv::Scene s;
+  std::vector<std::string> w;
+  hv::GltfOptions opt;
+  opt.warnings = &w;
+  hv::loadGltf(write(j, "blend.gltf"), glm::mat4(1.0f), s, opt);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("\"mat\""), std::string::npos);
+  EXPECT_EQ(s.materials[0].alpha_mode, hv::AlphaMode::Opaque);
+}
+
+// ---- shared assets ----------------------------------------------------------------------------
+
+namespace {
+
+std::vector<fs::path> gltfFiles(const fs::path& dir) {
+  std::vector<fs::path> out;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    const auto ext = e.path().extension();
+    if (ext == ".gltf" || ext == ".glb") out.push_back(e.path());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace
+
+TEST(GltfAssets, SampleModelsLoad) {
+  const fs::path dir = assetsDir() / "gltf";
+  if (assetsDir().empty() || !fs::is_directory(dir)) GTEST_SKIP() << "no shared assets at " << dir;
+  int pass = 0, fail = 0;
+  for (const fs::path& p : gltfFiles(dir)) {
+    hv::Scene s;
+    std::vector<std::string> w;
+    hv::GltfOptions opt;
+    opt.warnings = &w;
+    try {
+      hv::loadGltf(p.string(), glm::mat4(1.0f), s, opt);
+      EXPECT_FALSE(s.meshes.empty()) << p;
+      ++pass;
+    } catch (const hv::SceneError& e) {
+      ADD_FAILURE() << e.what();
+      ++fail;
+    }
+  }
+  std::cout << "[ gltf/ ] " << pass << " loaded, " << fail << " failed\n";
+  EXPECT_EQ(pass, 5);
+}
+
+TEST(GltfAssets, AssetGeneratorPositiveLoads) {
+  const fs::path dir = assetsDir() / "gltf-asset-generator" / "Positive";
+  if (assetsDir().empty() || !fs::is_directory(dir)) GTEST_SKIP() << "no shared assets at " << dir;
+  int pass = 0, fail = 0;
+  for (const fs::path& p : gltfFiles(dir)) {
+    hv::Scene s;
+    std::vector<std::string> w;
+    hv::GltfOptions opt;
+    opt.warnings = &w;
+    try {
+      hv::loadGltf(p.string(), glm::mat4(1.0f), s, opt);
+      ++pass;
+    } catch (const hv::SceneError& e) {
+      ADD_FAILURE() << e.what();
+      ++fail;
+    }
+  }
+  std::cout << "[ Positive ] " << pass << " loaded, " << fail << " failed\n";
+  EXPECT_GT(pass, 0);
+}
+
+TEST(GltfAssets, AssetGeneratorNegativeRejected) {
+  const fs::path dir = assetsDir() / "gltf-asset-generator" / "Negative";
+  if (assetsDir().empty() || !fs::is_directory(dir)) GTEST_SKIP() << "no shared assets at " << dir;
+  int rejected = 0, accepted = 0;
+  for (const fs::path& p : gltfFiles(dir)) {
+    hv::Scene s;
+    std::vector<std::string> w;
+    hv::GltfOptions opt;
+    opt.warnings = &w;
+    try {
+      hv::loadGltf(p.string(), glm::mat4(1.0f), s, opt);
+      ADD_FAILURE() << p << " was accepted";
+      ++accepted;
+    } catch (const hv::SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find(p.filename().string()), std::string::npos);
+      ++rejected;
+    }
+  }
+  std::cout << "[ Negative ] " << rejected << " rejected, " << accepted << " accepted\n";
+  EXPECT_GT(rejected, 0);
+}
