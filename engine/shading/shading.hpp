@@ -8,9 +8,12 @@
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored \
+    "-Wunused-parameter"  // dispatchers ignore arguments of unpicked terms
 namespace hv::glsl {
 namespace {
 #include "../../shaders/common/math.glsl"
+#include "../../shaders/common/brdf.glsl"
 }  // namespace
 }  // namespace hv::glsl
 #pragma GCC diagnostic pop

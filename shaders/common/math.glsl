@@ -18,4 +18,9 @@ float pow5(float x) {
   return x2 * x2 * x;
 }
 
+// normalize() that returns (almost) 0 instead of NaN for a zero vector (e.g. the half vector of
+// V = -L, or the direction to a light from its own center). 1e-30 is far below any squared length
+// that reaches shading (a distance of 1e-6 squares to 1e-12) but above the fp32 denormal range.
+vec3 safeNormalize(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-30f)); }
+
 #endif

@@ -1,0 +1,345 @@
+// BRDF terms of the UE4 shading model (Karis 2013, "Real Shading in Unreal Engine 4") and the
+// alternatives it compares, shared by GLSL and C++ (see engine/shading/glsl.hpp for the rules).
+//
+// Conventions:
+//  - roughness is perceptual roughness in [0,1]; alpha = roughness^2 (Karis 2013, "Specular D").
+//  - V is the visibility term V = G / (4 NoL NoV), so the specular BRDF is D * V * F.
+//  - Every term is always compiled; the define table below only picks what the dispatchers
+//    (distribution(), visibility(), fresnel(), diffuseLobe()) call, so C++ can switch at run time
+//    over the very same functions (engine/shading/brdf.hpp). Table and defaults: docs/brdf.md.
+#ifndef HV_BRDF_GLSL
+#define HV_BRDF_GLSL
+
+#include "math.glsl"
+
+// ---- Define table (Filament style; values match the order of the hv:: enums in scene.hpp) ----
+#define HV_D_GGX 0
+#define HV_D_BECKMANN 1
+#define HV_D_BLINN_PHONG 2
+
+#define HV_V_SCHLICK_GGX 0
+#define HV_V_SMITH_GGX_CORRELATED 1
+#define HV_V_SMITH_GGX_CORRELATED_FAST 2
+#define HV_V_SMITH_GGX_SEPARABLE 3
+#define HV_V_SMITH_BECKMANN_SEPARABLE 4
+#define HV_V_COOK_TORRANCE 5
+#define HV_V_IMPLICIT 6
+
+#define HV_F_SCHLICK 0
+#define HV_F_SCHLICK_SG 1
+#define HV_F_EXACT 2
+#define HV_F_SCHLICK_F90_OCCLUSION 3
+
+#define HV_FD_LAMBERT 0
+#define HV_FD_BURLEY 1
+
+// Defaults = Karis 2013: GGX, Schlick-GGX, Schlick Fresnel, Lambert, Disney roughness remap.
+#ifndef HV_BRDF_D
+#define HV_BRDF_D HV_D_GGX
+#endif
+#ifndef HV_BRDF_V
+#define HV_BRDF_V HV_V_SCHLICK_GGX
+#endif
+#ifndef HV_BRDF_F
+#define HV_BRDF_F HV_F_SCHLICK
+#endif
+#ifndef HV_BRDF_FD
+#define HV_BRDF_FD HV_FD_LAMBERT
+#endif
+#ifndef HV_REMAP_ROUGHNESS
+#define HV_REMAP_ROUGHNESS 1
+#endif
+
+// Smallest perceptual roughness shaded. A perfectly smooth surface lit by a punctual light is a
+// Dirac peak (D = 1/(pi alpha^2) -> inf); 0.045 (Filament's MIN_PERCEPTUAL_ROUGHNESS) keeps
+// alpha^2 = 4.1e-6 > 0 so D <= 7.8e4 and every V term stays finite at NoV = NoL = 0.
+const float HV_MIN_ROUGHNESS = 0.045f;
+// Smallest NoV shaded (Filament MIN_N_DOT_V). Normals facing away from the viewer (normal maps,
+// interpolated normals) give NoV <= 0; 1e-4 keeps every V term finite without visible bias.
+const float HV_MIN_NOV = 1e-4f;
+
+// ---- Normal distribution functions D(h); each satisfies integral D(h) (n.h) dw = 1 ----
+
+// Walter et al. 2007, "Microfacet Models for Refraction through Rough Surfaces", eq. 33;
+// Karis 2013 eq. 2 (GGX / Trowbridge-Reitz). Written as (NoH^2 (a^2-1) + 1) with one FMA-able
+// form; no sqrt needed.
+float D_GGX(float alpha, float NoH) {
+  float a2 = alpha * alpha;
+  float d = (NoH * a2 - NoH) * NoH + 1.0f;
+  return a2 / (PI * d * d);
+}
+
+// Walter et al. 2007 eq. 25 (Beckmann): exp(-tan^2/a^2) / (pi a^2 cos^4), with
+// tan^2 = (1-cos^2)/cos^2 so no trigonometry is needed.
+float D_Beckmann(float alpha, float NoH) {
+  float a2 = alpha * alpha;
+  // NoH^2 >= 1e-8 (NoH >= 1e-4): at a grazing half vector exp(-inf) / 0 would be 0/0; with the
+  // clamp the exponent is <= -1e8 / a2 and the result is exactly 0, as the limit is.
+  float c2 = max(NoH * NoH, 1e-8f);
+  return exp((c2 - 1.0f) / (a2 * c2)) / (PI * a2 * c2 * c2);
+}
+
+// Blinn 1977 with the normalization (n+2)/(2 pi) and exponent n = 2/alpha^2 - 2 (Walter et al.
+// 2007 eq. 30; Karis 2013 "Specular D"), so (n+2)/(2 pi) = 1/(pi alpha^2).
+float D_BlinnPhong(float alpha, float NoH) {
+  float a2 = alpha * alpha;
+  // pow(0, 0) is undefined in GLSL (alpha = 1 gives n = 0 at NoH = 0); NoH >= 1e-6 keeps the
+  // base positive and changes nothing measurable (pow(1e-6, n) = 0 for n > 3, 1 for n = 0).
+  return INV_PI / a2 * pow(max(NoH, 1e-6f), 2.0f / a2 - 2.0f);
+}
+
+// ---- Smith masking G1 (used by the separable V terms and by VNDF sampling) ----
+
+// Walter et al. 2007 eq. 34 (GGX): G1 = 2 / (1 + sqrt(1 + a^2 tan^2)), rewritten with
+// tan^2 = (1-c^2)/c^2 as 2c / (c + sqrt(c^2 (1-a^2) + a^2)): no division by c.
+float G1_SmithGGX(float alpha, float NoX) {
+  float a2 = alpha * alpha;
+  return 2.0f * NoX / (NoX + sqrt(NoX * NoX * (1.0f - a2) + a2));
+}
+
+// Karis 2013 eq. 4 (Schlick 1994 with k = alpha/2 to match Smith GGX at alpha = 1).
+float G1_SchlickGGX(float k, float NoX) { return NoX / (NoX * (1.0f - k) + k); }
+
+// Walter et al. 2007 eq. 27, rational approximation of Smith-Beckmann G1 with
+// a = 1 / (alpha tan(theta)); G1 = 1 for a >= 1.6.
+float G1_SmithBeckmann(float alpha, float NoX) {
+  // a = c / (alpha sqrt(1 - c^2)); 1-c^2 >= 1e-8 so c = 1 gives a large finite a, not inf.
+  float a = NoX * inversesqrt(max(1.0f - NoX * NoX, 1e-8f)) / alpha;
+  // Branch-free "a < 1.6 ? rational : 1": the rational equals 1.0000 at a = 1.6, so clamping
+  // a to 1.6 is continuous and gives the same result.
+  a = min(a, 1.6f);
+  // The fit overshoots 1 by up to 6e-5 just below a = 1.6; min() keeps G1 a probability.
+  return min((3.535f * a + 2.181f * a * a) / (1.0f + 2.276f * a + 2.577f * a * a), 1.0f);
+}
+
+// ---- Visibility V = G / (4 NoL NoV) ----
+
+// Heitz 2014, "Understanding the Masking-Shadowing Function in Microfacet-Based BRDFs", eq. 99
+// (exact height-correlated Smith for GGX), in the division-free form of Filament
+// (surface_brdf.fs): V = 0.5 / (NoL sqrt(NoV^2 (1-a^2) + a^2) + NoV sqrt(NoL^2 (1-a^2) + a^2)).
+float V_SmithGGXCorrelated(float alpha, float NoV, float NoL) {
+  float a2 = alpha * alpha;
+  float GGXV = NoL * sqrt(NoV * NoV * (1.0f - a2) + a2);
+  float GGXL = NoV * sqrt(NoL * NoL * (1.0f - a2) + a2);
+  return 0.5f / (GGXV + GGXL);
+}
+
+// Hammon 2017, "PBR Diffuse Lighting for GGX+Smith Microsurfaces", slide 82; UE4
+// Vis_SmithJointApprox: the sqrt of V_SmithGGXCorrelated replaced by its linear approximation,
+// V = 0.5 / mix(2 NoL NoV, NoL + NoV, alpha). No sqrt.
+float V_SmithGGXCorrelatedFast(float alpha, float NoV, float NoL) {
+  float GGXV = NoL * (NoV * (1.0f - alpha) + alpha);
+  float GGXL = NoV * (NoL * (1.0f - alpha) + alpha);
+  return 0.5f / (GGXV + GGXL);
+}
+
+// Karis 2013 eq. 4: Schlick-GGX, G1(v) = NoV / (NoV (1-k) + k), k = alpha/2. The NoL NoV of G
+// cancels against 4 NoL NoV, so V = 0.25 / ((NoV (1-k) + k)(NoL (1-k) + k)) (UE4 Vis_Schlick).
+// The caller picks k: alpha/2 for image-based lighting, with alpha from the Disney remap
+// ((roughness+1)/2)^2 for analytic lights (see visibility()).
+float V_SchlickGGX(float k, float NoV, float NoL) {
+  float GV = NoV * (1.0f - k) + k;
+  float GL = NoL * (1.0f - k) + k;
+  return 0.25f / (GV * GL);
+}
+
+// Walter et al. 2007 eq. 34, separable (uncorrelated) Smith GGX, G = G1(v) G1(l). Each
+// G1(c) / (2c) = 1 / (c + sqrt(c^2 (1-a^2) + a^2)), so V needs no division by NoV or NoL.
+float V_SmithGGXSeparable(float alpha, float NoV, float NoL) {
+  float a2 = alpha * alpha;
+  float GV = NoV + sqrt(NoV * NoV * (1.0f - a2) + a2);
+  float GL = NoL + sqrt(NoL * NoL * (1.0f - a2) + a2);
+  return 1.0f / (GV * GL);
+}
+
+// Walter et al. 2007 eq. 27 (rational Smith-Beckmann G1), separable: G = G1(v) G1(l).
+float V_SmithBeckmannSeparable(float alpha, float NoV, float NoL) {
+  float G = G1_SmithBeckmann(alpha, NoV) * G1_SmithBeckmann(alpha, NoL);
+  // G1(c) ~ 3.535 c / alpha as c -> 0, so G / (4 NoV NoL) has a finite limit; the 1e-8 floor
+  // only avoids 0/0 when NoL = 0 (then G = 0 and V = 0, harmless since the light term has NoL).
+  return G / max(4.0f * NoV * NoL, 1e-8f);
+}
+
+// Cook & Torrance 1982, "A Reflectance Model for Computer Graphics" (V-cavity G):
+// G = min(1, 2 NoH NoV / VoH, 2 NoH NoL / VoH). Divided by 4 NoL NoV this is
+// min(1 / (4 NoL NoV), NoH / (2 VoH max(NoV, NoL))), finite wherever the second term is the min.
+float V_CookTorrance(float NoH, float NoV, float NoL, float VoH) {
+  // 1e-12: 1/(4 NoL NoV) only needs to be large enough to lose the min() at NoL NoV -> 0.
+  // VoH >= 1e-4: V and H are never perpendicular for a visible reflection; guards 0/0 only.
+  return min(1.0f / max(4.0f * NoL * NoV, 1e-12f),
+             NoH / (2.0f * max(VoH, 1e-4f) * max(NoV, NoL)));
+}
+
+// Karis 2013 "Specular G" (implicit: G = NoL NoV), so V = 1/4.
+float V_Implicit() { return 0.25f; }
+
+// ---- Fresnel ----
+
+// Schlick 1994, "An Inexpensive BRDF Model for Physically-based Rendering", eq. 15, with a free
+// f90 (Lagarde & de Rousiers 2014, "Moving Frostbite to PBR", section 4.2.1, listing 1).
+vec3 F_Schlick(vec3 f0, float f90, float VoH) {
+  return f0 + (vec3(f90) - f0) * pow5(1.0f - VoH);
+}
+float F_Schlick(float f0, float f90, float VoH) { return f0 + (f90 - f0) * pow5(1.0f - VoH); }
+
+// Karis 2013 eq. 5: Schlick with the power replaced by a spherical-gaussian approximation,
+// 2^((-5.55473 VoH - 6.98316) VoH) (constants fitted by Karis).
+vec3 F_SchlickSG(vec3 f0, float f90, float VoH) {
+  return f0 + (vec3(f90) - f0) * exp2((-5.55473f * VoH - 6.98316f) * VoH);
+}
+
+// Exact unpolarized Fresnel of a dielectric (Cook & Torrance 1982; Walter et al. 2007 eq. 22)
+// with the index of refraction derived per channel from f0 = ((n-1)/(n+1))^2, i.e.
+// n = (1 + sqrt(f0)) / (1 - sqrt(f0)). F(1) = f0 exactly; F(0) = 1.
+vec3 F_ExactDielectric(vec3 f0, float VoH) {
+  // f0 in [1e-6, 0.99]: f0 = 0 would give n = 1 and 0/0 at VoH = 0; f0 = 1 would give n = inf.
+  // Metals (f0 > 0.99) are not dielectrics; this term is a comparison option, see docs/brdf.md.
+  vec3 s = sqrt(clamp(f0, vec3(1e-6f), vec3(0.99f)));
+  vec3 n = (vec3(1.0f) + s) / (vec3(1.0f) - s);
+  float c = VoH;
+  vec3 g = sqrt(n * n - vec3(1.0f - c * c));
+  vec3 A = (g - vec3(c)) / (g + vec3(c));
+  vec3 B = (vec3(c) * (g + vec3(c)) - vec3(1.0f)) / (vec3(c) * (g - vec3(c)) + vec3(1.0f));
+  return 0.5f * A * A * (vec3(1.0f) + B * B);
+}
+
+// UE4 (BRDF.ush F_Schlick): f90 = saturate(50 f0.g). No real material has f0 < 0.02 (2%), so a
+// smaller f0 is treated as pre-baked specular occlusion and also dims the grazing reflection.
+vec3 F_SchlickF90Occlusion(vec3 f0, float VoH) {
+  return F_Schlick(f0, saturate(50.0f * f0.y), VoH);
+}
+
+// ---- Diffuse ----
+
+// Lambert: 1/pi (Karis 2013 eq. 1). The caller multiplies by the diffuse color.
+float Fd_Lambert() { return INV_PI; }
+
+// Burley 2012, "Physically-Based Shading at Disney", section 5.3: retro-reflection with
+// fd90 = 0.5 + 2 roughness LoH^2, roughness = perceptual roughness as in Disney's model.
+float Fd_Burley(float roughness, float NoV, float NoL, float LoH) {
+  float f90 = 0.5f + 2.0f * roughness * LoH * LoH;
+  return F_Schlick(1.0f, f90, NoL) * F_Schlick(1.0f, f90, NoV) * INV_PI;
+}
+
+// ---- Metallic workflow (Karis 2013 "Material Model") ----
+
+// f0 = 0.04 for dielectrics (ior 1.5, UE4's Specular = 0.5 times 0.08), base color for metals.
+vec3 computeF0(vec3 baseColor, float metallic) { return mix(vec3(0.04f), baseColor, metallic); }
+// Metals have no diffuse lobe.
+vec3 computeDiffuseColor(vec3 baseColor, float metallic) { return baseColor * (1.0f - metallic); }
+
+// Disney roughness remap (Karis 2013 "Specular G"): the alpha used by the visibility term for
+// analytic lights, ((roughness + 1) / 2)^2, which reduces "hotness" at low roughness.
+float remappedVisibilityAlpha(float roughness) { return sq(0.5f * (roughness + 1.0f)); }
+
+// ---- Surface ----
+
+struct Surface {
+  vec3 N;              // unit shading normal
+  vec3 diffuse_color;  // baseColor * (1 - metallic)
+  vec3 f0;             // specular reflectance at normal incidence
+  float roughness;     // perceptual, clamped to >= HV_MIN_ROUGHNESS
+  float alpha;         // roughness^2
+  float cavity;        // small-scale occlusion of direct light, 1 = none (see lights.glsl)
+};
+
+// Builds a Surface from metallic-workflow parameters; clamps roughness (HV_MIN_ROUGHNESS).
+Surface makeSurface(vec3 N, vec3 baseColor, float metallic, float roughness, float cavity) {
+  Surface s;
+  s.N = N;
+  s.diffuse_color = computeDiffuseColor(baseColor, metallic);
+  s.f0 = computeF0(baseColor, metallic);
+  s.roughness = clamp(roughness, HV_MIN_ROUGHNESS, 1.0f);
+  s.alpha = s.roughness * s.roughness;
+  s.cavity = cavity;
+  return s;
+}
+
+// ---- Dispatchers: the only place the define table is read ----
+
+// Karis 2013 eq. 2 by default; see the define table.
+float distribution(float alpha, float NoH) {
+#if HV_BRDF_D == HV_D_GGX
+  return D_GGX(alpha, NoH);
+#elif HV_BRDF_D == HV_D_BECKMANN
+  return D_Beckmann(alpha, NoH);
+#else
+  return D_BlinnPhong(alpha, NoH);
+#endif
+}
+
+// The chosen V term for a given visibility alpha (no remap); image-based lighting calls this
+// with alpha = roughness^2 (Karis 2013: the remap is for analytic lights only).
+float visibilityForAlpha(float alpha, float NoV, float NoL, float NoH, float VoH) {
+#if HV_BRDF_V == HV_V_SCHLICK_GGX
+  return V_SchlickGGX(0.5f * alpha, NoV, NoL);  // Karis 2013 eq. 4: k = alpha/2
+#elif HV_BRDF_V == HV_V_SMITH_GGX_CORRELATED
+  return V_SmithGGXCorrelated(alpha, NoV, NoL);
+#elif HV_BRDF_V == HV_V_SMITH_GGX_CORRELATED_FAST
+  return V_SmithGGXCorrelatedFast(alpha, NoV, NoL);
+#elif HV_BRDF_V == HV_V_SMITH_GGX_SEPARABLE
+  return V_SmithGGXSeparable(alpha, NoV, NoL);
+#elif HV_BRDF_V == HV_V_SMITH_BECKMANN_SEPARABLE
+  return V_SmithBeckmannSeparable(alpha, NoV, NoL);
+#elif HV_BRDF_V == HV_V_COOK_TORRANCE
+  return V_CookTorrance(NoH, NoV, NoL, VoH);
+#else
+  return V_Implicit();
+#endif
+}
+
+// Visibility for analytic lights: with HV_REMAP_ROUGHNESS the alpha of the V term is
+// ((roughness+1)/2)^2 (Karis 2013 eq. 4 and "Specular G"), otherwise alpha.
+float visibility(float roughness, float alpha, float NoV, float NoL, float NoH, float VoH) {
+#if HV_REMAP_ROUGHNESS
+  float alpha_v = remappedVisibilityAlpha(roughness);
+#else
+  float alpha_v = alpha;
+#endif
+  return visibilityForAlpha(alpha_v, NoV, NoL, NoH, VoH);
+}
+
+// Karis 2013 eq. 5 area; f90 = 1 except for the UE4 occlusion variant.
+vec3 fresnel(vec3 f0, float VoH) {
+#if HV_BRDF_F == HV_F_SCHLICK
+  return F_Schlick(f0, 1.0f, VoH);
+#elif HV_BRDF_F == HV_F_SCHLICK_SG
+  return F_SchlickSG(f0, 1.0f, VoH);
+#elif HV_BRDF_F == HV_F_EXACT
+  return F_ExactDielectric(f0, VoH);
+#else
+  return F_SchlickF90Occlusion(f0, VoH);
+#endif
+}
+
+// Diffuse BRDF without the diffuse color: Lambert (Karis 2013 eq. 1) or Burley 2012.
+float diffuseLobe(float roughness, float NoV, float NoL, float LoH) {
+#if HV_BRDF_FD == HV_FD_BURLEY
+  return Fd_Burley(roughness, NoV, NoL, LoH);
+#else
+  return Fd_Lambert();
+#endif
+}
+
+// Specular BRDF D V F (Karis 2013 eq. 3 with V = G / (4 NoL NoV)). normalization scales D: 1 for
+// punctual lights, the energy normalization of Karis 2013 eqs. 14 and 20 for area lights.
+// NoV must already be clamped (HV_MIN_NOV), NoL saturated.
+vec3 specularLobe(Surface s, float NoV, float NoL, float NoH, float VoH, float normalization) {
+  float D = distribution(s.alpha, NoH) * normalization;
+  float Vis = visibility(s.roughness, s.alpha, NoV, NoL, NoH, VoH);
+  return (D * Vis) * fresnel(s.f0, VoH);
+}
+
+// Full BRDF f(v, l) (not multiplied by NoL) for unit V and L: diffuse_color * Fd + D V F.
+// Follows the conventions of the lights: NoV clamped to HV_MIN_NOV, NoL, NoH, VoH saturated.
+vec3 evaluateBrdf(Surface s, vec3 V, vec3 L) {
+  vec3 H = safeNormalize(V + L);  // V = -L gives H = 0, NoH = VoH = 0, not NaN
+  float NoV = max(dot(s.N, V), HV_MIN_NOV);
+  float NoL = saturate(dot(s.N, L));
+  float NoH = saturate(dot(s.N, H));
+  float VoH = saturate(dot(V, H));
+  return s.diffuse_color * diffuseLobe(s.roughness, NoV, NoL, VoH) +
+         specularLobe(s, NoV, NoL, NoH, VoH, 1.0f);
+}
+
+#endif
