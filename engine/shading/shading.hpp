@@ -14,6 +14,7 @@ namespace hv::glsl {
 namespace {
 #include "../../shaders/common/math.glsl"
 #include "../../shaders/common/brdf.glsl"
+#include "../../shaders/common/sampling.glsl"
 }  // namespace
 }  // namespace hv::glsl
 #pragma GCC diagnostic pop
