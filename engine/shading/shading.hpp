@@ -14,6 +14,7 @@ namespace hv::glsl {
 namespace {
 #include "../../shaders/common/math.glsl"
 #include "../../shaders/common/brdf.glsl"
+#include "../../shaders/common/sampling.glsl"
 #include "../../shaders/common/gbuffer.glsl"
 #include "../../shaders/common/tonemap.glsl"
 }  // namespace

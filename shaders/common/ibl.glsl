@@ -1,0 +1,87 @@
+// Image-based lighting math shared by the ambient pass and the CPU bake (engine/ibl). See
+// engine/shading/glsl.hpp for the GLSL/C++ rules. Roughness is perceptual (the material value);
+// alpha = roughness^2 (Karis 2013).
+#ifndef HV_IBL_GLSL
+#define HV_IBL_GLSL
+
+#include "math.glsl"
+
+// --- Prefiltered radiance: roughness <-> mip ------------------------------------------------
+// Mip 0 is the unfiltered environment (roughness 0); the last mip holds roughness 1. The mapping
+// lod = maxMip * r * (2 - r) (Filament, "Physically Based Rendering in Filament", section
+// "IBL / pre-filtered importance sampling": perceptualRoughnessToLod) spends more mips on low
+// roughness, where the GGX lobe changes fastest. Its inverse is r = 1 - sqrt(1 - lod / maxMip).
+float roughnessToMip(float roughness, float maxMip) {
+  float r = saturate(roughness);
+  return maxMip * r * (2.0f - r);
+}
+float mipToRoughness(float mip, float maxMip) {
+  if (maxMip <= 0.0f) return 0.0f;
+  return 1.0f - sqrt(saturate(1.0f - mip / maxMip));
+}
+
+// --- Split-sum specular ---------------------------------------------------------------------
+// Karis 2014, "Physically Based Shading on Mobile": analytic fit of the env BRDF table (Karis
+// 2013 eq. 8), returns specColor * scale + bias.
+vec3 EnvBRDFApprox(vec3 specColor, float roughness, float NoV) {
+  const vec4 c0 = vec4(-1.0f, -0.0275f, -0.572f, 0.022f);
+  const vec4 c1 = vec4(1.0f, 0.0425f, 1.04f, -0.04f);
+  vec4 r = roughness * c0 + c1;
+  float a004 = min(r.x * r.x, exp2(-9.28f * NoV)) * r.x + r.y;
+  float scale = -1.04f * a004 + r.z;
+  float bias = 1.04f * a004 + r.w;
+  return specColor * scale + bias;
+}
+
+// The same fit as (scale, bias), for energyCompensation() when no table is bound.
+vec2 EnvBRDFApproxScaleBias(float roughness, float NoV) {
+  vec3 sb = EnvBRDFApprox(vec3(1.0f, 0.0f, 0.0f), roughness, NoV);
+  return vec2(sb.x - sb.y, sb.y);
+}
+
+// Split-sum specular of Karis 2013 eq. 8: prefiltered radiance times (F0 * scale + bias).
+vec3 specularIBL(vec3 prefiltered, vec3 f0, vec2 scaleBias) {
+  return prefiltered * (f0 * scaleBias.x + scaleBias.y);
+}
+
+// Multiple-scattering energy compensation for the specular lobe: Fdez-Aguera 2019, "A
+// Multiple-Scattering Microfacet Model for Real-Time Image-based Lighting", in the form of the
+// Filament documentation (section "Energy loss in specular reflectance"): the single-scattering
+// albedo of a white (F0 = 1) surface is E = scale + bias, and the specular lobe is scaled by
+// 1 + F0 * (1 / E - 1), so a white furnace reflects exactly 1. Multiply it into the specular
+// term of both the image-based and the analytic lights. E is clamped away from 0 (it never goes
+// below ~0.4 for GGX, so the clamp only guards bad input).
+vec3 energyCompensation(vec3 f0, vec2 scaleBias) {
+  float E = max(scaleBias.x + scaleBias.y, 1e-4f);
+  return 1.0f + f0 * (1.0f / E - 1.0f);
+}
+
+// Lagarde & de Rousiers 2014, "Moving Frostbite to Physically Based Rendering 3.0", section
+// 4.10.2, listing 26 (computeSpecOcclusion): specular occlusion from ambient occlusion. Their
+// `roughness` is alpha (the squared perceptual roughness).
+float specularOcclusion(float NoV, float ao, float alpha) {
+  return saturate(pow(NoV + ao, exp2(-16.0f * alpha - 1.0f)) - 1.0f + ao);
+}
+
+// --- Diffuse: order-2 spherical harmonics ---------------------------------------------------
+// Coefficient order (l, m): (0,0) (1,-1) (1,0) (1,1) (2,-2) (2,-1) (2,0) (2,1) (2,2); basis
+// functions of Ramamoorthi & Hanrahan 2001 eq. 3 in world axes (x, y, z) of the direction:
+// 0.282095; 0.488603 y, z, x; 1.092548 xy, yz; 0.315392 (3z^2 - 1); 1.092548 xz;
+// 0.546274 (x^2 - y^2). sh[] holds the radiance coefficients L_lm (projectSH9 in engine/ibl).
+// Returns irradiance E(n) by eq. 13 with the eq. 12 constants (Lambert diffuse = albedo/PI * E).
+vec3 evalSH9Irradiance(vec3 sh[9], vec3 n) {
+  const float c1 = 0.429043f;
+  const float c2 = 0.511664f;
+  const float c3 = 0.743125f;
+  const float c4 = 0.886227f;
+  const float c5 = 0.247708f;
+  float x = n.x;
+  float y = n.y;
+  float z = n.z;
+  vec3 e = c1 * sh[8] * (x * x - y * y) + c3 * sh[6] * (z * z) + c4 * sh[0] - c5 * sh[6];
+  e += 2.0f * c1 * (sh[4] * (x * y) + sh[7] * (x * z) + sh[5] * (y * z));
+  e += 2.0f * c2 * (sh[3] * x + sh[1] * y + sh[2] * z);
+  return max(e, vec3(0.0f));
+}
+
+#endif

@@ -1,0 +1,354 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include <unistd.h>
+
+#include "ibl/ibl.hpp"
+#include "ibl/ibl_math.hpp"
+
+namespace fs = std::filesystem;
+namespace g = hv::glsl;
+
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+
+struct TmpDir {
+  fs::path dir = fs::temp_directory_path() / ("hv_test_ibl_" + std::to_string(::getpid()));
+  TmpDir() { fs::create_directories(dir); }
+  ~TmpDir() {
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+  }
+};
+
+fs::path tmpPath(const std::string& name) {
+  static TmpDir tmp;
+  return tmp.dir / name;
+}
+
+void writeBytes(const fs::path& path, const std::string& bytes) {
+  std::ofstream f(path, std::ios::binary);
+  f.write(bytes.data(), std::streamsize(bytes.size()));
+}
+
+// Small, fast bake settings for tests.
+hv::BakeOptions fastOptions() {
+  hv::BakeOptions o;
+  o.cube_size = 32;
+  o.prefilter_samples = 64;
+  o.min_mip_size = 4;
+  o.env_brdf_size = 32;
+  o.env_brdf_samples = 256;
+  o.irradiance_size = 8;
+  o.use_cache = false;
+  o.progress = false;
+  return o;
+}
+
+bool finite(glm::vec3 v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+bool allFinite(const hv::CubeMapF& c) {
+  for (const auto& level : c.levels)
+    for (const auto& face : level)
+      for (const glm::vec3& p : face)
+        if (!finite(p)) return false;
+  return true;
+}
+
+std::string errorOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const hv::IblError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// A tiny valid Radiance file: 8x4, flat (uncompressed) scanlines, every pixel RGBE (128, 64, 32,
+// 129) = (1.0, 0.5, 0.25) (stb: value = byte * 2^(e - 136)).
+std::string tinyHdr(const std::string& format = "32-bit_rle_rgbe",
+                    const std::string& res = "-Y 4 +X 8") {
+  std::string s = "#?RADIANCE\n# test\nFORMAT=" + format + "\n\n" + res + "\n";
+  for (int i = 0; i < 8 * 4; ++i) s += std::string{char(128), char(64), char(32), char(129)};
+  return s;
+}
+
+std::string assetsDir() {
+  if (const char* e = std::getenv("HV_ASSETS_DIR"); e && *e) return e;
+  return HV_ASSETS_DIR;
+}
+
+}  // namespace
+
+TEST(CubeMap, SolidAngleAndFaceRoundTrip) {
+  for (int size : {1, 4, 32}) {
+    double sum = 0.0;
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x) sum += hv::cubeTexelSolidAngle(x, y, size);
+    EXPECT_NEAR(6.0 * sum, 4.0 * double(kPi), 1e-5) << size;
+  }
+  for (int f = 0; f < 6; ++f)
+    for (float u : {0.1f, 0.5f, 0.8f})
+      for (float v : {0.2f, 0.5f, 0.9f}) {
+        float uu, vv;
+        const glm::vec3 d = hv::cubeDirection(f, u, v);
+        EXPECT_EQ(hv::cubeFaceUV(d, uu, vv), f);
+        EXPECT_NEAR(uu, u, 1e-5f);
+        EXPECT_NEAR(vv, v, 1e-5f);
+      }
+  // GL table 8.19: +X face center looks down +X; +Y face's t grows towards +Z.
+  EXPECT_NEAR(hv::cubeDirection(0, 0.5f, 0.5f).x, 1.0f, 1e-6f);
+  EXPECT_GT(hv::cubeDirection(2, 0.5f, 0.9f).z, 0.0f);
+}
+
+TEST(IblMath, MipRoughnessInverseAndFinite) {
+  for (float r = 0.0f; r <= 1.0f; r += 0.125f) {
+    const float m = g::roughnessToMip(r, 5.0f);
+    EXPECT_NEAR(g::mipToRoughness(m, 5.0f), r, 1e-5f);
+  }
+  EXPECT_EQ(g::roughnessToMip(1.0f, 5.0f), 5.0f);
+  for (float r : {0.0f, 1.0f})
+    for (float nov : {0.0f, 1e-4f, 1.0f}) {
+      EXPECT_TRUE(finite(g::EnvBRDFApprox(glm::vec3(0.04f), r, nov)));
+      const glm::vec2 ab = hv::integrateEnvBrdfAt(nov, r, 256);
+      EXPECT_TRUE(std::isfinite(ab.x) && std::isfinite(ab.y)) << r << " " << nov;
+      EXPECT_TRUE(finite(g::energyCompensation(glm::vec3(1.0f), ab)));
+      EXPECT_TRUE(std::isfinite(g::specularOcclusion(nov, 0.5f, r * r)));
+    }
+  EXPECT_NEAR(g::specularOcclusion(1.0f, 1.0f, 0.25f), 1.0f, 1e-6f);  // no AO -> no occlusion
+}
+
+TEST(Ibl, FurnaceUniform) {
+  hv::Environment env;
+  env.kind = hv::EnvironmentKind::Uniform;
+  env.color = glm::vec3(0.5f, 1.0f, 2.0f);
+  env.intensity = 1.5f;
+  const glm::vec3 L = env.color * env.intensity;
+  const hv::IblBake b = hv::bakeEnvironment(env, fastOptions());
+  // SH9 irradiance = pi L in every direction.
+  for (glm::vec3 n :
+       {glm::vec3(0, 1, 0), glm::vec3(1, 0, 0), glm::normalize(glm::vec3(1, -2, 3))}) {
+    glm::vec3 sh[9];
+    for (int i = 0; i < 9; ++i) sh[i] = b.sh[size_t(i)];
+    const glm::vec3 e = g::evalSH9Irradiance(sh, n);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(e[c] / (kPi * L[c]), 1.0f, 1e-3f);
+  }
+  // Irradiance cube = pi L.
+  ASSERT_EQ(b.irradiance.size, 8);
+  for (const auto& face : b.irradiance.levels[0])
+    for (const glm::vec3& e : face)
+      for (int c = 0; c < 3; ++c) ASSERT_NEAR(e[c] / (kPi * L[c]), 1.0f, 1e-3f);
+  // Every prefiltered mip = L.
+  ASSERT_EQ(b.radiance.mipCount(), 4);  // 32, 16, 8, 4
+  for (const auto& level : b.radiance.levels)
+    for (const auto& face : level)
+      for (const glm::vec3& p : face)
+        for (int c = 0; c < 3; ++c) ASSERT_NEAR(p[c] / L[c], 1.0f, 1e-4f);
+}
+
+// Independent check of Karis eq. 8: deterministic midpoint quadrature over half-vector space
+// (theta_H, phi_H) of the full specular BRDF D V F NoL with the Jacobian 4 VoH, F = Schlick with
+// F0 = 1 (total = scale + bias) and F0 = 0, F90 = 1 (bias).
+glm::vec2 quadratureEnvBrdf(float NoV, float roughness) {
+  const float alpha = roughness * roughness;
+  const glm::vec3 V(std::sqrt(1.0f - NoV * NoV), 0.0f, NoV);
+  const int nt = 2000, np = 128;
+  double total = 0.0, bias = 0.0;
+  for (int i = 0; i < nt; ++i) {
+    const double th = (i + 0.5) * (kPi / 2.0) / nt;
+    for (int j = 0; j < np; ++j) {
+      const double ph = (j + 0.5) * 2.0 * kPi / np;
+      const glm::vec3 H(float(std::sin(th) * std::cos(ph)), float(std::sin(th) * std::sin(ph)),
+                        float(std::cos(th)));
+      const float VoH = glm::dot(V, H);
+      if (VoH <= 0.0f) continue;
+      const glm::vec3 Ld = 2.0f * VoH * H - V;
+      const float NoL = Ld.z;
+      if (NoL <= 0.0f) continue;
+      const double dw_h = std::sin(th) * (kPi / 2.0 / nt) * (2.0 * kPi / np);
+      const double f = double(g::D_GGX(alpha, H.z)) * g::V_SchlickGGX(0.5f * alpha, NoV, NoL) *
+                       NoL * 4.0 * VoH * dw_h;
+      total += f * g::F_Schlick(1.0f, 1.0f, VoH);
+      bias += f * g::F_Schlick(0.0f, 1.0f, VoH);
+    }
+  }
+  return glm::vec2(float(total - bias), float(bias));
+}
+
+TEST(Ibl, EnvBrdfMatchesQuadrature) {
+  int checked = 0;
+  for (float r : {0.25f, 0.5f, 0.75f, 1.0f})
+    for (float nov : {0.1f, 0.3f, 0.6f, 0.9f}) {
+      const glm::vec2 is = hv::integrateEnvBrdfAt(nov, r, 1024);
+      const glm::vec2 q = quadratureEnvBrdf(nov, r);
+      EXPECT_NEAR(is.x, q.x, 0.005f) << "roughness " << r << " NoV " << nov;
+      EXPECT_NEAR(is.y, q.y, 0.005f) << "roughness " << r << " NoV " << nov;
+      ++checked;
+    }
+  EXPECT_GE(checked, 16);
+  // Karis 2014's analytic fit agrees loosely (it is a fit of this very table).
+  const glm::vec2 ab = hv::integrateEnvBrdfAt(0.5f, 0.5f, 1024);
+  const glm::vec2 fit = g::EnvBRDFApproxScaleBias(0.5f, 0.5f);
+  EXPECT_NEAR(ab.x, fit.x, 0.05f);
+  EXPECT_NEAR(ab.y, fit.y, 0.05f);
+}
+
+TEST(Ibl, EnvBrdfTableBoundedAndEnergyCompensation) {
+  const int n = 32;
+  const std::vector<glm::vec2> table = hv::integrateEnvBrdf(n, 512, 2);
+  for (const glm::vec2& ab : table) {
+    ASSERT_TRUE(std::isfinite(ab.x) && std::isfinite(ab.y));
+    ASSERT_GE(ab.x, 0.0f);
+    ASSERT_GE(ab.y, 0.0f);
+    ASSERT_LE(ab.x + ab.y, 1.0f + 1e-3f);
+  }
+  // White metal (F0 = 1) in a uniform white environment: the compensated split sum gives 1.
+  hv::Environment env;
+  env.kind = hv::EnvironmentKind::Uniform;
+  hv::BakeOptions o = fastOptions();
+  const hv::IblBake b = hv::bakeEnvironment(env, o);
+  const float max_mip = float(b.radiance.mipCount() - 1);
+  const glm::vec3 f0(1.0f);
+  for (float r : {0.0f, 0.5f, 1.0f})
+    for (float nov : {0.05f, 0.5f, 1.0f}) {
+      const glm::vec3 R = glm::normalize(glm::vec3(0.3f, 1.0f, -0.2f));
+      const glm::vec3 pre = b.radiance.sampleLod(R, g::roughnessToMip(r, max_mip));
+      const glm::vec2 ab = hv::lookupEnvBrdf(b.env_brdf, b.env_brdf_size, nov, r);
+      const glm::vec3 spec = g::specularIBL(pre, f0, ab) * g::energyCompensation(f0, ab);
+      EXPECT_NEAR(spec.x, 1.0f, 0.02f) << "roughness " << r << " NoV " << nov;
+      if (r == 1.0f) {
+        EXPECT_LT(g::specularIBL(pre, f0, ab).x, 0.98f);  // the loss it makes up for
+      }
+    }
+}
+
+TEST(Ibl, HdrErrors) {
+  EXPECT_NE(errorOf([] { hv::loadHdr("/nonexistent/sky.hdr"); }).find("/nonexistent/sky.hdr"),
+            std::string::npos);
+  const fs::path good = tmpPath("tiny.hdr");
+  writeBytes(good, tinyHdr());
+  const hv::ImageRGBf img = hv::loadHdr(good.string());
+  ASSERT_EQ(img.width, 8);
+  ASSERT_EQ(img.height, 4);
+  EXPECT_NEAR(img.at(3, 2).x, 1.0f, 1e-6f);
+  EXPECT_NEAR(img.at(3, 2).z, 0.25f, 1e-6f);
+
+  const std::string full = tinyHdr();
+  const fs::path cut = tmpPath("cut.hdr");
+  writeBytes(cut, full.substr(0, full.size() - 20));
+  std::string msg = errorOf([&] { hv::loadHdr(cut.string()); });
+  EXPECT_NE(msg.find("truncated"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("cut.hdr"), std::string::npos) << msg;
+
+  const fs::path png = tmpPath("not.hdr");
+  writeBytes(png, "\x89PNG\r\n\x1a\n garbage");
+  msg = errorOf([&] { hv::loadHdr(png.string()); });
+  EXPECT_NE(msg.find("not a Radiance"), std::string::npos) << msg;
+
+  writeBytes(png, tinyHdr("32-bit_rle_xyze"));
+  EXPECT_NE(errorOf([&] { hv::loadHdr(png.string()); }).find("unsupported"), std::string::npos);
+  writeBytes(png, tinyHdr("32-bit_rle_rgbe", "+Y 4 +X 8"));
+  EXPECT_NE(errorOf([&] { hv::loadHdr(png.string()); }).find("resolution"), std::string::npos);
+  writeBytes(png, "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n");
+  EXPECT_NE(errorOf([&] { hv::loadHdr(png.string()); }).find("truncated header"),
+            std::string::npos);
+
+  hv::Environment env;
+  env.kind = hv::EnvironmentKind::HdrFile;
+  env.path = cut.string();
+  EXPECT_NE(errorOf([&] { hv::bakeEnvironment(env, fastOptions()); }).find("truncated"),
+            std::string::npos);
+}
+
+TEST(Ibl, SkyBakeFiniteAndCache) {
+  hv::Environment env;
+  env.kind = hv::EnvironmentKind::Sky;
+  env.rotation_deg = 30.0f;
+  hv::BakeOptions o = fastOptions();
+  o.use_cache = true;
+  o.cache_dir = tmpPath("cache").string();
+  const hv::IblBake a = hv::bakeEnvironment(env, o);
+  EXPECT_FALSE(a.timings.cache_hit);
+  EXPECT_TRUE(allFinite(a.radiance));
+  EXPECT_TRUE(allFinite(a.irradiance));
+  // The sun dominates: the brightest mip-0 texel is far above the sky dome.
+  float peak = 0.0f;
+  for (const auto& face : a.radiance.levels[0])
+    for (const glm::vec3& p : face) peak = std::max(peak, p.y);
+  EXPECT_GT(peak, 10.0f);
+  // Sky above is brighter than the ground below, in SH and in the irradiance cube.
+  glm::vec3 sh[9];
+  for (int i = 0; i < 9; ++i) sh[i] = a.sh[size_t(i)];
+  EXPECT_GT(g::evalSH9Irradiance(sh, glm::vec3(0, 1, 0)).y,
+            g::evalSH9Irradiance(sh, glm::vec3(0, -1, 0)).y);
+
+  const hv::IblBake b = hv::bakeEnvironment(env, o);
+  EXPECT_TRUE(b.timings.cache_hit);
+  EXPECT_EQ(b.radiance.levels, a.radiance.levels);
+  EXPECT_EQ(b.env_brdf, a.env_brdf);
+  EXPECT_EQ(b.sh, a.sh);
+  EXPECT_EQ(b.irradiance.levels, a.irradiance.levels);
+  // Other settings -> other cache entry.
+  o.prefilter_samples = 32;
+  EXPECT_FALSE(hv::bakeEnvironment(env, o).timings.cache_hit);
+}
+
+TEST(Ibl, RotationAboutY) {
+  hv::EnvSource src;
+  src.kind = hv::EnvironmentKind::Sky;
+  const glm::vec3 sun = hv::skySunDirection(src.sky);
+  EXPECT_GT(src.radiance(sun).y, 1000.0f);
+  src.rotation_deg = 90.0f;
+  const float a = glm::radians(90.0f);
+  const glm::vec3 rotated(std::cos(a) * sun.x + std::sin(a) * sun.z, sun.y,
+                          -std::sin(a) * sun.x + std::cos(a) * sun.z);
+  EXPECT_GT(src.radiance(rotated).y, 1000.0f);
+  EXPECT_LT(src.radiance(sun).y, 10.0f);
+}
+
+TEST(Ibl, SharedHdrAssetsBake) {
+  const std::string dir = assetsDir();
+  if (dir.empty()) GTEST_SKIP() << "HV_ASSETS_DIR not set (configure with -DHV_ASSETS_DIR=...)";
+  for (const char* name :
+       {"studio_small_03_1k.hdr", "venice_sunset_1k.hdr", "empty_warehouse_01_1k.hdr"}) {
+    hv::Environment env;
+    env.kind = hv::EnvironmentKind::HdrFile;
+    env.path = (fs::path(dir) / "env" / name).string();
+    if (!fs::exists(env.path)) GTEST_SKIP() << "missing asset " << env.path;
+    hv::BakeOptions o = fastOptions();
+    o.prefilter_samples = 32;
+    o.env_brdf_size = 8;
+    const hv::IblBake b = hv::bakeEnvironment(env, o);
+    EXPECT_TRUE(allFinite(b.radiance)) << name;
+    EXPECT_TRUE(allFinite(b.irradiance)) << name;
+    for (const glm::vec3& c : b.sh) EXPECT_TRUE(finite(c)) << name;
+    EXPECT_GT(b.sh[0].x, 0.0f) << name;
+  }
+}
+
+// Not part of the suite (run with --gtest_also_run_disabled_tests): bake times for a 256 cube
+// with the default settings of a shared HDR, no cache.
+TEST(IblTiming, DISABLED_Bake256Default) {
+  const std::string dir = assetsDir();
+  if (dir.empty()) GTEST_SKIP() << "HV_ASSETS_DIR not set";
+  hv::Environment env;
+  env.kind = hv::EnvironmentKind::HdrFile;
+  env.path = (fs::path(dir) / "env" / "venice_sunset_1k.hdr").string();
+  hv::BakeOptions o;
+  o.use_cache = false;
+  const hv::IblBake b = hv::bakeEnvironment(env, o);
+  const hv::BakeTimings& t = b.timings;
+  std::printf(
+      "cube %d, %d samples, %d mips: load %.0f ms, convert %.0f ms, prefilter %.0f ms, env BRDF "
+      "%.0f ms, SH %.0f ms, irradiance %.0f ms, total %.0f ms\n",
+      b.radiance.size, env.prefilter_samples, b.radiance.mipCount(), t.load_ms, t.convert_ms,
+      t.prefilter_ms, t.env_brdf_ms, t.sh_ms, t.irradiance_ms, t.total_ms);
+}
