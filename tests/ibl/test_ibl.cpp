@@ -335,7 +335,7 @@ TEST(Ibl, SharedHdrAssetsBake) {
 }
 
 // Not part of the suite (run with --gtest_also_run_disabled_tests): bake times for a 256 cube
-// with the default settings of a shared HDR, no cache.
+// with the default settings of a shared HDR, then the same bake again from the cache.
 TEST(IblTiming, DISABLED_Bake256Default) {
   const std::string dir = assetsDir();
   if (dir.empty()) GTEST_SKIP() << "HV_ASSETS_DIR not set";
@@ -343,12 +343,15 @@ TEST(IblTiming, DISABLED_Bake256Default) {
   env.kind = hv::EnvironmentKind::HdrFile;
   env.path = (fs::path(dir) / "env" / "venice_sunset_1k.hdr").string();
   hv::BakeOptions o;
-  o.use_cache = false;
+  o.cache_dir = tmpPath("timing-cache").string();
   const hv::IblBake b = hv::bakeEnvironment(env, o);
   const hv::BakeTimings& t = b.timings;
   std::printf(
       "cube %d, %d samples, %d mips: load %.0f ms, convert %.0f ms, prefilter %.0f ms, env BRDF "
-      "%.0f ms, SH %.0f ms, irradiance %.0f ms, total %.0f ms\n",
+      "%.0f ms, SH %.0f ms, irradiance %.0f ms, cache write %.0f ms, total %.0f ms\n",
       b.radiance.size, env.prefilter_samples, b.radiance.mipCount(), t.load_ms, t.convert_ms,
-      t.prefilter_ms, t.env_brdf_ms, t.sh_ms, t.irradiance_ms, t.total_ms);
+      t.prefilter_ms, t.env_brdf_ms, t.sh_ms, t.irradiance_ms, t.cache_ms, t.total_ms);
+  const hv::IblBake c = hv::bakeEnvironment(env, o);
+  EXPECT_TRUE(c.timings.cache_hit);
+  std::printf("second bake: cache hit %d, %.1f ms\n", int(c.timings.cache_hit), c.timings.total_ms);
 }
