@@ -8,14 +8,6 @@
 
 namespace hv::render {
 
-struct Renderer::Environment {
-  gl::Texture radiance, irradiance, env_brdf;
-  gl::Buffer block;
-  gl::Sampler trilinear;
-  bool present = false;
-  BakeTimings timings;
-};
-
 namespace {
 struct alignas(16) EnvironmentBlock {
   glm::vec4 sh[9];

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "gl/objects.hpp"
+#include "ibl/ibl.hpp"
 #include "render/renderer.hpp"
 
 namespace hv::render {
@@ -16,6 +17,15 @@ struct Renderer::Targets {
   gl::Texture ldr;          // RGBA8 output
   gl::Framebuffer gbuffer;  // base, material, normal, hdr + depth
   gl::Framebuffer output;   // ldr
+};
+
+// The environment's GPU resources (uploaded IBL bake).
+struct Renderer::Environment {
+  gl::Texture radiance, irradiance, env_brdf;
+  gl::Buffer block;
+  gl::Sampler trilinear;
+  bool present = false;
+  BakeTimings timings;
 };
 
 }  // namespace hv::render
