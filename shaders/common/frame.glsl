@@ -21,6 +21,10 @@ layout(std140, binding = 0) uniform FrameBlock {
 #define HV_BINDING_TILE_RANGES 4
 #define HV_BINDING_TILE_INDICES 5
 
+// Largest finite half float: the RGBA16F accumulation target turns anything above into Inf, so the
+// passes clamp what they store (a 1e6-intensity light next to a surface must not write Inf).
+#define HV_HDR_MAX 65504.0
+
 // Light culling tile size in pixels (also the shading workgroup size).
 #define HV_TILE_SIZE 16
 

@@ -49,7 +49,7 @@ void main() {
     vec3 far_point = reconstructWorldPosition(uv, 1e-3, u_inv_view_proj);
     vec3 dir = normalize(far_point - u_camera_pos.xyz);
     vec3 sky = u_env.z > 0.5 ? textureLod(t_radiance, dir, 0.0).rgb : vec3(0.0);
-    imageStore(i_hdr, px, vec4(sky, 1.0));
+    imageStore(i_hdr, px, vec4(min(sky, vec3(HV_HDR_MAX)), 1.0));
     return;
   }
   if (model != HV_MODEL_DEFAULT_LIT || u_env.z < 0.5) return;
@@ -87,5 +87,5 @@ void main() {
 #if HV_SPECULAR_OCCLUSION
   specular *= specularOcclusion(NoV, s.cavity, s.alpha);
 #endif
-  imageStore(i_hdr, px, vec4(hdr.rgb + diffuse + specular, hdr.a));
+  imageStore(i_hdr, px, vec4(min(hdr.rgb + diffuse + specular, vec3(HV_HDR_MAX)), hdr.a));
 }

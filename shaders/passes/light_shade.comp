@@ -48,5 +48,5 @@ void main() {
   for (uint i = range.x; i < end; ++i) sum += evaluateLight(lights[tile_indices[i]], s, P, V);
 #endif
   vec4 hdr = imageLoad(i_hdr, px);
-  imageStore(i_hdr, px, vec4(hdr.rgb + sum, hdr.a));
+  imageStore(i_hdr, px, vec4(min(hdr.rgb + sum, vec3(HV_HDR_MAX)), hdr.a));
 }

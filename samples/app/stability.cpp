@@ -1,0 +1,161 @@
+#include "app/stability.hpp"
+
+#include <cmath>
+
+#include "render/renderer.hpp"
+#include "scene/enums.hpp"
+#include "scene/primitives.hpp"
+
+namespace hv::app {
+
+namespace {
+
+// Four spheres: (metallic 0/1) x (base color black/white), all of one roughness, seen so that
+// their silhouettes give N.V -> 0 and the light gives N.L from 1 to 0 (and below).
+Scene baseScene(float roughness) {
+  Scene s;
+  s.camera.position = {0.0f, 0.0f, 7.0f};
+  s.camera.target = {0.0f, 0.0f, 0.0f};
+  s.camera.fov_y_deg = 50.0f;
+  s.environment.kind = EnvironmentKind::None;
+  s.meshes.push_back(makeSphere(1.0f, 32, 16));
+  int i = 0;
+  for (float metallic : {0.0f, 1.0f}) {
+    for (float base : {0.0f, 1.0f}) {
+      Material m;
+      m.base_color = glm::vec3(base);
+      m.metallic = metallic;
+      m.roughness = roughness;
+      s.materials.push_back(m);
+      Mesh mesh = s.meshes[0];
+      mesh.material = i;
+      s.meshes.push_back(mesh);
+      Object o;
+      o.meshes = {i + 1};
+      o.transform[3] = glm::vec4((i % 2) * 2.2f - 1.1f, (i / 2) * 2.2f - 1.1f, 0.0f, 1.0f);
+      s.objects.push_back(o);
+      ++i;
+    }
+  }
+  s.meshes.erase(s.meshes.begin());
+  for (auto& o : s.objects) o.meshes[0] -= 1;
+  return s;
+}
+
+struct Geometry {
+  std::string name;
+  std::function<void(Light&)> apply;
+};
+
+// Light configurations relative to the sphere at (-1.1, -1.1, 0) (radius 1). Each geometry is
+// applied to each light type; radius/length only matter for sphere/tube.
+std::vector<Geometry> geometries() {
+  const glm::vec3 c(-1.1f, -1.1f, 0.0f);
+  return {
+      {"front d=2", [c](Light& l) { l.position = c + glm::vec3(0, 0, 3); }},
+      {"at surface (inside light)", [c](Light& l) { l.position = c + glm::vec3(0, 0, 1); l.radius = std::max(l.radius, 0.3f); }},
+      {"at center of sphere", [c](Light& l) { l.position = c; }},
+      {"distance 1e-6", [c](Light& l) { l.position = c + glm::vec3(0, 0, 1.000001f); }},
+      {"distance 1e6", [c](Light& l) { l.position = c + glm::vec3(0, 0, 1e6f); l.range = 2e6f; }},
+      {"grazing (N.L=0 at front)", [c](Light& l) { l.position = c + glm::vec3(3, 0, 0); }},
+      {"radius 0, length 0", [c](Light& l) { l.position = c + glm::vec3(0, 0, 3); l.radius = 0; l.length = 0; }},
+      {"intensity 1e6", [c](Light& l) { l.position = c + glm::vec3(0, 0, 1.5f); l.intensity = 1e6f; }},
+      {"huge radius 10", [c](Light& l) { l.position = c + glm::vec3(0, 0, 3); l.radius = 10.0f; }},
+  };
+}
+
+struct Option {
+  std::string name;
+  std::function<void(RenderSettings&)> apply;
+};
+
+std::vector<Option> options(bool small) {
+  std::vector<Option> o = {{"default", [](RenderSettings&) {}}};
+  auto add = [&](std::string n, std::function<void(RenderSettings&)> f) { o.push_back({std::move(n), std::move(f)}); };
+  for (auto d : {DistributionTerm::Beckmann, DistributionTerm::BlinnPhong}) {
+    add(std::string("d=") + std::string(toString(d)), [d](RenderSettings& s) { s.d = d; });
+  }
+  for (int v = 1; v <= static_cast<int>(VisibilityTerm::Implicit); ++v) {
+    const auto vt = static_cast<VisibilityTerm>(v);
+    add(std::string("v=") + std::string(toString(vt)), [vt](RenderSettings& s) { s.v = vt; });
+  }
+  for (int f = 1; f <= static_cast<int>(FresnelTerm::SchlickF90Occlusion); ++f) {
+    const auto ft = static_cast<FresnelTerm>(f);
+    add(std::string("f=") + std::string(toString(ft)), [ft](RenderSettings& s) { s.f = ft; });
+  }
+  add("diffuse=burley", [](RenderSettings& s) { s.diffuse = DiffuseTerm::Burley; });
+  add("remap_roughness=false", [](RenderSettings& s) { s.remap_roughness = false; });
+  add("falloff_plus_one=false", [](RenderSettings& s) { s.falloff_plus_one = false; });
+  add("sphere_diffuse=horizon_correct", [](RenderSettings& s) { s.sphere_diffuse = SphereDiffuse::HorizonCorrect; });
+  add("sphere_normalization=false", [](RenderSettings& s) { s.sphere_normalization = false; });
+  add("tube_specular=smallest_angle_eq18", [](RenderSettings& s) { s.tube_specular = TubeSpecular::SmallestAngleEq18; });
+  add("tube_normalization=false", [](RenderSettings& s) { s.tube_normalization = false; });
+  add("culling=brute_force", [](RenderSettings& s) { s.culling = Culling::BruteForce; });
+  if (small) {
+    // CI: the options whose code paths differ most (physical falloff divides by d^2 alone).
+    std::vector<Option> keep;
+    for (auto& x : o) {
+      if (x.name == "default" || x.name == "falloff_plus_one=false" ||
+          x.name == "v=smith_ggx_correlated" || x.name == "f=exact" ||
+          x.name == "sphere_diffuse=horizon_correct" || x.name == "tube_specular=smallest_angle_eq18" ||
+          x.name == "d=beckmann" || x.name == "diffuse=burley") {
+        keep.push_back(x);
+      }
+    }
+    o = keep;
+  }
+  return o;
+}
+
+}  // namespace
+
+std::vector<StabilityRow> runStabilitySweep(const StabilityOptions& opts,
+                                            const std::function<void(const StabilityRow&)>& progress) {
+  std::vector<StabilityRow> rows;
+  render::Renderer renderer;
+  for (const Option& opt : options(opts.small)) {
+    for (LightType type : {LightType::Point, LightType::Sphere, LightType::Tube}) {
+      for (const Geometry& g : geometries()) {
+        StabilityRow row{std::string(toString(type)), g.name, opt.name};
+        for (float roughness : {0.0f, 1.0f}) {
+          Scene scene = baseScene(roughness);
+          opt.apply(scene.settings);
+          Light l;
+          l.type = type;
+          l.intensity = 50.0f;
+          l.range = 20.0f;
+          l.radius = type == LightType::Point ? 0.0f : 0.2f;
+          l.length = type == LightType::Tube ? 1.0f : 0.0f;
+          l.axis = glm::normalize(glm::vec3(1, 1, 0));
+          g.apply(l);
+          if (type == LightType::Point) {
+            l.radius = 0.0f;
+            l.length = 0.0f;
+          }
+          if (type == LightType::Sphere) l.length = 0.0f;
+          scene.lights.push_back(l);
+          renderer.setScene(scene);
+          renderer.render(opts.size, opts.size);
+          const ImageRGBf hdr = renderer.readHdr();
+          for (const auto& p : hdr.px) {
+            bool nan = false, inf = false, neg = false;
+            for (int k = 0; k < 3; ++k) {
+              nan |= std::isnan(p[k]);
+              inf |= std::isinf(p[k]);
+              neg |= p[k] < 0.0f;
+              if (std::isfinite(p[k])) row.max_value = std::max(row.max_value, p[k]);
+            }
+            row.nan += nan;
+            row.inf += inf;
+            row.negative += neg;
+          }
+        }
+        if (progress) progress(row);
+        rows.push_back(row);
+      }
+    }
+  }
+  return rows;
+}
+
+}  // namespace hv::app

@@ -1,0 +1,111 @@
+// End-to-end tests of the halfvec command through runCli (no subprocess).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "app/cli.hpp"
+#include "image/image.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+std::string samples() { return HV_SAMPLES_DIR; }
+fs::path tmp(const std::string& name) {
+  fs::path d = fs::temp_directory_path() / "hv_cli_test";
+  fs::create_directories(d);
+  return d / name;
+}
+}  // namespace
+
+TEST(Cli, HelpDocumentsEveryRenderFlag) {
+  testing::internal::CaptureStdout();
+  EXPECT_EQ(hv::app::runCli({"render", "--help"}), 0);
+  const std::string out = testing::internal::GetCapturedStdout();
+  for (const char* flag : {"--size", "--out", "--hdr", "--stats", "--set", "--view"}) {
+    EXPECT_NE(out.find(flag), std::string::npos) << flag;
+  }
+}
+
+TEST(Cli, UnknownOptionIsAUsageError) {
+  EXPECT_EQ(hv::app::runCli({"render", samples() + "/default.json", "--bogus"}), 2);
+  EXPECT_EQ(hv::app::runCli({"nonsense"}), 2);
+}
+
+TEST(Cli, BadSceneFailsAndWritesNothing) {
+  const fs::path scene = tmp("bad.json");
+  std::ofstream(scene) << R"({"camera": {"fov_y_deg": "wide"}})";
+  const fs::path out = tmp("bad.png");
+  fs::remove(out);
+  testing::internal::CaptureStderr();
+  EXPECT_EQ(hv::app::runCli({"render", scene.string(), "--out", out.string()}), 1);
+  const std::string err = testing::internal::GetCapturedStderr();
+  EXPECT_NE(err.find("bad.json"), std::string::npos) << err;
+  EXPECT_NE(err.find("/camera/fov_y_deg"), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(Cli, RendersDefaultSceneFiniteAndNotUniform) {
+  const fs::path png = tmp("default.png"), pfm = tmp("default.pfm"), stats = tmp("default.json");
+  ASSERT_EQ(hv::app::runCli({"render", samples() + "/default.json", "--size", "160x90", "--out",
+                             png.string(), "--hdr", pfm.string(), "--stats", stats.string()}),
+            0);
+  const hv::ImageRGBf hdr = hv::readPfm(pfm.string());
+  ASSERT_EQ(hdr.width, 160);
+  ASSERT_EQ(hdr.height, 90);
+  float lo = 1e30f, hi = -1e30f;
+  for (const auto& p : hdr.px) {
+    for (int k = 0; k < 3; ++k) {
+      ASSERT_TRUE(std::isfinite(p[k]));
+      ASSERT_GE(p[k], 0.0f);
+      lo = std::min(lo, p[k]);
+      hi = std::max(hi, p[k]);
+    }
+  }
+  EXPECT_GT(hi - lo, 0.1f) << "the image is uniform";
+  const hv::ImageRGBA8 ldr = hv::readPng(png.string());
+  EXPECT_EQ(ldr.width, 160);
+
+  nlohmann::json j;
+  std::ifstream(stats) >> j;
+  for (const char* k : {"renderer", "width", "height", "passes", "total_ms",
+                        "gbuffer_bytes_per_pixel", "light_counts", "program_variants"}) {
+    EXPECT_TRUE(j.contains(k)) << k;
+  }
+  EXPECT_LE(j["gbuffer_bytes_per_pixel"].get<int>(), 16);
+  for (const char* pass : {"gbuffer", "light_cull", "light", "ambient", "tonemap"}) {
+    EXPECT_TRUE(j["passes"].contains(pass)) << pass;
+  }
+  EXPECT_EQ(j["light_counts"]["tube"].get<int>(), 1);
+}
+
+TEST(Cli, SetOverridesAField) {
+  const fs::path stats = tmp("override.json");
+  ASSERT_EQ(hv::app::runCli({"render", samples() + "/default.json", "--size", "64x64", "--out",
+                             tmp("o.png").string(), "--stats", stats.string(), "--set",
+                             "settings.culling=\"brute_force\""}),
+            0);
+  nlohmann::json j;
+  std::ifstream(stats) >> j;
+  EXPECT_FALSE(j["passes"].contains("light_cull"));
+}
+
+TEST(Cli, CompareReportsMetrics) {
+  hv::ImageRGBf a = hv::makeImageRGBf(4, 4, glm::vec3(1.0f));
+  hv::ImageRGBf b = hv::makeImageRGBf(4, 4, glm::vec3(1.0f));
+  b.px[0] = glm::vec3(2.0f);
+  hv::writePfm(tmp("a.pfm").string(), a);
+  hv::writePfm(tmp("b.pfm").string(), b);
+  testing::internal::CaptureStdout();
+  ASSERT_EQ(hv::app::runCli({"compare", tmp("a.pfm").string(), tmp("b.pfm").string(), "--json",
+                             tmp("m.json").string(), "--heatmap", tmp("h.png").string()}),
+            0);
+  testing::internal::GetCapturedStdout();
+  nlohmann::json j;
+  std::ifstream(tmp("m.json")) >> j;
+  EXPECT_NEAR(j["max_abs"].get<double>(), 1.0, 1e-9);
+  EXPECT_TRUE(fs::exists(tmp("h.png")));
+}
