@@ -6,6 +6,7 @@
 #include "render/pipeline_state.hpp"
 #include "render/targets.hpp"
 #include "shading/brdf.hpp"
+#include "shading/light_gpu.hpp"
 #include "shading/shading.hpp"
 
 namespace hv::render {
@@ -54,11 +55,7 @@ void Renderer::updateLights() {
 gl::DefineSet Renderer::lightingDefines() const {
   gl::DefineSet d;
   for (auto& [k, v] : brdfDefines(scene_->settings)) d.push_back({k, v});
-  bool has[3] = {false, false, false};
-  for (const Light& l : scene_->lights) has[static_cast<int>(l.type)] = true;
-  d.push_back({"HV_HAS_POINT_LIGHTS", has[0] ? "1" : "0"});
-  d.push_back({"HV_HAS_SPHERE_LIGHTS", has[1] ? "1" : "0"});
-  d.push_back({"HV_HAS_TUBE_LIGHTS", has[2] ? "1" : "0"});
+  for (auto& [k, v] : lightTypeDefines(scene_->lights)) d.push_back({k, v});
   d.push_back({"HV_CULLING_BRUTE_FORCE",
                scene_->settings.culling == Culling::BruteForce ? "1" : "0"});
   return d;
