@@ -59,7 +59,8 @@ int validate(const std::string& glslang, const fs::path& root, const fs::path& v
     const fs::path out = work / (std::to_string(n++) + "_" + fs::path(file).filename().string());
     std::ofstream(out) << src.text;
     const fs::path log = out.string() + ".log";
-    const std::string cmd = "\"" + glslang + "\" \"" + out.string() + "\" > \"" + log.string() + "\" 2>&1";
+    const std::string cmd =
+        "\"" + glslang + "\" \"" + out.string() + "\" > \"" + log.string() + "\" 2>&1";
     if (std::system(cmd.c_str()) != 0) {
       std::ifstream l(log);
       std::stringstream ss;
@@ -92,14 +93,19 @@ int main(int argc, char** argv) {
   }
   std::string glslang, root, variants, work;
   for (size_t i = 0; i + 1 < a.size(); i += 2) {
-    if (a[i] == "--validate") glslang = a[i + 1];
-    else if (a[i] == "--root") root = a[i + 1];
-    else if (a[i] == "--variants") variants = a[i + 1];
-    else if (a[i] == "--work") work = a[i + 1];
+    if (a[i] == "--validate")
+      glslang = a[i + 1];
+    else if (a[i] == "--root")
+      root = a[i + 1];
+    else if (a[i] == "--variants")
+      variants = a[i + 1];
+    else if (a[i] == "--work")
+      work = a[i + 1];
   }
   if (glslang.empty() || root.empty() || variants.empty() || work.empty()) {
-    std::fprintf(stderr, "usage: hv_shaderc --validate GLSLANG --root DIR --variants FILE --work DIR\n"
-                         "       hv_shaderc --expand FILE [NAME=VALUE ...]\n");
+    std::fprintf(stderr,
+                 "usage: hv_shaderc --validate GLSLANG --root DIR --variants FILE --work DIR\n"
+                 "       hv_shaderc --expand FILE [NAME=VALUE ...]\n");
     return 2;
   }
   return validate(glslang, root, variants, work);

@@ -47,12 +47,13 @@ void Renderer::setEnvironment(const Scene& scene) {
     e.timings = bake.timings;
     e.radiance = uploadCube("prefiltered radiance", bake.radiance);
     if (bake.irradiance.size > 0) e.irradiance = uploadCube("irradiance", bake.irradiance);
-    e.env_brdf = gl::createTexture2D("environment BRDF (scale, bias)", GL_RG16F,
-                                     bake.env_brdf_size, bake.env_brdf_size);
+    e.env_brdf = gl::createTexture2D("environment BRDF (scale, bias)", GL_RG16F, bake.env_brdf_size,
+                                     bake.env_brdf_size);
     glTextureSubImage2D(e.env_brdf.id(), 0, 0, 0, bake.env_brdf_size, bake.env_brdf_size, GL_RG,
                         GL_FLOAT, bake.env_brdf.data());
     for (int i = 0; i < 9; ++i) block.sh[i] = glm::vec4(bake.sh[i], 0.0f);
-    block.env = glm::vec4(float(bake.radiance.mipCount() - 1), float(bake.env_brdf_size), 1.0f, 0.0f);
+    block.env =
+        glm::vec4(float(bake.radiance.mipCount() - 1), float(bake.env_brdf_size), 1.0f, 0.0f);
     e.present = true;
   }
   glNamedBufferSubData(e.block.id(), 0, sizeof block, &block);
@@ -90,7 +91,8 @@ void Renderer::ambientPass() {
   for (GLuint u = 5; u < 8; ++u) glBindSampler(u, e.trilinear.id());
   glBindBufferBase(GL_UNIFORM_BUFFER, 1, e.block.id());
   glBindImageTexture(0, t.hdr.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
-  glDispatchCompute((t.width + kTileSize - 1) / kTileSize, (t.height + kTileSize - 1) / kTileSize, 1);
+  glDispatchCompute((t.width + kTileSize - 1) / kTileSize, (t.height + kTileSize - 1) / kTileSize,
+                    1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   for (GLuint u = 0; u < 8; ++u) glBindSampler(u, 0);
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);

@@ -17,10 +17,10 @@ struct alignas(16) FrameBlock {
   glm::mat4 view_proj;
   glm::mat4 inv_view_proj;
   glm::vec4 camera_pos;
-  glm::uvec4 viewport;     // width, height, tiles x, tiles y
-  glm::uvec4 counts;       // lights, tile-index capacity, debug view, unused
-  glm::vec4 output;        // exposure, dither, environment intensity, environment rotation (rad)
-  glm::vec4 near_params;   // near plane
+  glm::uvec4 viewport;    // width, height, tiles x, tiles y
+  glm::uvec4 counts;      // lights, tile-index capacity, debug view, unused
+  glm::vec4 output;       // exposure, dither, environment intensity, environment rotation (rad)
+  glm::vec4 near_params;  // near plane
 };
 static_assert(sizeof(FrameBlock) == 4 * 64 + 5 * 16, "FrameBlock must match std140 layout");
 
@@ -28,7 +28,7 @@ struct alignas(16) GpuMaterial {
   glm::vec4 base_color;
   glm::vec4 params;  // metallic, roughness, cavity, alpha cutoff
   glm::vec4 emissive;
-  glm::vec4 extra;   // normal scale, occlusion strength, emissive texcoord set
+  glm::vec4 extra;  // normal scale, occlusion strength, emissive texcoord set
   glm::uvec4 texcoords;
   glm::uvec4 flags;  // texture bits, alpha mode, shading model, unused
 };

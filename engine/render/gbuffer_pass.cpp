@@ -27,10 +27,10 @@ void Renderer::gbufferPass(const FrameBlock&) {
   const float far_depth = 0.0f;  // reversed Z clears to 0 (infinity)
   glClearNamedFramebufferfv(t.gbuffer.id(), GL_DEPTH, 0, &far_depth);
 
-  const GLuint prog = programs_.get({"gbuffer",
-                                     {{GL_VERTEX_SHADER, "passes/gbuffer.vert"},
-                                      {GL_FRAGMENT_SHADER, "passes/gbuffer.frag"}},
-                                     {}});
+  const GLuint prog = programs_.get(
+      {"gbuffer",
+       {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "passes/gbuffer.frag"}},
+       {}});
   glUseProgram(prog);
   glBindVertexArray(gpu_->vertexArray());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, gpu_->materialBuffer());
@@ -57,9 +57,9 @@ void Renderer::gbufferPass(const FrameBlock&) {
         glBindSampler(u, tex[u].sampler);
       }
     }
-    glDrawElementsBaseVertex(GL_TRIANGLES, GLsizei(d.index_count), GL_UNSIGNED_INT,
-                             reinterpret_cast<const void*>(size_t(d.first_index) * sizeof(uint32_t)),
-                             d.base_vertex);
+    glDrawElementsBaseVertex(
+        GL_TRIANGLES, GLsizei(d.index_count), GL_UNSIGNED_INT,
+        reinterpret_cast<const void*>(size_t(d.first_index) * sizeof(uint32_t)), d.base_vertex);
   }
   for (GLuint u = 0; u < 5; ++u) glBindSampler(u, 0);
   glBindVertexArray(0);

@@ -45,7 +45,8 @@ GpuScene::GpuScene(const Scene& scene) : scene_(&scene) {
                  Attr{2, 4, offsetof(Vertex, tangent)}, Attr{3, 2, offsetof(Vertex, uv0)},
                  Attr{4, 2, offsetof(Vertex, uv1)}}) {
     glEnableVertexArrayAttrib(vao, a.loc);
-    glVertexArrayAttribFormat(vao, a.loc, a.size, GL_FLOAT, GL_FALSE, static_cast<GLuint>(a.offset));
+    glVertexArrayAttribFormat(vao, a.loc, a.size, GL_FLOAT, GL_FALSE,
+                              static_cast<GLuint>(a.offset));
     glVertexArrayAttribBinding(vao, a.loc, 0);
   }
 
@@ -54,7 +55,8 @@ GpuScene::GpuScene(const Scene& scene) : scene_(&scene) {
   glTextureSubImage2D(white_.id(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, white_px);
   default_sampler_ = gl::createSampler("default sampler");
 
-  materials_ = gl::createBuffer("materials", std::max<size_t>(1, scene.materials.size()) * sizeof(GpuMaterial));
+  materials_ = gl::createBuffer("materials",
+                                std::max<size_t>(1, scene.materials.size()) * sizeof(GpuMaterial));
   updateMaterials(scene);
   updateLights(scene);
 
@@ -106,8 +108,9 @@ GLuint GpuScene::textureFor(int image, bool srgb) {
   if (auto it = textures_.find(key); it != textures_.end()) return it->second.id();
   const ImageData& img = scene_->images.at(image);
   const int levels = gl::mipLevelsFor(img.width, img.height);
-  gl::Texture t = gl::createTexture2D(img.name.empty() ? "image" : img.name,
-                                      srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, img.width, img.height, levels);
+  gl::Texture t =
+      gl::createTexture2D(img.name.empty() ? "image" : img.name, srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8,
+                          img.width, img.height, levels);
   glTextureSubImage2D(t.id(), 0, 0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE,
                       img.rgba.data());
   glGenerateTextureMipmap(t.id());
@@ -122,15 +125,19 @@ GLuint GpuScene::samplerFor(const Sampler& s) {
   if (auto it = samplers_.find(key); it != samplers_.end()) return it->second.id();
   auto wrap = [](Wrap w) {
     switch (w) {
-      case Wrap::ClampToEdge: return GL_CLAMP_TO_EDGE;
-      case Wrap::MirroredRepeat: return GL_MIRRORED_REPEAT;
-      default: return GL_REPEAT;
+      case Wrap::ClampToEdge:
+        return GL_CLAMP_TO_EDGE;
+      case Wrap::MirroredRepeat:
+        return GL_MIRRORED_REPEAT;
+      default:
+        return GL_REPEAT;
     }
   };
   gl::Sampler smp = gl::createSampler("material sampler");
   glSamplerParameteri(smp.id(), GL_TEXTURE_WRAP_S, wrap(s.wrap_s));
   glSamplerParameteri(smp.id(), GL_TEXTURE_WRAP_T, wrap(s.wrap_t));
-  glSamplerParameteri(smp.id(), GL_TEXTURE_MAG_FILTER, s.mag == Filter::Nearest ? GL_NEAREST : GL_LINEAR);
+  glSamplerParameteri(smp.id(), GL_TEXTURE_MAG_FILTER,
+                      s.mag == Filter::Nearest ? GL_NEAREST : GL_LINEAR);
   GLenum min_filter;
   if (s.mipmaps) {
     min_filter = s.min == Filter::Nearest ? GL_NEAREST_MIPMAP_LINEAR : GL_LINEAR_MIPMAP_LINEAR;

@@ -67,8 +67,8 @@ void Renderer::lightPass() {
   f.counts.x = static_cast<uint32_t>(gpu_->lightCount());
   f.counts.y = static_cast<uint32_t>(tile_capacity_);
   glNamedBufferSubData(frame_ubo_.id(), 0, sizeof f, &f);
-  const GLuint prog = programs_.get(
-      {"light", {{GL_COMPUTE_SHADER, "passes/light_shade.comp"}}, lightingDefines()});
+  const GLuint prog =
+      programs_.get({"light", {{GL_COMPUTE_SHADER, "passes/light_shade.comp"}}, lightingDefines()});
   glUseProgram(prog);
   const GLuint inputs[4] = {t.base_cavity.id(), t.material.id(), t.normal.id(), t.depth.id()};
   for (GLuint u = 0; u < 4; ++u) {

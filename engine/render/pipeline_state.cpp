@@ -3,7 +3,9 @@
 namespace hv::render {
 
 namespace {
-void enable(GLenum cap, bool on) { on ? glEnable(cap) : glDisable(cap); }
+void enable(GLenum cap, bool on) {
+  on ? glEnable(cap) : glDisable(cap);
+}
 }  // namespace
 
 void applyState(const PipelineState& s) {

@@ -1,6 +1,7 @@
 #include "render/renderer.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include "render/pipeline_state.hpp"
@@ -12,8 +13,8 @@
 namespace hv::render {
 
 namespace {
-constexpr const char* kDebugViewNames[] = {"none",      "basecolor", "metallic",
-                                           "roughness", "cavity",    "normal",
+constexpr const char* kDebugViewNames[] = {"none",      "basecolor",     "metallic",
+                                           "roughness", "cavity",        "normal",
                                            "depth",     "shading_model", "lights_per_tile"};
 }
 
@@ -24,7 +25,9 @@ std::optional<DebugView> debugViewFromString(const std::string& s) {
   return std::nullopt;
 }
 
-const char* toString(DebugView v) { return kDebugViewNames[static_cast<size_t>(v)]; }
+const char* toString(DebugView v) {
+  return kDebugViewNames[static_cast<size_t>(v)];
+}
 
 Renderer::Renderer() : targets_(std::make_unique<Targets>()) {
   frame_ubo_ = gl::createBuffer("frame uniforms", sizeof(FrameBlock));
@@ -56,8 +59,8 @@ gl::DefineSet Renderer::lightingDefines() const {
   gl::DefineSet d;
   for (auto& [k, v] : brdfDefines(scene_->settings)) d.push_back({k, v});
   for (auto& [k, v] : lightTypeDefines(scene_->lights)) d.push_back({k, v});
-  d.push_back({"HV_CULLING_BRUTE_FORCE",
-               scene_->settings.culling == Culling::BruteForce ? "1" : "0"});
+  d.push_back(
+      {"HV_CULLING_BRUTE_FORCE", scene_->settings.culling == Culling::BruteForce ? "1" : "0"});
   return d;
 }
 
@@ -73,8 +76,8 @@ void Renderer::ensureTargets(int w, int h) {
   t.depth = gl::createTexture2D("gbuffer depth (reversed Z)", GL_DEPTH_COMPONENT32F, w, h);
   t.hdr = gl::createTexture2D("hdr accumulation", GL_RGBA16F, w, h);
   t.ldr = gl::createTexture2D("tone-mapped output", GL_RGBA8, w, h);
-  t.gbuffer = gl::createFramebuffer("gbuffer", {{&t.base_cavity}, {&t.material}, {&t.normal}, {&t.hdr}},
-                                    &t.depth);
+  t.gbuffer = gl::createFramebuffer(
+      "gbuffer", {{&t.base_cavity}, {&t.material}, {&t.normal}, {&t.hdr}}, &t.depth);
   t.output = gl::createFramebuffer("output", {{&t.ldr}});
 }
 
@@ -115,6 +118,11 @@ void flipRows(std::vector<T>& v, int w, int h, int comps) {
                      v.begin() + size_t(h - 1 - y) * w * comps);
   }
 }
+// IEC 61966-2-1 decoding of an 8-bit sRGB value.
+float srgbDecode(uint8_t v) {
+  const float s = v / 255.0f;
+  return s <= 0.04045f ? s / 12.92f : std::pow((s + 0.055f) / 1.055f, 2.4f);
+}
 }  // namespace
 
 ImageRGBf Renderer::readHdr() const {
@@ -130,7 +138,8 @@ ImageRGBf Renderer::readHdr() const {
 ImageRGBA8 Renderer::readLdr() const {
   const Targets& t = *targets_;
   ImageRGBA8 img = makeImageRGBA8(t.width, t.height);
-  glGetTextureImage(t.ldr.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(img.px.size()), img.px.data());
+  glGetTextureImage(t.ldr.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(img.px.size()),
+                    img.px.data());
   flipRows(img.px, t.width, t.height, 4);
   return img;
 }
@@ -141,12 +150,16 @@ GBufferReadback Renderer::readGBuffer() const {
   GBufferReadback g;
   g.width = t.width;
   g.height = t.height;
-  std::vector<float> base(n * 4), mat(n * 4), nrm(n * 2), depth(n);
-  // Reading the sRGB texture as float returns linear values (GL 4.5 spec 8.24).
-  glGetTextureImage(t.base_cavity.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(base.size() * 4), base.data());
+  std::vector<float> mat(n * 4), nrm(n * 2), depth(n);
+  std::vector<uint8_t> base(n * 4);
+  // glGetTextureImage returns the stored sRGB bytes undecoded (decoding happens only on
+  // sampling), so decode them here with the exact sRGB curve.
+  glGetTextureImage(t.base_cavity.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(base.size()),
+                    base.data());
   glGetTextureImage(t.material.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(mat.size() * 4), mat.data());
   glGetTextureImage(t.normal.id(), 0, GL_RG, GL_FLOAT, GLsizei(nrm.size() * 4), nrm.data());
-  glGetTextureImage(t.depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth.size() * 4), depth.data());
+  glGetTextureImage(t.depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth.size() * 4),
+                    depth.data());
   flipRows(base, t.width, t.height, 4);
   flipRows(mat, t.width, t.height, 4);
   flipRows(nrm, t.width, t.height, 2);
@@ -159,8 +172,9 @@ GBufferReadback Renderer::readGBuffer() const {
   g.model.resize(n);
   g.depth = depth;
   for (size_t i = 0; i < n; ++i) {
-    g.base_color[i] = {base[4 * i], base[4 * i + 1], base[4 * i + 2]};
-    g.cavity[i] = base[4 * i + 3];
+    g.base_color[i] = {srgbDecode(base[4 * i]), srgbDecode(base[4 * i + 1]),
+                       srgbDecode(base[4 * i + 2])};
+    g.cavity[i] = base[4 * i + 3] / 255.0f;  // alpha of an sRGB format is linear
     g.metallic[i] = mat[4 * i];
     g.roughness[i] = mat[4 * i + 1];
     g.model[i] = static_cast<uint32_t>(mat[4 * i + 2] * 255.0f + 0.5f);

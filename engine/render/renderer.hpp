@@ -103,7 +103,7 @@ class Renderer {
   gl::PassTimer timer_;
   gl::Buffer frame_ubo_;
   gl::Buffer tile_ranges_, tile_indices_;
-  size_t tile_capacity_ = 0;        // uints in the tile index list (grows on overflow)
+  size_t tile_capacity_ = 0;         // uints in the tile index list (grows on overflow)
   size_t tile_ranges_capacity_ = 0;  // bytes
   size_t tile_entries_ = 0;          // entries the last culling pass produced
   gl::VertexArray empty_vao_;

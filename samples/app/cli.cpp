@@ -35,8 +35,8 @@ int runCli(const std::vector<std::string>& args) {
     std::fprintf(stderr, "halfvec: unknown command '%s' (see halfvec --help)\n", cmd.c_str());
     return 2;
   } catch (const UsageError& e) {
-    std::fprintf(stderr, "halfvec %s: %s (see halfvec %s --help)\n", cmd.c_str(),
-                 e.message.c_str(), cmd.c_str());
+    std::fprintf(stderr, "halfvec %s: %s (see halfvec %s --help)\n", cmd.c_str(), e.message.c_str(),
+                 cmd.c_str());
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "halfvec %s: error: %s\n", cmd.c_str(), e.what());

@@ -150,9 +150,8 @@ int cmdRender(const Args& args) {
     j["gbuffer_bytes_per_pixel"] = render::kGBufferBytesPerPixel;
     nlohmann::ordered_json counts;
     for (auto t : {LightType::Point, LightType::Sphere, LightType::Tube}) {
-      counts[std::string(toString(t))] =
-          std::count_if(scene.lights.begin(), scene.lights.end(),
-                        [&](const Light& l) { return l.type == t; });
+      counts[std::string(toString(t))] = std::count_if(scene.lights.begin(), scene.lights.end(),
+                                                       [&](const Light& l) { return l.type == t; });
     }
     j["light_counts"] = counts;
     j["tile_light_entries"] = stats.tile_light_entries;

@@ -53,14 +53,35 @@ std::vector<Geometry> geometries() {
   const glm::vec3 c(-1.1f, -1.1f, 0.0f);
   return {
       {"front d=2", [c](Light& l) { l.position = c + glm::vec3(0, 0, 3); }},
-      {"at surface (inside light)", [c](Light& l) { l.position = c + glm::vec3(0, 0, 1); l.radius = std::max(l.radius, 0.3f); }},
+      {"at surface (inside light)",
+       [c](Light& l) {
+         l.position = c + glm::vec3(0, 0, 1);
+         l.radius = std::max(l.radius, 0.3f);
+       }},
       {"at center of sphere", [c](Light& l) { l.position = c; }},
       {"distance 1e-6", [c](Light& l) { l.position = c + glm::vec3(0, 0, 1.000001f); }},
-      {"distance 1e6", [c](Light& l) { l.position = c + glm::vec3(0, 0, 1e6f); l.range = 2e6f; }},
+      {"distance 1e6",
+       [c](Light& l) {
+         l.position = c + glm::vec3(0, 0, 1e6f);
+         l.range = 2e6f;
+       }},
       {"grazing (N.L=0 at front)", [c](Light& l) { l.position = c + glm::vec3(3, 0, 0); }},
-      {"radius 0, length 0", [c](Light& l) { l.position = c + glm::vec3(0, 0, 3); l.radius = 0; l.length = 0; }},
-      {"intensity 1e6", [c](Light& l) { l.position = c + glm::vec3(0, 0, 1.5f); l.intensity = 1e6f; }},
-      {"huge radius 10", [c](Light& l) { l.position = c + glm::vec3(0, 0, 3); l.radius = 10.0f; }},
+      {"radius 0, length 0",
+       [c](Light& l) {
+         l.position = c + glm::vec3(0, 0, 3);
+         l.radius = 0;
+         l.length = 0;
+       }},
+      {"intensity 1e6",
+       [c](Light& l) {
+         l.position = c + glm::vec3(0, 0, 1.5f);
+         l.intensity = 1e6f;
+       }},
+      {"huge radius 10",
+       [c](Light& l) {
+         l.position = c + glm::vec3(0, 0, 3);
+         l.radius = 10.0f;
+       }},
   };
 }
 
@@ -71,7 +92,9 @@ struct Option {
 
 std::vector<Option> options(bool small) {
   std::vector<Option> o = {{"default", [](RenderSettings&) {}}};
-  auto add = [&](std::string n, std::function<void(RenderSettings&)> f) { o.push_back({std::move(n), std::move(f)}); };
+  auto add = [&](std::string n, std::function<void(RenderSettings&)> f) {
+    o.push_back({std::move(n), std::move(f)});
+  };
   for (auto d : {DistributionTerm::Beckmann, DistributionTerm::BlinnPhong}) {
     add(std::string("d=") + std::string(toString(d)), [d](RenderSettings& s) { s.d = d; });
   }
@@ -86,9 +109,11 @@ std::vector<Option> options(bool small) {
   add("diffuse=burley", [](RenderSettings& s) { s.diffuse = DiffuseTerm::Burley; });
   add("remap_roughness=false", [](RenderSettings& s) { s.remap_roughness = false; });
   add("falloff_plus_one=false", [](RenderSettings& s) { s.falloff_plus_one = false; });
-  add("sphere_diffuse=horizon_correct", [](RenderSettings& s) { s.sphere_diffuse = SphereDiffuse::HorizonCorrect; });
+  add("sphere_diffuse=horizon_correct",
+      [](RenderSettings& s) { s.sphere_diffuse = SphereDiffuse::HorizonCorrect; });
   add("sphere_normalization=false", [](RenderSettings& s) { s.sphere_normalization = false; });
-  add("tube_specular=smallest_angle_eq18", [](RenderSettings& s) { s.tube_specular = TubeSpecular::SmallestAngleEq18; });
+  add("tube_specular=smallest_angle_eq18",
+      [](RenderSettings& s) { s.tube_specular = TubeSpecular::SmallestAngleEq18; });
   add("tube_normalization=false", [](RenderSettings& s) { s.tube_normalization = false; });
   add("culling=brute_force", [](RenderSettings& s) { s.culling = Culling::BruteForce; });
   if (small) {
@@ -97,8 +122,9 @@ std::vector<Option> options(bool small) {
     for (auto& x : o) {
       if (x.name == "default" || x.name == "falloff_plus_one=false" ||
           x.name == "v=smith_ggx_correlated" || x.name == "f=exact" ||
-          x.name == "sphere_diffuse=horizon_correct" || x.name == "tube_specular=smallest_angle_eq18" ||
-          x.name == "d=beckmann" || x.name == "diffuse=burley") {
+          x.name == "sphere_diffuse=horizon_correct" ||
+          x.name == "tube_specular=smallest_angle_eq18" || x.name == "d=beckmann" ||
+          x.name == "diffuse=burley") {
         keep.push_back(x);
       }
     }
@@ -109,8 +135,8 @@ std::vector<Option> options(bool small) {
 
 }  // namespace
 
-std::vector<StabilityRow> runStabilitySweep(const StabilityOptions& opts,
-                                            const std::function<void(const StabilityRow&)>& progress) {
+std::vector<StabilityRow> runStabilitySweep(
+    const StabilityOptions& opts, const std::function<void(const StabilityRow&)>& progress) {
   std::vector<StabilityRow> rows;
   render::Renderer renderer;
   for (const Option& opt : options(opts.small)) {

@@ -10,9 +10,9 @@
 namespace hv::app {
 
 struct StabilityRow {
-  std::string light;    // point / sphere / tube
-  std::string geometry; // the light configuration
-  std::string option;   // the setting changed from the defaults ("default" = none)
+  std::string light;     // point / sphere / tube
+  std::string geometry;  // the light configuration
+  std::string option;    // the setting changed from the defaults ("default" = none)
   int nan = 0, inf = 0, negative = 0;
   float max_value = 0.0f;
   bool ok() const { return nan == 0 && inf == 0 && negative == 0; }
@@ -24,7 +24,7 @@ struct StabilityOptions {
 };
 
 // Needs a current GL context. `progress` gets one call per row (may be empty).
-std::vector<StabilityRow> runStabilitySweep(const StabilityOptions& options,
-                                            const std::function<void(const StabilityRow&)>& progress = {});
+std::vector<StabilityRow> runStabilitySweep(
+    const StabilityOptions& options, const std::function<void(const StabilityRow&)>& progress = {});
 
 }  // namespace hv::app

@@ -13,7 +13,9 @@
 namespace fs = std::filesystem;
 
 namespace {
-std::string samples() { return HV_SAMPLES_DIR; }
+std::string samples() {
+  return HV_SAMPLES_DIR;
+}
 fs::path tmp(const std::string& name) {
   fs::path d = fs::temp_directory_path() / "hv_cli_test";
   fs::create_directories(d);
