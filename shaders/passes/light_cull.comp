@@ -61,10 +61,10 @@ void main() {
   vec3 c01 = vec3(ndc0.x * inv_scale.x, ndc1.y * inv_scale.y, -1.0);
   vec3 c10 = vec3(ndc1.x * inv_scale.x, ndc0.y * inv_scale.y, -1.0);
   vec3 planes[4];
-  planes[0] = normalize(cross(c01, c00));  // left   (normals point into the tile)
-  planes[1] = normalize(cross(c10, c11));  // right
-  planes[2] = normalize(cross(c00, c10));  // bottom
-  planes[3] = normalize(cross(c11, c01));  // top
+  planes[0] = normalize(cross(c00, c01));  // left: (1, 0, x0), normals point into the tile
+  planes[1] = normalize(cross(c11, c10));  // right: (-1, 0, -x1)
+  planes[2] = normalize(cross(c10, c00));  // bottom: (0, 1, y0)
+  planes[3] = normalize(cross(c01, c11));  // top: (0, -1, -y1)
   // AABB of the tile frustum between z_near and z_far (tightens the corners the planes miss).
   vec3 bmin = min(min(c00 * z_near, c11 * z_near), min(c00 * z_far, c11 * z_far));
   vec3 bmax = max(max(c00 * z_near, c11 * z_near), max(c00 * z_far, c11 * z_far));
