@@ -106,6 +106,7 @@ FrameStats Renderer::render(int width, int height, DebugView view,
   for (auto& [name, ms] : stats.passes) stats.total_ms += ms;
   stats.width = width;
   stats.height = height;
+  stats.tile_light_entries = tile_entries_;
   return stats;
 }
 
@@ -142,6 +143,32 @@ ImageRGBA8 Renderer::readLdr() const {
                     img.px.data());
   flipRows(img.px, t.width, t.height, 4);
   return img;
+}
+
+Renderer::LightWork Renderer::lightWork() const {
+  const Targets& t = *targets_;
+  const size_t n = size_t(t.width) * t.height;
+  std::vector<uint8_t> mat(n * 4);
+  glGetTextureImage(t.material.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(mat.size()), mat.data());
+  const bool brute = scene_->settings.culling == Culling::BruteForce;
+  const int tiles_x = (t.width + kTileSize - 1) / kTileSize;
+  const int tiles_y = (t.height + kTileSize - 1) / kTileSize;
+  std::vector<uint32_t> ranges(size_t(tiles_x) * tiles_y * 2);
+  if (!brute && tile_ranges_) {
+    glGetNamedBufferSubData(tile_ranges_.id(), 0, GLsizeiptr(ranges.size() * sizeof(uint32_t)),
+                            ranges.data());
+  }
+  LightWork w;
+  for (int y = 0; y < t.height; ++y) {
+    for (int x = 0; x < t.width; ++x) {
+      const uint8_t model = mat[(size_t(y) * t.width + x) * 4 + 2];
+      if (model != static_cast<uint8_t>(ShadingModel::DefaultLit)) continue;
+      ++w.lit_pixels;
+      const size_t tile = size_t(y / kTileSize) * tiles_x + x / kTileSize;
+      w.light_pixel_evaluations += brute ? gpu_->lightCount() : ranges[tile * 2 + 1];
+    }
+  }
+  return w;
 }
 
 GBufferReadback Renderer::readGBuffer() const {

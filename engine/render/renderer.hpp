@@ -40,8 +40,6 @@ struct FrameStats {
   double total_ms = 0.0;
   int width = 0, height = 0;
   size_t tile_light_entries = 0;  // sum over tiles of lights in the tile's list
-  size_t lit_pixels = 0;
-  size_t light_pixel_evaluations = 0;  // lit pixels x lights in their tile (tiled) or all (brute)
 };
 
 // G-buffer contents read back and decoded, per pixel (row 0 = top).
@@ -77,6 +75,13 @@ class Renderer {
   ImageRGBf readHdr() const;
   ImageRGBA8 readLdr() const;
   GBufferReadback readGBuffer() const;
+
+  struct LightWork {
+    size_t lit_pixels = 0;               // default_lit pixels the light pass shades
+    size_t light_pixel_evaluations = 0;  // sum over lit pixels of the lights in their list
+  };
+  // Counts the light pass's work of the last frame (reads back; for benchmarks and tests).
+  LightWork lightWork() const;
 
   // Timings of the environment bake of the current scene (nullptr without an environment).
   const BakeTimings* environmentTimings() const;

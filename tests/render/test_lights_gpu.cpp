@@ -55,8 +55,8 @@ TEST(LightPass, GpuMatchesSharedCpuCode) {
         const glm::vec2 uv((x + 0.5f) / w, 1.0f - (y + 0.5f) / h);
         const glm::vec3 P = glsl::reconstructWorldPosition(uv, g.depth[i], frame.inv_view_proj);
         const glm::vec3 V = glm::normalize(s.camera.position - P);
-        const glsl::Surface surf =
-            glsl::makeSurface(g.normal[i], g.base_color[i], g.metallic[i], g.roughness[i], g.cavity[i]);
+        const glsl::Surface surf = glsl::makeSurface(g.normal[i], g.base_color[i], g.metallic[i],
+                                                     g.roughness[i], g.cavity[i]);
         const glm::vec3 cpu = glsl::evaluateLight(light, surf, P, V);
         for (int k = 0; k < 3; ++k) {
           worst = std::max(worst, std::abs(hdr.px[i][k] - cpu[k]) / (cpu[k] + 1e-6f));
@@ -67,7 +67,8 @@ TEST(LightPass, GpuMatchesSharedCpuCode) {
       }
     }
     EXPECT_GT(checked, 50);
-    std::printf("%s: max relative GPU-CPU difference %.2e\n", std::string(hv::toString(type)).c_str(), worst);
+    std::printf("%s: max relative GPU-CPU difference %.2e\n",
+                std::string(hv::toString(type)).c_str(), worst);
   }
 }
 

@@ -1,0 +1,161 @@
+// `halfvec bench`: light-pass scaling tables (issue "Light pass", section Performance).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include "app/commands.hpp"
+#include "platform/context.hpp"
+#include "render/renderer.hpp"
+#include "scene/primitives.hpp"
+
+namespace hv::app {
+
+namespace {
+constexpr const char* kHelp =
+    R"(Usage: halfvec bench [--size WxH] [--frames N] [--max-lights N] [--quick]
+
+Light-pass benchmark on a 40 m x 40 m floor seen from above at an angle, lights of mixed types
+(point, sphere, tube) scattered just above it. Prints, per light count from 64 up:
+  (a) constant density: the lights' range shrinks as 1/sqrt(N) so a lit pixel sees about the
+      same number of lights whatever N;
+  (b) fixed scene: the range stays 2 m, so the work grows with N;
+the median light_cull and light pass GPU ms over N frames and light-pixel evaluations per
+second (evaluations = sum over lit pixels of the lights in the pixel's tile list), then tiled vs
+brute force at 1,024 lights. Absolute times are noisy on a shared machine: compare ratios.
+)";
+
+constexpr float kFloor = 40.0f;
+
+Scene benchScene(int lights, float range, uint32_t seed) {
+  Scene s;
+  s.camera.position = {0.0f, 18.0f, 22.0f};
+  s.camera.target = {0.0f, 0.0f, 0.0f};
+  s.camera.fov_y_deg = 60.0f;
+  s.environment.kind = EnvironmentKind::None;
+  Material m;
+  m.base_color = glm::vec3(0.7f);
+  m.roughness = 0.5f;
+  s.materials.push_back(m);
+  s.meshes.push_back(makePlane(kFloor, kFloor));
+  Object o;
+  o.meshes = {0};
+  s.objects.push_back(o);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(-kFloor / 2, kFloor / 2), h(0.1f, 0.6f), c(0.3f, 1.0f);
+  for (int i = 0; i < lights; ++i) {
+    Light l;
+    l.type = static_cast<LightType>(i % 3);
+    l.position = {u(rng), h(rng), u(rng)};
+    l.color = {c(rng), c(rng), c(rng)};
+    l.intensity = 1.0f;
+    l.range = range;
+    l.radius = l.type == LightType::Point ? 0.0f : 0.05f;
+    l.length = l.type == LightType::Tube ? 0.3f : 0.0f;
+    l.axis = glm::normalize(glm::vec3(c(rng) - 0.65f, 0.0f, c(rng) - 0.65f) + glm::vec3(1e-3f));
+    s.lights.push_back(l);
+  }
+  return s;
+}
+
+struct Result {
+  double cull_ms = 0, light_ms = 0;
+  size_t evals = 0, lit = 0;
+};
+
+Result measure(Scene& scene, int w, int h, int frames) {
+  render::Renderer r;
+  r.setScene(scene);
+  r.render(w, h);  // warm up: compiles the variants
+  std::vector<double> cull, light;
+  for (int f = 0; f < frames; ++f) {
+    const auto st = r.render(w, h);
+    for (auto& [name, ms] : st.passes) {
+      if (name == "light_cull") cull.push_back(ms);
+      if (name == "light") light.push_back(ms);
+    }
+  }
+  auto median = [](std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return v[v.size() / 2];
+  };
+  Result res;
+  res.cull_ms = median(cull);
+  res.light_ms = median(light);
+  const auto work = r.lightWork();
+  res.evals = work.light_pixel_evaluations;
+  res.lit = work.lit_pixels;
+  return res;
+}
+
+void printRow(int n, float range, const Result& r) {
+  const double per_s = r.light_ms > 0 ? double(r.evals) / (r.light_ms * 1e-3) : 0.0;
+  std::printf("%8d %8.2f %10.3f %10.3f %12.1f %14.1f\n", n, range, r.cull_ms, r.light_ms,
+              r.lit ? double(r.evals) / double(r.lit) : 0.0, per_s * 1e-6);
+  std::fflush(stdout);
+}
+
+void header() {
+  std::printf("%8s %8s %10s %10s %12s %14s\n", "lights", "range m", "cull ms", "light ms",
+              "lights/px", "Mevals/s");
+}
+
+}  // namespace
+
+int cmdBench(const Args& args) {
+  int w = 1280, h = 720, frames = 5, max_lights = 16384;
+  bool quick = false;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "--help" || a == "-h") {
+      std::fputs(kHelp, stdout);
+      return 0;
+    } else if (a == "--size" && i + 1 < args.size()) {
+      if (std::sscanf(args[++i].c_str(), "%dx%d", &w, &h) != 2 || w <= 0 || h <= 0) {
+        throw UsageError{"--size expects WxH"};
+      }
+    } else if (a == "--frames" && i + 1 < args.size()) {
+      frames = std::max(1, std::atoi(args[++i].c_str()));
+    } else if (a == "--max-lights" && i + 1 < args.size()) {
+      max_lights = std::atoi(args[++i].c_str());
+    } else if (a == "--quick") {
+      quick = true;
+    } else {
+      throw UsageError{"unknown option '" + a + "'"};
+    }
+  }
+  auto ctx = createHeadlessContext();
+  std::printf("renderer: %s, %dx%d, median of %d frames\n\n", ctx->renderer().c_str(), w, h,
+              frames);
+  const float area = kFloor * kFloor;
+  const float density = 24.0f;  // target lights overlapping a floor point in (a)
+  std::printf("(a) constant density (about %.0f lights per floor point)\n", density);
+  header();
+  for (int n = 64; n <= max_lights; n *= quick ? 16 : 4) {
+    const float range = std::sqrt(density * area / (3.14159265f * float(n)));
+    Scene s = benchScene(n, range, 1);
+    printRow(n, range, measure(s, w, h, frames));
+  }
+  std::printf("\n(b) fixed scene (range 2 m)\n");
+  header();
+  for (int n = 64; n <= max_lights; n *= quick ? 16 : 4) {
+    Scene s = benchScene(n, 2.0f, 1);
+    printRow(n, 2.0f, measure(s, w, h, frames));
+  }
+  std::printf("\ntiled vs brute force, 1024 lights, constant-density range\n");
+  header();
+  const float range = std::sqrt(density * area / (3.14159265f * 1024.0f));
+  Scene s = benchScene(1024, range, 1);
+  const Result tiled = measure(s, w, h, frames);
+  printRow(1024, range, tiled);
+  s.settings.culling = Culling::BruteForce;
+  const Result brute = measure(s, w, h, std::min(frames, 2));
+  printRow(1024, range, brute);
+  const double tiled_total = tiled.cull_ms + tiled.light_ms;
+  std::printf("speedup (brute light ms / tiled cull+light ms): %.1fx\n",
+              brute.light_ms / tiled_total);
+  return 0;
+}
+
+}  // namespace hv::app
