@@ -8,13 +8,14 @@
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored \
-    "-Wunused-parameter"  // dispatchers ignore arguments of unpicked terms
+// Dispatchers (visibility(), ...) ignore the arguments of the terms not picked.
+#pragma GCC diagnostic ignored "-Wunused-parameter"
 namespace hv::glsl {
 namespace {
 #include "../../shaders/common/math.glsl"
 #include "../../shaders/common/brdf.glsl"
 #include "../../shaders/common/sampling.glsl"
+#include "../../shaders/common/lights.glsl"
 #include "../../shaders/common/gbuffer.glsl"
 #include "../../shaders/common/tonemap.glsl"
 }  // namespace

@@ -1,0 +1,298 @@
+// Analytic lights of the UE4 shading model (Karis 2013, "Real Shading in Unreal Engine 4",
+// section "Lighting"): point, sphere and tube (capsule) lights, shared by GLSL and C++ (see
+// engine/shading/glsl.hpp). Physical definition of each light (units, emitted power, emitter
+// radiance): docs/lights.md. C++ mirror of GpuLight and packing: engine/shading/light_gpu.hpp.
+//
+// Defines (defaults first; the C++ side sets them from RenderSettings in hv::brdfDefines):
+//  HV_FALLOFF_PLUS_ONE 1|0      Karis eq. 9 1/(d^2+1), or physical 1/d^2 (accuracy comparisons)
+//  HV_SPHERE_DIFFUSE 0|1        0 = Karis point approximation, 1 = Lagarde & de Rousiers 2014
+//                               horizon-correct sphere irradiance (order of hv::SphereDiffuse)
+//  HV_SPHERE_NORMALIZATION 1|0  (alpha/alpha')^2 energy normalization (Karis eqs. 10, 14)
+//  HV_TUBE_SPECULAR 0|1         0 = closest point to the reflection ray (Karis eq. 19),
+//                               1 = smallest angle (eq. 18) (order of hv::TubeSpecular)
+//  HV_TUBE_NORMALIZATION 1|0    alpha/alpha' line normalization (Karis eq. 20)
+//  HV_HAS_POINT_LIGHTS / HV_HAS_SPHERE_LIGHTS / HV_HAS_TUBE_LIGHTS 1|0: compile that light type
+#ifndef HV_LIGHTS_GLSL
+#define HV_LIGHTS_GLSL
+
+#include "math.glsl"
+#include "brdf.glsl"
+
+#ifndef HV_FALLOFF_PLUS_ONE
+#define HV_FALLOFF_PLUS_ONE 1
+#endif
+#define HV_SPHERE_DIFFUSE_KARIS_POINT 0
+#define HV_SPHERE_DIFFUSE_HORIZON 1
+#ifndef HV_SPHERE_DIFFUSE
+#define HV_SPHERE_DIFFUSE HV_SPHERE_DIFFUSE_KARIS_POINT
+#endif
+#ifndef HV_SPHERE_NORMALIZATION
+#define HV_SPHERE_NORMALIZATION 1
+#endif
+#define HV_TUBE_SPECULAR_CLOSEST_POINT 0
+#define HV_TUBE_SPECULAR_SMALLEST_ANGLE 1
+#ifndef HV_TUBE_SPECULAR
+#define HV_TUBE_SPECULAR HV_TUBE_SPECULAR_CLOSEST_POINT
+#endif
+#ifndef HV_TUBE_NORMALIZATION
+#define HV_TUBE_NORMALIZATION 1
+#endif
+#ifndef HV_HAS_POINT_LIGHTS
+#define HV_HAS_POINT_LIGHTS 1
+#endif
+#ifndef HV_HAS_SPHERE_LIGHTS
+#define HV_HAS_SPHERE_LIGHTS 1
+#endif
+#ifndef HV_HAS_TUBE_LIGHTS
+#define HV_HAS_TUBE_LIGHTS 1
+#endif
+
+// Light type codes stored (as float) in GpuLight.color_type.w; = hv::LightType.
+#define HV_LIGHT_POINT 0
+#define HV_LIGHT_SPHERE 1
+#define HV_LIGHT_TUBE 2
+
+// One light as the GPU reads it: std430, 4 x vec4 = 64 bytes (C++ mirror: hv::GpuLight).
+//  position_radius: x,y,z world position (tube: segment center), w sphere/capsule radius (m)
+//  color_type:      rgb linear color premultiplied by intensity I (W/sr), w type (0/1/2)
+//  axis_length:     x,y,z unit tube axis, w tube segment length (m); 0 for point and sphere
+//  params:          x range R (Karis eq. 9 window), y 1/R, z culling radius, w 0 (reserved)
+struct GpuLight {
+  vec4 position_radius;
+  vec4 color_type;
+  vec4 axis_length;
+  vec4 params;
+};
+
+// Smallest squared light distance (1 cm)^2. With HV_FALLOFF_PLUS_ONE = 0 a point light at
+// distance 0 would be 1/0; Filament likewise treats a punctual light as a 1 cm sphere. With the
+// +1 falloff this changes d^2 + 1 by at most 1e-4.
+const float HV_MIN_LIGHT_DIST2 = 1e-4f;
+
+// Karis 2013 eq. 9, window part: saturate(1 - (d/R)^4)^2, computed from d^2 / R^2 so no sqrt is
+// needed. Reaches exactly 0 at d = R, which makes R a hard culling bound.
+float falloffWindow(float d2, float inv_range) {
+  float x = d2 * inv_range * inv_range;
+  return sq(saturate(1.0f - x * x));
+}
+
+// Karis 2013 eq. 9: window / (d^2 + 1), or window / d^2 with HV_FALLOFF_PLUS_ONE = 0 (inverse
+// square law). d^2 is clamped to the light's own radius^2 (a point inside a sphere or capsule
+// sees it as from its surface) and to HV_MIN_LIGHT_DIST2.
+float distanceFalloff(float d2, float radius, float inv_range) {
+  float d2c = max(d2, max(radius * radius, HV_MIN_LIGHT_DIST2));
+  return falloffWindow(d2, inv_range) / (d2c + float(HV_FALLOFF_PLUS_ONE));
+}
+
+// Lagarde & de Rousiers 2014, "Moving Frostbite to PBR", section 4.7.2 listing 7
+// (illuminanceSphereOrDisk, after Snyder 1996): integral of cos over the visible part of a sphere
+// of sin^2(half-angle) = sin_sigma2 whose center is at angle theta from the normal, horizon
+// clipped. Returned divided by pi sin_sigma2, so it equals saturate(cos_theta) when the sphere is
+// entirely above or below the horizon; the caller multiplies by I / d^2.
+// Branch-free: both cases are computed with guarded inputs and selected with step().
+float sphereHorizonFactor(float cos_theta, float sin_sigma2) {
+  // sin_sigma2 in [1e-8, 1]: 1 means the point is inside the sphere; 1e-8 (radius 1e-4 d) keeps
+  // 1/sin_sigma2 finite for radius 0, where the result is the point light's saturate(cos_theta).
+  float s2 = clamp(sin_sigma2, 1e-8f, 1.0f);
+  float above = saturate(cos_theta);
+  // Straddling the horizon. sin_theta >= 1e-4 and x >= 1e-4 only guard 0/0 at cos_theta = +-1 or
+  // inside the sphere (s2 = 1); there the other case is selected or the value is bounded anyway.
+  float sin_theta = sqrt(max(1.0f - cos_theta * cos_theta, 1e-8f));
+  float x = sqrt(max(1.0f / s2 - 1.0f, 1e-8f));
+  float y = clamp(-x * cos_theta / sin_theta, -1.0f, 1.0f);
+  float sin_theta_sqrt_y = sin_theta * sqrt(1.0f - y * y);
+  float straddle = ((cos_theta * acos(y) - x * sin_theta_sqrt_y) * s2 +
+                    atan(sin_theta_sqrt_y / x)) / (PI * s2);
+  // cos^2 >= sin^2(sigma): the sphere does not cross the horizon.
+  return max(mix(straddle, above, step(s2, cos_theta * cos_theta)), 0.0f);
+}
+
+// Karis 2013 eq. 11: the point of a sphere (center Lc relative to the shading point, radius r)
+// closest to the reflection ray R. Returns the unnormalized vector to it.
+vec3 closestPointOnSphereToRay(vec3 Lc, float radius, vec3 R) {
+  vec3 center_to_ray = dot(Lc, R) * R - Lc;
+  // radius / |center_to_ray| saturated; 1e-30 guards 0/0 when the ray passes through the center
+  // (then center_to_ray = 0 and the center itself is returned).
+  return Lc + center_to_ray * saturate(radius * inversesqrt(max(dot(center_to_ray, center_to_ray),
+                                                                1e-30f)));
+}
+
+// Karis 2013 eqs. 10 and 14: energy normalization of the representative-point sphere light,
+// (alpha / alpha')^2 with alpha' = saturate(alpha + radius / (3 distance)): the sphere widens the
+// lobe by about a third of its angular radius. 1 when HV_SPHERE_NORMALIZATION = 0.
+float sphereNormalization(float alpha, float radius, float d2) {
+#if HV_SPHERE_NORMALIZATION
+  // radius / distance from d^2 with one inversesqrt; d^2 >= radius^2 (inside the sphere the
+  // angular radius is capped at 1 radian-ish, alpha' = alpha + 1/3) and >= HV_MIN_LIGHT_DIST2.
+  float d2c = max(d2, max(radius * radius, HV_MIN_LIGHT_DIST2));
+  float alpha_p = saturate(alpha + radius * inversesqrt(d2c) * (1.0f / 3.0f));
+  return sq(alpha / alpha_p);
+#else
+  return 1.0f;
+#endif
+}
+
+// Karis 2013 eq. 20: line normalization alpha / alpha' of the tube light. The paper widens alpha
+// in one dimension only, hence the first power. Widening: half the line's angular half-extent,
+// alpha' = saturate(alpha + 0.5 saturate(length / distance)), as UE4's AreaLightSpecular
+// (LineAngle); distance = distance to the segment center. 1 when HV_TUBE_NORMALIZATION = 0.
+float lineNormalization(float alpha, float len, float d2) {
+#if HV_TUBE_NORMALIZATION
+  float d2c = max(d2, HV_MIN_LIGHT_DIST2);
+  float alpha_p = saturate(alpha + 0.5f * saturate(len * inversesqrt(d2c)));
+  return alpha / alpha_p;
+#else
+  return 1.0f;
+#endif
+}
+
+// Radiance leaving the surface toward V for light arriving from direction L (representative
+// direction for specular, Ld for diffuse), already scaled by the light's irradiance factors:
+// diffuse_irr = I * falloff * cos for the diffuse lobe, spec_irr = I * falloff for specular
+// (NoL of the representative direction is applied here), spec_norm = D normalization.
+vec3 shadeLight(Surface s, vec3 V, float NoV, vec3 Ld, vec3 Ls, vec3 radiant, float diffuse_irr,
+                float spec_irr, float spec_norm) {
+  // Diffuse lobe (Lambert or Burley) evaluated for the diffuse direction Ld.
+  vec3 Hd = safeNormalize(V + Ld);
+  float NoLd = saturate(dot(s.N, Ld));
+  float LoHd = saturate(dot(Ld, Hd));
+  vec3 diffuse = s.diffuse_color * (diffuseLobe(s.roughness, NoV, NoLd, LoHd) * diffuse_irr);
+  // Specular lobe for the representative direction Ls.
+  vec3 H = safeNormalize(V + Ls);
+  float NoL = saturate(dot(s.N, Ls));
+  float NoH = saturate(dot(s.N, H));
+  float VoH = saturate(dot(V, H));
+  vec3 specular = specularLobe(s, NoV, NoL, NoH, VoH, spec_norm) * (spec_irr * NoL);
+  // Cavity (Karis 2013 "Material Model": small-scale shadowing) multiplies all direct light,
+  // diffuse and specular alike, as a shadow factor would.
+  return radiant * ((diffuse + specular) * s.cavity);
+}
+
+#if HV_HAS_POINT_LIGHTS
+// Point light (Karis 2013 "Lighting", eq. 9 falloff): radiance toward V at P.
+vec3 evaluatePointLight(GpuLight light, Surface s, vec3 P, vec3 V) {
+  vec3 Lc = vec3(light.position_radius) - P;
+  float d2 = dot(Lc, Lc);
+  vec3 L = safeNormalize(Lc);  // 0 at the light itself: no light, not NaN
+  float NoV = max(dot(s.N, V), HV_MIN_NOV);
+  float falloff = distanceFalloff(d2, 0.0f, light.params.y);
+  return shadeLight(s, V, NoV, L, L, vec3(light.color_type), falloff * saturate(dot(s.N, L)),
+                    falloff, 1.0f);
+}
+#endif
+
+#if HV_HAS_SPHERE_LIGHTS
+// Sphere light: diffuse from the center (Karis point approximation) or the horizon-correct sphere
+// irradiance (Lagarde & de Rousiers 2014 section 4.7.2); specular from the representative point
+// closest to the reflection ray (Karis 2013 eq. 11) with the energy normalization of eq. 14.
+vec3 evaluateSphereLight(GpuLight light, Surface s, vec3 P, vec3 V) {
+  float radius = light.position_radius.w;
+  vec3 Lc = vec3(light.position_radius) - P;
+  float d2 = dot(Lc, Lc);
+  vec3 L = safeNormalize(Lc);
+  float NoV = max(dot(s.N, V), HV_MIN_NOV);
+  float falloff = distanceFalloff(d2, radius, light.params.y);
+#if HV_SPHERE_DIFFUSE == HV_SPHERE_DIFFUSE_HORIZON
+  // sin^2(sigma) = r^2 / d^2, with d^2 >= HV_MIN_LIGHT_DIST2 (the factor clamps it to <= 1).
+  float cos_factor =
+      sphereHorizonFactor(dot(s.N, L), radius * radius / max(d2, HV_MIN_LIGHT_DIST2));
+#else
+  float cos_factor = saturate(dot(s.N, L));
+#endif
+  vec3 R = reflect(-V, s.N);
+  vec3 Ls = safeNormalize(closestPointOnSphereToRay(Lc, radius, R));
+  float norm = sphereNormalization(s.alpha, radius, d2);
+  return shadeLight(s, V, NoV, L, Ls, vec3(light.color_type), falloff * cos_factor, falloff, norm);
+}
+#endif
+
+#if HV_HAS_TUBE_LIGHTS
+// Tube light (capsule: segment of length len along axis, radius r). Diffuse: line-segment
+// irradiance with Karis's modifications (Karis 2013 eq. 16); specular: point on the segment
+// closest to the reflection ray (eq. 19; eq. 18 with HV_TUBE_SPECULAR = 1), then the sphere
+// representative point around it (eq. 11), normalized by alpha/alpha' (eq. 20) times the
+// sphere's (alpha/alpha'')^2 (eq. 14).
+vec3 evaluateTubeLight(GpuLight light, Surface s, vec3 P, vec3 V) {
+  float radius = light.position_radius.w;
+  float len = light.axis_length.w;
+  vec3 Lc = vec3(light.position_radius) - P;
+  vec3 Ld = vec3(light.axis_length) * len;  // segment vector L1 - L0
+  vec3 L0 = Lc - 0.5f * Ld;
+  vec3 L1 = Lc + 0.5f * Ld;
+  float NoV = max(dot(s.N, V), HV_MIN_NOV);
+  float ld2 = dot(Ld, Ld);
+  // Closest point of the segment to P: the window distance and the diffuse direction. 1e-30
+  // guards 0/0 for len = 0 (then t = 0 and L0 = Lc: the sphere light).
+  float tp = saturate(-dot(L0, Ld) / max(ld2, 1e-30f));
+  vec3 Lp = L0 + tp * Ld;
+  float dp2 = dot(Lp, Lp);
+  float window = falloffWindow(dp2, light.params.y);
+
+  // Diffuse, Karis eq. 16: E = I (saturate(n.L0/|L0|) + saturate(n.L1/|L1|)) /
+  // (|L0||L1| + L0.L1 + 2), the exact irradiance of a line of total intensity I (n.L clipped at
+  // each end, the "+2" being the "+1" of eq. 9). |L0||L1| + L0.L1 -> 2 d^2 as len -> 0, so it
+  // is clamped to >= 2 max(r^2, HV_MIN_LIGHT_DIST2) as the sphere clamps d^2 (it is 0 on the
+  // segment itself). One inversesqrt per end; |L0||L1| from their product, no extra sqrt.
+  float l0_2 = dot(L0, L0);
+  float l1_2 = dot(L1, L1);
+  float inv_l0 = inversesqrt(max(l0_2, 1e-30f));
+  float inv_l1 = inversesqrt(max(l1_2, 1e-30f));
+  float geom = l0_2 * l1_2 * inv_l0 * inv_l1 + dot(L0, L1);
+  float den = 2.0f * (max(0.5f * geom, max(radius * radius, HV_MIN_LIGHT_DIST2)) +
+                      float(HV_FALLOFF_PLUS_ONE));
+  float irradiance =
+      (saturate(dot(s.N, L0) * inv_l0) + saturate(dot(s.N, L1) * inv_l1)) / den * window;
+
+  // Specular: the point of the segment chosen for the reflection ray R.
+  vec3 R = reflect(-V, s.N);
+  float rl0 = dot(R, L0);
+  float rld = dot(R, Ld);
+  float l0ld = dot(L0, Ld);
+#if HV_TUBE_SPECULAR == HV_TUBE_SPECULAR_SMALLEST_ANGLE
+  // Karis eq. 18: smallest angle to R. The denominator may have either sign; +-1e-30 (sign kept)
+  // only guards 0/0 (len = 0 or R parallel to the segment: any t is then as good).
+  float tden = l0ld * rld - ld2 * rl0;
+  float t = (rl0 * l0ld - rld * l0_2) / (tden + 1e-30f * (2.0f * step(0.0f, tden) - 1.0f));
+#else
+  // Karis eq. 19: smallest distance to R; the denominator len^2 (1 - (R.axis)^2) >= 0, and is
+  // 0 only when len = 0 or R is parallel to the segment, where the numerator is 0 as well.
+  float t = (rl0 * rld - l0ld) / max(ld2 - rld * rld, 1e-30f);
+#endif
+  vec3 Lt = L0 + saturate(t) * Ld;
+  float dt2 = dot(Lt, Lt);
+  vec3 Ls = safeNormalize(closestPointOnSphereToRay(Lt, radius, R));
+  float norm = lineNormalization(s.alpha, len, dot(Lc, Lc)) * sphereNormalization(s.alpha, radius,
+                                                                                   dt2);
+  // Specular irradiance scale: the inverse-square falloff of the chosen segment point (the
+  // sphere's falloff when len = 0), windowed like the diffuse.
+  float spec_irr = window / (max(dt2, max(radius * radius, HV_MIN_LIGHT_DIST2)) +
+                             float(HV_FALLOFF_PLUS_ONE));
+  vec3 Ldiff = safeNormalize(Lp);
+  return shadeLight(s, V, NoV, Ldiff, Ls, vec3(light.color_type), irradiance, spec_irr, norm);
+}
+#endif
+
+// Outgoing radiance at P toward V (unit, from P to the eye) from one light, for surface s.
+// Cavity is applied to all of it (see shadeLight). Only the compiled light types are handled;
+// a light of a type compiled out contributes 0.
+vec3 evaluateLight(GpuLight light, Surface s, vec3 P, vec3 V) {
+  int type = int(light.color_type.w + 0.5f);  // stored as float; +0.5 rounds
+  vec3 result = vec3(0.0f);
+#if HV_HAS_POINT_LIGHTS
+  if (type == HV_LIGHT_POINT) result = evaluatePointLight(light, s, P, V);
+#endif
+#if HV_HAS_SPHERE_LIGHTS
+  if (type == HV_LIGHT_SPHERE) result = evaluateSphereLight(light, s, P, V);
+#endif
+#if HV_HAS_TUBE_LIGHTS
+  if (type == HV_LIGHT_TUBE) result = evaluateTubeLight(light, s, P, V);
+#endif
+  return result;
+}
+
+// World-space radius, around vec3(light.position_radius), outside which the light contributes
+// exactly 0 (the eq. 9 window is 0 beyond range R of the nearest emitting point): R for points
+// and spheres, R + len/2 for tubes. Precomputed by packLight; for tiled culling.
+float lightCullRadius(GpuLight light) { return light.params.z; }
+
+#endif

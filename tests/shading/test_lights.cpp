@@ -1,0 +1,182 @@
+// Lights of shaders/common/lights.glsl (default defines), run as C++.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "shading/light_gpu.hpp"
+
+namespace hv::glsl {
+namespace {
+#include "light_sweep.inc"
+}  // namespace
+}  // namespace hv::glsl
+
+namespace {
+
+namespace g = hv::glsl;
+constexpr double kPi = 3.14159265358979323846;
+
+glm::vec3 shade(const hv::Light& l, const g::Surface& s, glm::vec3 P, glm::vec3 V) {
+  return g::evaluateLight(hv::toGlsl(hv::packLight(l)), s, P, V);
+}
+
+TEST(Lights, PackLayoutAndValues) {
+  hv::Light l;
+  l.type = hv::LightType::Tube;
+  l.position = {1, 2, 3};
+  l.color = {1.0f, 0.5f, 0.25f};
+  l.intensity = 8.0f;
+  l.radius = 0.1f;
+  l.length = 2.0f;
+  l.axis = {0, 0, 3};  // normalized by packLight
+  l.range = 5.0f;
+  hv::GpuLight gl = hv::packLight(l);
+  EXPECT_EQ(gl.position_radius, glm::vec4(1, 2, 3, 0.1f));
+  EXPECT_EQ(gl.color_type, glm::vec4(8.0f, 4.0f, 2.0f, 2.0f));
+  EXPECT_EQ(gl.axis_length, glm::vec4(0, 0, 1, 2.0f));
+  EXPECT_FLOAT_EQ(gl.params.x, 5.0f);
+  EXPECT_FLOAT_EQ(gl.params.y, 0.2f);
+  EXPECT_FLOAT_EQ(gl.params.z, 6.0f);  // range + len/2
+  EXPECT_FLOAT_EQ(g::lightCullRadius(hv::toGlsl(gl)), 6.0f);
+  // Points ignore radius/length; degenerate axis and range are sanitized.
+  l.type = hv::LightType::Point;
+  l.axis = {0, 0, 0};
+  l.range = 0.0f;
+  gl = hv::packLight(l);
+  EXPECT_EQ(gl.position_radius.w, 0.0f);
+  EXPECT_EQ(gl.axis_length, glm::vec4(1, 0, 0, 0));
+  EXPECT_TRUE(std::isfinite(gl.params.y));
+  EXPECT_EQ(gl.color_type.w, 0.0f);
+  std::vector<hv::Light> lights(2);
+  lights[1].type = hv::LightType::Tube;
+  auto defs = hv::lightTypeDefines(lights);
+  ASSERT_EQ(defs.size(), 3u);
+  EXPECT_EQ(defs[0], std::make_pair(std::string("HV_HAS_POINT_LIGHTS"), std::string("1")));
+  EXPECT_EQ(defs[1], std::make_pair(std::string("HV_HAS_SPHERE_LIGHTS"), std::string("0")));
+  EXPECT_EQ(defs[2], std::make_pair(std::string("HV_HAS_TUBE_LIGHTS"), std::string("1")));
+}
+
+// Karis eq. 9 by hand, exact zeros at and beyond the culling radius for every light type, and a
+// point light straight above a surface evaluated by hand from the terms (tolerance 1e-5).
+TEST(Lights, FalloffByHand) {
+  // d = 2, R = 4: window = (1 - (1/2)^4)^2 = (15/16)^2; / (d^2 + 1) = / 5.
+  EXPECT_NEAR(g::distanceFalloff(4.0f, 0.0f, 0.25f), (15.0f / 16.0f) * (15.0f / 16.0f) / 5.0f,
+              1e-7f);
+  EXPECT_EQ(g::falloffWindow(16.0f, 0.25f), 0.0f);  // d = R
+  EXPECT_EQ(g::falloffWindow(17.0f, 0.25f), 0.0f);  // beyond R
+  EXPECT_EQ(g::falloffWindow(0.0f, 0.25f), 1.0f);
+  // Beyond the culling radius every light type is exactly 0.
+  g::Surface s = g::makeSurface({0, 0, 1}, glm::vec3(1.0f), 0.0f, 0.5f, 1.0f);
+  for (int type = 0; type < 3; ++type) {
+    hv::Light l;
+    l.type = hv::LightType(type);
+    l.radius = 0.2f;
+    l.length = 3.0f;
+    l.axis = {1, 0, 0};
+    l.range = 2.0f;
+    float cull = hv::packLight(l).params.z;
+    l.position = glm::vec3(0, 0, cull * 1.0001f);
+    EXPECT_EQ(shade(l, s, glm::vec3(0.0f), glm::vec3(0, 0, 1)), glm::vec3(0.0f)) << type;
+    l.position = glm::normalize(glm::vec3(0.3f, 0.0f, 0.9f)) * (cull * 1.0001f);
+    EXPECT_EQ(shade(l, s, glm::vec3(0.0f), glm::vec3(0, 0, 1)), glm::vec3(0.0f)) << type;
+  }
+  // Point light straight above a white Lambert surface (metallic 0): diffuse radiance =
+  // I falloff / pi; specular adds D V F at NoH = 1, checked against the terms themselves.
+  hv::Light p;
+  p.position = {0, 0, 2};
+  p.intensity = 10.0f;
+  p.range = 4.0f;
+  glm::vec3 c = shade(p, s, glm::vec3(0.0f), glm::vec3(0, 0, 1));
+  float falloff = (15.0f / 16.0f) * (15.0f / 16.0f) / 5.0f;
+  float spec = g::D_GGX(0.25f, 1.0f) * g::V_SchlickGGX(0.5f * 0.5625f, 1.0f, 1.0f) * 0.04f;
+  EXPECT_NEAR(c.x, 10.0f * falloff * (1.0f / float(kPi) + spec), 1e-5f);
+}
+
+// The 1 cm minimum distance and the capsule radius bound the point falloff: inside a sphere the
+// radiance equals that on its surface (window aside).
+TEST(Lights, SphereInteriorClamp) {
+  EXPECT_FLOAT_EQ(g::distanceFalloff(0.0f, 0.5f, 0.0f), 1.0f / (0.25f + 1.0f));
+  EXPECT_FLOAT_EQ(g::distanceFalloff(0.0f, 0.0f, 0.0f), 1.0f / (1e-4f + 1.0f));
+}
+
+// A sphere of radius 1e-4 is the point light, and a tube of length 1e-4 is the sphere (radius
+// 0.2 and 0), relative tolerance 2e-3 + absolute 1e-6 (the normalizations differ by
+// ~2 (r / 3d) / alpha and ~0.5 len / (d alpha): <= 7e-4 for roughness >= 0.3 at d >= 1).
+TEST(Lights, DegenerateShapesMatch) {
+  const glm::vec3 views[] = {glm::vec3(0, 0, 1), glm::normalize(glm::vec3(0.5f, 0.1f, 0.8f)),
+                             glm::normalize(glm::vec3(-0.9f, 0.3f, 0.2f))};
+  const glm::vec3 pos[] = {glm::vec3(0, 0, 1.5f), glm::vec3(1.0f, 0.5f, 1.0f),
+                           glm::vec3(-2.0f, 0.3f, 0.6f), glm::vec3(1.5f, -1.0f, 0.1f)};
+  int compared = 0;
+  for (float roughness : {0.3f, 0.6f, 1.0f})
+    for (float metallic : {0.0f, 1.0f}) {
+      g::Surface s =
+          g::makeSurface({0, 0, 1}, glm::vec3(0.9f, 0.6f, 0.3f), metallic, roughness, 1.0f);
+      for (const glm::vec3& V : views)
+        for (const glm::vec3& P : pos) {
+          hv::Light point;
+          point.position = P;
+          point.intensity = 20.0f;
+          point.range = 8.0f;
+          hv::Light sphere = point;
+          sphere.type = hv::LightType::Sphere;
+          sphere.radius = 1e-4f;
+          glm::vec3 a = shade(point, s, glm::vec3(0.0f), V);
+          glm::vec3 b = shade(sphere, s, glm::vec3(0.0f), V);
+          for (int k = 0; k < 3; ++k) EXPECT_NEAR(b[k], a[k], 2e-3f * a[k] + 1e-6f);
+          for (float radius : {0.0f, 0.2f}) {
+            sphere.radius = radius;
+            hv::Light tube = sphere;
+            tube.type = hv::LightType::Tube;
+            tube.length = 1e-4f;
+            tube.axis = glm::normalize(glm::vec3(1, 2, 0.5f));
+            glm::vec3 c = shade(sphere, s, glm::vec3(0.0f), V);
+            glm::vec3 d = shade(tube, s, glm::vec3(0.0f), V);
+            for (int k = 0; k < 3; ++k)
+              EXPECT_NEAR(d[k], c[k], 2e-3f * c[k] + 1e-6f)
+                  << "roughness " << roughness << " radius " << radius << " P " << P.x;
+            ++compared;
+          }
+        }
+    }
+  EXPECT_EQ(compared, 3 * 2 * 3 * 4 * 2);
+}
+
+// Lagarde & de Rousiers horizon factor against brute force: the integral of max(cos, 0) over the
+// sphere's solid-angle cap, divided by pi sin^2(sigma), by quadrature over the cap (polar grid
+// around the cap axis). Tolerance 2e-3 absolute (the factor is <= 1).
+TEST(Lights, SphereHorizonFactorMatchesQuadrature) {
+  for (float sin_sigma : {0.05f, 0.3f, 0.7f, 0.95f})
+    for (float theta_deg : {0.0f, 30.0f, 60.0f, 80.0f, 90.0f, 100.0f, 120.0f, 170.0f}) {
+      double theta = theta_deg * kPi / 180.0;
+      double cos_sigma = std::sqrt(1.0 - double(sin_sigma) * sin_sigma);
+      // Cap axis in the xz plane at angle theta from the normal z.
+      glm::dvec3 axis(std::sin(theta), 0.0, std::cos(theta));
+      glm::dvec3 t1(std::cos(theta), 0.0, -std::sin(theta)), t2(0.0, 1.0, 0.0);
+      const int nu = 400, nphi = 400;
+      double sum = 0.0;
+      for (int i = 0; i < nu; ++i) {
+        double u = cos_sigma + (1.0 - cos_sigma) * (i + 0.5) / nu;  // cos of angle to axis
+        double su = std::sqrt(1.0 - u * u);
+        for (int j = 0; j < nphi; ++j) {
+          double phi = 2.0 * kPi * (j + 0.5) / nphi;
+          glm::dvec3 w = axis * u + t1 * (su * std::cos(phi)) + t2 * (su * std::sin(phi));
+          sum += std::max(w.z, 0.0);
+        }
+      }
+      double integral = sum * (1.0 - cos_sigma) * 2.0 * kPi / (double(nu) * nphi);
+      double expected = integral / (kPi * sin_sigma * sin_sigma);
+      float got = g::sphereHorizonFactor(float(std::cos(theta)), sin_sigma * sin_sigma);
+      EXPECT_NEAR(got, expected, 2e-3) << "sin_sigma " << sin_sigma << " theta " << theta_deg;
+    }
+}
+
+// Finite and non-negative everywhere: roughness 0 and 1, NoV = NoL = 0, V below the surface,
+// shading point at the light center / inside the sphere or on the tube segment, radius and
+// length 0, distances 1e-6 to 1e6, intensity 1e6, base color 0/1, metallic 0/1.
+TEST(Lights, StabilitySweepDefaults) {
+  int cases = hv::glsl::runStabilitySweep();
+  EXPECT_GT(cases, 100000);
+}
+
+}  // namespace
