@@ -1,7 +1,10 @@
 // The shared shading math, compiled as C++: every function in shaders/common/*.glsl is callable
-// here as hv::glsl::NAME. Term choices default to the GLSL defaults (see docs/brdf.md); a test
-// that needs another choice includes the headers itself with its own defines inside its own
-// namespace (the headers have no linkage of their own: they sit in an anonymous namespace).
+// here as hv::glsl::NAME. Term choices are the GLSL defaults (docs/brdf.md, docs/lights.md); for
+// run-time choice of BRDF terms use engine/shading/brdf.hpp. Code that needs other defines compiles
+// the headers again in its own namespace after resetting the include guards and option defines
+// (see tests/shading/test_lights_variant.cpp). The headers sit in an anonymous namespace, so the
+// functions have internal linkage; C++ functions taking their structs (Surface, GpuLight) must be
+// inline in a header.
 #pragma once
 
 #include "shading/glsl.hpp"

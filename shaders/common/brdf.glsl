@@ -243,7 +243,8 @@ struct Surface {
   float cavity;        // small-scale occlusion of direct light, 1 = none (see lights.glsl)
 };
 
-// Builds a Surface from metallic-workflow parameters; clamps roughness (HV_MIN_ROUGHNESS).
+// Karis 2013 "Material Model": builds a Surface from metallic-workflow parameters (BaseColor,
+// Metallic, Roughness, Cavity); clamps roughness (HV_MIN_ROUGHNESS).
 Surface makeSurface(vec3 N, vec3 baseColor, float metallic, float roughness, float cavity) {
   Surface s;
   s.N = N;

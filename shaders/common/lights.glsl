@@ -146,6 +146,7 @@ float lineNormalization(float alpha, float len, float d2) {
 #endif
 }
 
+// Karis 2013 "Lighting" / "Material Model": the shading of one light, shared by all light types.
 // Radiance leaving the surface toward V for light arriving from direction L (representative
 // direction for specular, Ld for diffuse), already scaled by the light's irradiance factors:
 // diffuse_irr = I * falloff * cos for the diffuse lobe, spec_irr = I * falloff for specular
@@ -237,7 +238,7 @@ vec3 evaluateTubeLight(GpuLight light, Surface s, vec3 P, vec3 V) {
   float l1_2 = dot(L1, L1);
   float inv_l0 = inversesqrt(max(l0_2, 1e-30f));
   float inv_l1 = inversesqrt(max(l1_2, 1e-30f));
-  float geom = l0_2 * l1_2 * inv_l0 * inv_l1 + dot(L0, L1);
+  float geom = (l0_2 * inv_l0) * (l1_2 * inv_l1) + dot(L0, L1);  // paired: no overflow at 1e6 m
   float den = 2.0f * (max(0.5f * geom, max(radius * radius, HV_MIN_LIGHT_DIST2)) +
                       float(HV_FALLOFF_PLUS_ONE));
   float irradiance =
@@ -272,7 +273,8 @@ vec3 evaluateTubeLight(GpuLight light, Surface s, vec3 P, vec3 V) {
 }
 #endif
 
-// Outgoing radiance at P toward V (unit, from P to the eye) from one light, for surface s.
+// Karis 2013 "Lighting": outgoing radiance at P toward V (unit, from P to the eye) from one light,
+// for surface s (docs/lights.md).
 // Cavity is applied to all of it (see shadeLight). Only the compiled light types are handled;
 // a light of a type compiled out contributes 0.
 vec3 evaluateLight(GpuLight light, Surface s, vec3 P, vec3 V) {
@@ -290,9 +292,10 @@ vec3 evaluateLight(GpuLight light, Surface s, vec3 P, vec3 V) {
   return result;
 }
 
-// World-space radius, around vec3(light.position_radius), outside which the light contributes
-// exactly 0 (the eq. 9 window is 0 beyond range R of the nearest emitting point): R for points
-// and spheres, R + len/2 for tubes. Precomputed by packLight; for tiled culling.
+// Karis 2013 eq. 9 (the window bounds the light): world-space radius, around the light
+// position, outside which the light contributes exactly 0 (the window is 0 beyond range R of the
+// nearest emitting point): R for points and spheres, R + len/2 for tubes. Precomputed by
+// packLight; for tiled culling.
 float lightCullRadius(GpuLight light) { return light.params.z; }
 
 #endif
