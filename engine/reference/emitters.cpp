@@ -10,7 +10,6 @@ namespace hv::reference_detail {
 namespace {
 
 constexpr float kPi = 3.14159265358979f;
-constexpr float kMinLightDist2 = 1e-4f;  // HV_MIN_LIGHT_DIST2 of lights.glsl: (1 cm)^2
 
 uint64_t splitmix64(uint64_t x) {
   x += 0x9E3779B97F4A7C15ull;
@@ -19,25 +18,26 @@ uint64_t splitmix64(uint64_t x) {
   return x ^ (x >> 31u);
 }
 
+// Karis 2013 eq. 9 window, the engine's own function (lights.glsl falloffWindow).
 float window(float d2, float range) {
-  float x = d2 / (range * range);
-  return glsl::sq(glsl::saturate(1.0f - x * x));
+  return glsl::falloffWindow(d2, 1.0f / range);
 }
 
-// Emitter radiance (docs/lights.md): the emitter is a uniform Lambertian surface whose radiance
-// makes the far-field intensity equal I = color * intensity (W/sr): sphere L_e = I / (pi r^2)
-// (projected area pi r^2); capsule L_e = I / (pi r^2 + 2 r len) (projected area seen
-// perpendicular to the axis). It is scaled by the engine's falloff relative to the inverse
-// square law, evaluated at the light's distance d (sphere: center; tube: closest segment point):
-// d^2 * falloff(d^2) = window(d) * d^2 / (max(d^2, r^2) + 1), so far away the integral tends to
-// the point light's I * falloff * cos.
+// Radiance arriving from any visible point of a sphere or capsule light at a shading point whose
+// window distance is d (sphere: to the center; tube: to the closest point of the segment), exactly
+// as docs/lights.md ("What a Monte Carlo reference must integrate") defines it:
+//   L_e * W_R(d) * (falloff_plus_one ? d^2 / (d^2 + 1) : 1),  d^2 clamped below at r^2 in the +1
+// factor (inside the emitter = on its surface; the window takes the unclamped d, as the engine),
+// with the Lambertian emitter radiance L_e = I / (pi r^2) (sphere) and I / (pi r^2 + pi r len / 2)
+// (capsule: the same power 4 pi I as the sphere and the point light).
 glm::vec3 emitterRadiance(const Light& light, const RenderSettings& settings, float d2) {
   const float r = std::max(light.radius, 0.0f);
   const float len = light.type == LightType::Tube ? std::max(light.length, 0.0f) : 0.0f;
-  const float projected = kPi * r * r + 2.0f * r * len;
-  if (projected <= 0.0f) return glm::vec3(0.0f);
-  const float scale = d2 * falloff(settings, d2, r, light.range);
-  return light.color * (light.intensity * scale / projected);
+  const float emitting = kPi * r * r + 0.5f * kPi * r * len;
+  if (emitting <= 0.0f) return glm::vec3(0.0f);
+  const float d2c = std::max(d2, r * r);
+  const float plus_one = settings.falloff_plus_one ? d2c / (d2c + 1.0f) : 1.0f;
+  return light.color * (light.intensity / emitting * window(d2, light.range) * plus_one);
 }
 
 LightSample sampleSphere(const Light& light, const RenderSettings& settings, const glm::vec3& P,
@@ -133,7 +133,7 @@ uint32_t Rng::next() {
 }
 
 float falloff(const RenderSettings& settings, float d2, float radius, float range) {
-  const float d2c = std::max(d2, std::max(radius * radius, kMinLightDist2));
+  const float d2c = std::max(d2, std::max(radius * radius, glsl::HV_MIN_LIGHT_DIST2));
   return window(d2, range) / (d2c + (settings.falloff_plus_one ? 1.0f : 0.0f));
 }
 
