@@ -332,3 +332,45 @@ TEST(Reference, BackgroundIsEnvironmentRadiance) {
 }
 
 }  // namespace
+
+namespace {
+
+// Everything at once on a small image (sky, point + sphere + tube lights, options that change the
+// ambient specular, progress on): finite, non-negative, stats consistent with the G-buffer.
+TEST(Reference, MixedSceneIsFiniteWithConsistentStats) {
+  hv::Scene scene = makeScene();
+  scene.environment.kind = hv::EnvironmentKind::Sky;
+  scene.settings.specular_occlusion = true;
+  scene.settings.energy_compensation = true;
+  scene.settings.falloff_plus_one = false;
+  hv::Light l;
+  l.position = {0.0f, 1.0f, 0.0f};
+  scene.lights.push_back(l);
+  l.type = hv::LightType::Sphere;
+  l.position = {1.0f, 0.5f, 0.0f};
+  l.radius = 0.2f;
+  scene.lights.push_back(l);
+  l.type = hv::LightType::Tube;
+  l.position = {-1.0f, 0.3f, 0.5f};
+  l.length = 1.0f;
+  l.radius = 0.05f;
+  scene.lights.push_back(l);
+  hv::render::GBufferReadback gb = makeGBuffer(scene, 16, 12, glm::vec3(0.7f), 0.3f, 0.35f, 0.7f);
+  for (size_t i = 0; i < 16; ++i) gb.model[i] = uint32_t(hv::ShadingModel::Background);
+  hv::ReferenceOptions o = fastOptions(32);
+  o.progress = true;
+  hv::ReferenceResult r = hv::renderReference(scene, gb, o);
+  for (size_t i = 0; i < r.image.px.size(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      ASSERT_TRUE(std::isfinite(r.image.px[i][k])) << i;
+      ASSERT_GE(r.image.px[i][k], 0.0f) << i;
+    }
+  EXPECT_EQ(r.stats.background_pixels, 16u);
+  EXPECT_EQ(r.stats.lit_pixels, 16u * 12u - 16u);
+  EXPECT_EQ(r.stats.total_samples, 32u * r.stats.lit_pixels);
+  EXPECT_GT(r.stats.max_rel_error, 0.0);
+  EXPECT_LE(r.stats.mean_rel_error, r.stats.max_rel_error);
+  EXPECT_THROW(hv::renderReference(scene, hv::render::GBufferReadback{}, o), std::invalid_argument);
+}
+
+}  // namespace
