@@ -1,0 +1,45 @@
+// Internal to engine/reference: random numbers, the distance falloff and the emitters of the
+// area lights (what a sample of a sphere or tube light returns). The emitter radiance follows
+// docs/lights.md; the falloff is lights.glsl's distanceFalloff with the +1 chosen at run time.
+#pragma once
+
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "scene/scene.hpp"
+
+namespace hv::reference_detail {
+
+// PCG32 (O'Neill 2014, pcg32_random_r), one stream per pixel: the image does not depend on the
+// thread count. uniform() is in [0, 1) with 24 random bits.
+class Rng {
+ public:
+  Rng(uint64_t seed, uint64_t stream);
+  uint32_t next();
+  float uniform() { return float(next() >> 8u) * 5.9604644775390625e-8f; }
+
+ private:
+  uint64_t state_ = 0, inc_ = 0;
+};
+
+// Karis 2013 eq. 9 as lights.glsl distanceFalloff: saturate(1 - (d/R)^4)^2 / (d^2 + 1), or
+// / d^2 when !settings.falloff_plus_one; d^2 clamped to >= max(radius^2, 1e-4).
+float falloff(const RenderSettings& settings, float d2, float radius, float range);
+
+// One direction toward an area light: unit L, the radiance arriving along it (emitter radiance
+// times the falloff scaling of docs/lights.md) and the solid-angle pdf of L; pdf = 0 means the
+// sample missed the visible emitter (it contributes 0 but still counts as a sample).
+struct LightSample {
+  glm::vec3 L{0.0f, 0.0f, 1.0f};
+  glm::vec3 radiance{0.0f};
+  float pdf = 0.0f;
+};
+
+// Sphere: uniform in the cone the sphere subtends from P (pdf 1 / solid angle); inside the sphere,
+// uniform over all directions. Tube (capsule): uniform over the capsule's area, converted to
+// solid angle (pdf = dist^2 / (area cos_emitter)); back-facing points return pdf = 0.
+LightSample sampleLight(const Light& light, const RenderSettings& settings, const glm::vec3& P,
+                        glm::vec2 u);
+
+}  // namespace hv::reference_detail
