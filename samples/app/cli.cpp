@@ -16,6 +16,7 @@ Commands:
   render SCENE.json     render headless to PNG (and HDR PFM), print per-pass GPU times
   compare A.pfm B.pfm   error metrics between two HDR images (+ heat map)
   stability             NaN/Inf/negative sweep over extreme light and material cases
+  reference SCENE.json  CPU Monte Carlo ground truth over the GPU's G-buffer
   bench                 light-pass scaling tables (ms, light-pixel evaluations per second)
 
 Run `halfvec <command> --help` for the options of each command.
@@ -34,6 +35,7 @@ int runCli(const std::vector<std::string>& args) {
     if (cmd == "compare") return cmdCompare(rest);
     if (cmd == "stability") return cmdStability(rest);
     if (cmd == "bench") return cmdBench(rest);
+    if (cmd == "reference") return cmdReference(rest);
     std::fprintf(stderr, "halfvec: unknown command '%s' (see halfvec --help)\n", cmd.c_str());
     return 2;
   } catch (const UsageError& e) {

@@ -12,6 +12,7 @@ int cmdRender(const Args& args);
 int cmdCompare(const Args& args);
 int cmdStability(const Args& args);
 int cmdBench(const Args& args);
+int cmdReference(const Args& args);
 
 // Thrown for bad command-line usage; the message is printed with the command's help hint.
 struct UsageError {

@@ -1,0 +1,115 @@
+// `halfvec reference`: CPU Monte Carlo ground truth over the GPU's own G-buffer.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "app/commands.hpp"
+#include "platform/context.hpp"
+#include "reference/reference.hpp"
+#include "render/renderer.hpp"
+#include "scene/scene_loader.hpp"
+#include "shading/shading.hpp"
+
+namespace hv::app {
+
+namespace {
+constexpr const char* kHelp = R"(Usage: halfvec reference SCENE.json [options]
+
+Renders the scene's G-buffer on the GPU, reads it back, and computes the exact lighting integral
+per pixel by Monte Carlo (same BRDF terms as the engine, no shadows or interreflection; see
+docs/reference.md). Prints its own standard error.
+
+Options:
+  --size WxH           output size (default: the scene's)
+  --samples N          samples per pixel and estimator (default 256)
+  --target-error E     stop a pixel once its relative standard error is below E
+  --hdr FILE.pfm       the reference radiance (compare with `halfvec render --hdr`)
+  --out FILE.png       tone-mapped with the engine's output transform (no dither)
+  --aov DIR            direct_diffuse, direct_specular, ambient_diffuse, ambient_specular .pfm
+  --set PATH=VALUE     scene override, as for render
+  --threads N          worker threads (default: all cores)
+)";
+}  // namespace
+
+int cmdReference(const Args& args) {
+  std::string scene_path, hdr, out, aov;
+  std::vector<std::string> overrides;
+  int w = 0, h = 0;
+  ReferenceOptions opt;
+  opt.progress = true;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= args.size()) throw UsageError{a + " needs a value"};
+      return args[++i];
+    };
+    if (a == "--help" || a == "-h") {
+      std::fputs(kHelp, stdout);
+      return 0;
+    } else if (a == "--size") {
+      const std::string v = value();
+      if (std::sscanf(v.c_str(), "%dx%d", &w, &h) != 2 || w <= 0 || h <= 0) {
+        throw UsageError{"--size expects WxH, got '" + v + "'"};
+      }
+    } else if (a == "--samples") {
+      opt.samples = std::atoi(value().c_str());
+      if (opt.samples < 1) throw UsageError{"--samples expects a positive count"};
+    } else if (a == "--target-error") {
+      opt.target_rel_error = std::stof(value());
+    } else if (a == "--threads") {
+      opt.threads = std::atoi(value().c_str());
+    } else if (a == "--hdr") {
+      hdr = value();
+    } else if (a == "--out") {
+      out = value();
+    } else if (a == "--aov") {
+      aov = value();
+    } else if (a == "--set") {
+      overrides.push_back(value());
+    } else if (!a.empty() && a[0] == '-') {
+      throw UsageError{"unknown option '" + a + "'"};
+    } else if (scene_path.empty()) {
+      scene_path = a;
+    } else {
+      throw UsageError{"more than one scene file given"};
+    }
+  }
+  if (scene_path.empty()) throw UsageError{"no scene file given"};
+  Scene scene = loadScene(scene_path, overrides);
+  if (!w) {
+    w = scene.settings.width;
+    h = scene.settings.height;
+  }
+  auto ctx = createHeadlessContext();
+  render::Renderer renderer;
+  renderer.setScene(scene);
+  renderer.render(w, h);
+  const render::GBufferReadback g = renderer.readGBuffer();
+  const ReferenceResult r = renderReference(scene, g, opt);
+  std::printf("reference: %dx%d, %zu lit pixels, %llu samples, %.1f s\n", w, h, r.stats.lit_pixels,
+              static_cast<unsigned long long>(r.stats.total_samples), r.stats.seconds);
+  std::printf("Monte Carlo relative standard error: mean %.4f, max %.4f\n", r.stats.mean_rel_error,
+              r.stats.max_rel_error);
+  if (!hdr.empty()) writePfm(hdr, r.image);
+  if (!out.empty()) {
+    // The engine's own output transform (shaders/common/tonemap.glsl, default Reinhard + 2.2).
+    ImageRGBA8 ldr = makeImageRGBA8(r.image.width, r.image.height);
+    for (size_t i = 0; i < r.image.px.size(); ++i) {
+      const glm::vec3 c = glsl::outputTransform(r.image.px[i] * scene.settings.exposure);
+      for (int k = 0; k < 3; ++k) ldr.px[4 * i + k] = uint8_t(std::lround(c[k] * 255.0f));
+      ldr.px[4 * i + 3] = 255;
+    }
+    writePng(out, ldr);
+  }
+  if (!aov.empty()) {
+    std::filesystem::create_directories(aov);
+    for (int k = 0; k < kReferenceAovCount; ++k) {
+      const auto which = static_cast<ReferenceAov>(k);
+      writePfm((std::filesystem::path(aov) / (std::string(toString(which)) + ".pfm")).string(),
+               r[which]);
+    }
+  }
+  return 0;
+}
+
+}  // namespace hv::app
