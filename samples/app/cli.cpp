@@ -16,6 +16,7 @@ Commands:
   render SCENE.json     render headless to PNG (and HDR PFM), print per-pass GPU times
   compare A.pfm B.pfm   error metrics between two HDR images (+ heat map)
   stability             NaN/Inf/negative sweep over extreme light and material cases
+  view SCENE.json       interactive viewer: orbit camera, material/lights/rendering panels
 
 Run `halfvec <command> --help` for the options of each command.
 )";
@@ -32,6 +33,7 @@ int runCli(const std::vector<std::string>& args) {
     if (cmd == "render") return cmdRender(rest);
     if (cmd == "compare") return cmdCompare(rest);
     if (cmd == "stability") return cmdStability(rest);
+    if (cmd == "view") return cmdView(rest);
     std::fprintf(stderr, "halfvec: unknown command '%s' (see halfvec --help)\n", cmd.c_str());
     return 2;
   } catch (const UsageError& e) {

@@ -11,6 +11,7 @@ using Args = std::vector<std::string>;
 int cmdRender(const Args& args);
 int cmdCompare(const Args& args);
 int cmdStability(const Args& args);
+int cmdView(const Args&);
 
 // Thrown for bad command-line usage; the message is printed with the command's help hint.
 struct UsageError {
