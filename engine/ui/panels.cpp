@@ -15,8 +15,12 @@ namespace hv::ui {
 
 namespace {
 
-glm::vec3 clamp01(glm::vec3 v) { return glm::clamp(v, glm::vec3(0.0f), glm::vec3(1.0f)); }
-float clamp01(float v) { return std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f; }
+glm::vec3 clamp01(glm::vec3 v) {
+  return glm::clamp(v, glm::vec3(0.0f), glm::vec3(1.0f));
+}
+float clamp01(float v) {
+  return std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f;
+}
 glm::vec3 finiteOr(glm::vec3 v, glm::vec3 fallback) {
   return (std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)) ? v : fallback;
 }
@@ -32,7 +36,9 @@ bool sameLight(const Light& a, const Light& b) {
          a.axis == b.axis && a.range == b.range;
 }
 
-nlohmann::ordered_json vec3Json(glm::vec3 v) { return nlohmann::ordered_json::array({v.x, v.y, v.z}); }
+nlohmann::ordered_json vec3Json(glm::vec3 v) {
+  return nlohmann::ordered_json::array({v.x, v.y, v.z});
+}
 
 void writeMaterialFields(nlohmann::ordered_json& j, const Material& m) {
   j["base_color"] = vec3Json(m.base_color);
@@ -248,7 +254,7 @@ std::vector<Light> generateLights(const LightGenerator& gen) {
     // Saturated hue: HSV with s = 0.6, v = 1.
     const float h = uni(0.0f, 6.0f);
     const float x = 1.0f - std::abs(std::fmod(h, 2.0f) - 1.0f);
-    glm::vec3 c = h < 1 ? glm::vec3(1, x, 0)
+    glm::vec3 c = h < 1   ? glm::vec3(1, x, 0)
                   : h < 2 ? glm::vec3(x, 1, 0)
                   : h < 3 ? glm::vec3(0, 1, x)
                   : h < 4 ? glm::vec3(0, x, 1)
@@ -284,7 +290,9 @@ const Light* LightsPanelModel::current() const {
   return &scene_->lights[size_t(selected_)];
 }
 
-Light* LightsPanelModel::mut() { return const_cast<Light*>(current()); }
+Light* LightsPanelModel::mut() {
+  return const_cast<Light*>(current());
+}
 
 int LightsPanelModel::add(LightType type) {
   if (!scene_) return -1;
@@ -323,15 +331,15 @@ void LightsPanelModel::generate(const LightGenerator& gen, bool replace) {
   dirty_ = true;
 }
 
-#define HV_LIGHT_SETTER(NAME, ARG, EXPR)  \
-  bool LightsPanelModel::NAME(ARG) {      \
-    Light* l = mut();                     \
-    if (!l) return false;                 \
-    const Light before = *l;              \
-    EXPR;                                 \
+#define HV_LIGHT_SETTER(NAME, ARG, EXPR)    \
+  bool LightsPanelModel::NAME(ARG) {        \
+    Light* l = mut();                       \
+    if (!l) return false;                   \
+    const Light before = *l;                \
+    EXPR;                                   \
     const bool ch = !sameLight(before, *l); \
-    dirty_ = dirty_ || ch;                \
-    return ch;                            \
+    dirty_ = dirty_ || ch;                  \
+    return ch;                              \
   }
 
 HV_LIGHT_SETTER(setType, LightType t, l->type = t)
@@ -428,12 +436,15 @@ bool RenderSettingsModel::setEnvironmentRotation(float deg) {
 }
 
 std::span<const char* const> RenderSettingsModel::debugViewNames() {
-  static const char* const names[] = {
-      render::toString(render::DebugView::None),         render::toString(render::DebugView::BaseColor),
-      render::toString(render::DebugView::Metallic),     render::toString(render::DebugView::Roughness),
-      render::toString(render::DebugView::Cavity),       render::toString(render::DebugView::Normal),
-      render::toString(render::DebugView::Depth),        render::toString(render::DebugView::ShadingModel),
-      render::toString(render::DebugView::LightsPerTile)};
+  static const char* const names[] = {render::toString(render::DebugView::None),
+                                      render::toString(render::DebugView::BaseColor),
+                                      render::toString(render::DebugView::Metallic),
+                                      render::toString(render::DebugView::Roughness),
+                                      render::toString(render::DebugView::Cavity),
+                                      render::toString(render::DebugView::Normal),
+                                      render::toString(render::DebugView::Depth),
+                                      render::toString(render::DebugView::ShadingModel),
+                                      render::toString(render::DebugView::LightsPerTile)};
   return names;
 }
 

@@ -62,7 +62,8 @@ bool drawMaterialPanel(MaterialPanelModel& model, const std::string& scene_path,
   if (ImGui::ColorEdit3("base color", &m.base_color.x, ImGuiColorEditFlags_Float)) {
     changed |= model.setBaseColor(m.base_color);
   }
-  if (ImGui::SliderFloat("metallic", &m.metallic, 0.0f, 1.0f)) changed |= model.setMetallic(m.metallic);
+  if (ImGui::SliderFloat("metallic", &m.metallic, 0.0f, 1.0f))
+    changed |= model.setMetallic(m.metallic);
   if (ImGui::SliderFloat("roughness", &m.roughness, 0.0f, 1.0f)) {
     changed |= model.setRoughness(m.roughness);
   }
@@ -116,15 +117,18 @@ bool drawLightsPanel(LightsPanelModel& model) {
     if (const Light* cur = model.current()) {
       Light l = *cur;
       int type = int(l.type);
-      if (nameCombo("type", &type, enumNames<LightType>())) changed |= model.setType(LightType(type));
-      if (ImGui::DragFloat3("position", &l.position.x, 0.02f)) changed |= model.setPosition(l.position);
+      if (nameCombo("type", &type, enumNames<LightType>()))
+        changed |= model.setType(LightType(type));
+      if (ImGui::DragFloat3("position", &l.position.x, 0.02f))
+        changed |= model.setPosition(l.position);
       if (ImGui::ColorEdit3("color", &l.color.x, ImGuiColorEditFlags_Float)) {
         changed |= model.setColor(l.color);
       }
       if (ImGui::DragFloat("intensity", &l.intensity, 0.1f, 0.0f, 1e4f)) {
         changed |= model.setIntensity(l.intensity);
       }
-      if (ImGui::DragFloat("range", &l.range, 0.05f, 0.01f, 1e3f)) changed |= model.setRange(l.range);
+      if (ImGui::DragFloat("range", &l.range, 0.05f, 0.01f, 1e3f))
+        changed |= model.setRange(l.range);
       if (l.type != LightType::Point &&
           ImGui::DragFloat("radius", &l.radius, 0.005f, 0.0f, 100.0f)) {
         changed |= model.setRadius(l.radius);
@@ -133,7 +137,8 @@ bool drawLightsPanel(LightsPanelModel& model) {
         if (ImGui::DragFloat("length", &l.length, 0.01f, 0.0f, 100.0f)) {
           changed |= model.setLength(l.length);
         }
-        if (ImGui::DragFloat3("axis", &l.axis.x, 0.01f, -1.0f, 1.0f)) changed |= model.setAxis(l.axis);
+        if (ImGui::DragFloat3("axis", &l.axis.x, 0.01f, -1.0f, 1.0f))
+          changed |= model.setAxis(l.axis);
       }
       if (ImGui::Button("Remove")) changed |= model.remove(model.selected());
       ImGui::SameLine();

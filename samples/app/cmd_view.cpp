@@ -100,7 +100,8 @@ ImageRGBA8 readFramebuffer(int w, int h) {
   glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
   const size_t stride = size_t(w) * 4;
   for (int y = 0; y < h; ++y) {
-    std::copy_n(rows.data() + size_t(h - 1 - y) * stride, stride, img.px.data() + size_t(y) * stride);
+    std::copy_n(rows.data() + size_t(h - 1 - y) * stride, stride,
+                img.px.data() + size_t(y) * stride);
   }
   for (size_t i = 3; i < img.px.size(); i += 4) img.px[i] = 255;
   return img;
@@ -125,8 +126,10 @@ struct CameraController {
     const glm::vec3 up = glm::cross(right, fwd);
     for (int b = 0; b < 3; ++b) {
       const bool down = glfwGetMouseButton(win, b) == GLFW_PRESS;
-      if (!down) dragging[b] = false;
-      else if (!dragging[b] && !ui_mouse) dragging[b] = true;  // drags start outside the panels
+      if (!down)
+        dragging[b] = false;
+      else if (!dragging[b] && !ui_mouse)
+        dragging[b] = true;  // drags start outside the panels
     }
     if (dragging[GLFW_MOUSE_BUTTON_LEFT] && (dx != 0 || dy != 0)) {
       // Yaw about the world up, pitch about the right axis, kept off the poles.
@@ -344,7 +347,8 @@ int cmdView(const Args& args) {
   if (!stats.frameTimes().empty()) {
     std::printf("frames: %d, mean frame %.2f ms, mean GPU %.3f ms (%s)\n", frame,
                 stats.averageFrameMs(), stats.averageGpuMs(), gpu.c_str());
-    for (const auto& [name, ms] : stats.last().passes) std::printf("  %-12s %8.3f ms\n", name.c_str(), ms);
+    for (const auto& [name, ms] : stats.last().passes)
+      std::printf("  %-12s %8.3f ms\n", name.c_str(), ms);
   }
   return 0;
 }
