@@ -1,4 +1,5 @@
 // ImGui drawing of the panel models (no backend here: imgui.h only).
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -9,6 +10,18 @@
 namespace hv::ui {
 
 namespace {
+
+// Panel layout: two columns at the window edges, narrower on small windows so the middle of the
+// view stays visible. `column` 0 = left, 1 = right; `row` 0 = top half, 1 = bottom half.
+void placeNext(int column, int row) {
+  const ImVec2 d = ImGui::GetIO().DisplaySize;
+  const float w = std::min(340.0f, d.x * 0.28f);
+  const float h = std::max(60.0f, (d.y - 30.0f) * 0.5f);
+  const float x = column == 0 ? 10.0f : d.x - w - 10.0f;
+  const float y = 10.0f + float(row) * (h + 10.0f);
+  ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(w, h), ImGuiCond_FirstUseEver);
+}
 
 // Combo over a list of names; returns true when the user picked another entry.
 bool nameCombo(const char* label, int* current, std::span<const std::string_view> names) {
@@ -36,8 +49,7 @@ bool nameCombo(const char* label, int* current, std::span<const std::string_view
 bool drawMaterialPanel(MaterialPanelModel& model, const std::string& scene_path,
                        std::string* status) {
   bool changed = false;
-  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(340, 330), ImGuiCond_FirstUseEver);
+  placeNext(0, 0);
   if (!ImGui::Begin("Material")) {
     ImGui::End();
     return false;
@@ -96,8 +108,7 @@ bool drawMaterialPanel(MaterialPanelModel& model, const std::string& scene_path,
 
 bool drawLightsPanel(LightsPanelModel& model) {
   bool changed = false;
-  ImGui::SetNextWindowPos(ImVec2(10, 350), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(340, 360), ImGuiCond_FirstUseEver);
+  placeNext(0, 1);
   if (!ImGui::Begin("Lights")) {
     ImGui::End();
     return false;
@@ -178,13 +189,12 @@ bool drawLightsPanel(LightsPanelModel& model) {
 
 bool drawRenderingPanel(RenderSettingsModel& model) {
   bool changed = false;
-  const ImVec2 size = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(size.x - 350, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(340, 440), ImGuiCond_FirstUseEver);
+  placeNext(1, 0);
   if (!ImGui::Begin("Rendering")) {
     ImGui::End();
     return false;
   }
+  ImGui::PushItemWidth(ImGui::GetWindowWidth() * 0.5f);  // room for the long labels
   const auto& enums = model.enumFields();
   for (size_t i = 0; i < enums.size(); ++i) {
     int v = enums[i].get(model.settings());
@@ -206,14 +216,13 @@ bool drawRenderingPanel(RenderSettingsModel& model) {
     model.view = render::DebugView(view);
     changed = true;
   }
+  ImGui::PopItemWidth();
   ImGui::End();
   return changed;
 }
 
 void drawStatsPanel(const StatsModel& stats, size_t light_count, const std::string& gpu_name) {
-  const ImVec2 size = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(size.x - 350, 460), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(340, 250), ImGuiCond_FirstUseEver);
+  placeNext(1, 1);
   if (!ImGui::Begin("Stats")) {
     ImGui::End();
     return;
