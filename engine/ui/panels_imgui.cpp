@@ -234,6 +234,13 @@ void drawStatsPanel(const StatsModel& stats, size_t light_count, const std::stri
   ImGui::Text("frame %.2f ms (%.0f fps)  GPU %.3f ms", stats.averageFrameMs(),
               stats.averageFrameMs() > 0 ? 1000.0 / stats.averageFrameMs() : 0.0,
               stats.averageGpuMs());
+  const auto& ft = stats.frameTimes();
+  if (!ft.empty()) {
+    char overlay[64];
+    std::snprintf(overlay, sizeof overlay, "frame ms (last %.2f)", double(ft.back()));
+    ImGui::PlotLines("##frame", ft.data(), int(ft.size()), 0, overlay, 0.0f, FLT_MAX,
+                     ImVec2(-1, 60));
+  }
   if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
     for (const auto& [name, ms] : last.passes) {
       ImGui::TableNextRow();
@@ -243,13 +250,6 @@ void drawStatsPanel(const StatsModel& stats, size_t light_count, const std::stri
       ImGui::Text("%8.3f ms", ms);
     }
     ImGui::EndTable();
-  }
-  const auto& ft = stats.frameTimes();
-  if (!ft.empty()) {
-    char overlay[64];
-    std::snprintf(overlay, sizeof overlay, "frame ms (last %.2f)", double(ft.back()));
-    ImGui::PlotLines("##frame", ft.data(), int(ft.size()), 0, overlay, 0.0f, FLT_MAX,
-                     ImVec2(-1, 60));
   }
   ImGui::End();
 }
