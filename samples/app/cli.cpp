@@ -18,6 +18,7 @@ Commands:
   stability             NaN/Inf/negative sweep over extreme light and material cases
   reference SCENE.json  CPU Monte Carlo ground truth over the GPU's G-buffer
   bench                 light-pass scaling tables (ms, light-pixel evaluations per second)
+  view SCENE.json       interactive viewer: orbit camera, material/lights/rendering panels
 
 Run `halfvec <command> --help` for the options of each command.
 )";
@@ -36,6 +37,7 @@ int runCli(const std::vector<std::string>& args) {
     if (cmd == "stability") return cmdStability(rest);
     if (cmd == "bench") return cmdBench(rest);
     if (cmd == "reference") return cmdReference(rest);
+    if (cmd == "view") return cmdView(rest);
     std::fprintf(stderr, "halfvec: unknown command '%s' (see halfvec --help)\n", cmd.c_str());
     return 2;
   } catch (const UsageError& e) {

@@ -13,6 +13,7 @@ int cmdCompare(const Args& args);
 int cmdStability(const Args& args);
 int cmdBench(const Args& args);
 int cmdReference(const Args& args);
+int cmdView(const Args&);
 
 // Thrown for bad command-line usage; the message is printed with the command's help hint.
 struct UsageError {

@@ -1,0 +1,269 @@
+// ImGui drawing of the panel models (no backend here: imgui.h only).
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+#include "imgui.h"
+#include "scene/enums.hpp"
+#include "ui/panels.hpp"
+
+namespace hv::ui {
+
+namespace {
+
+// Panel layout: two columns at the window edges, narrower on small windows so the middle of the
+// view stays visible. `column` 0 = left, 1 = right; `row` 0 = top half, 1 = bottom half.
+void placeNext(int column, int row) {
+  const ImVec2 d = ImGui::GetIO().DisplaySize;
+  const float w = std::min(340.0f, d.x * 0.28f);
+  const float h = std::max(60.0f, (d.y - 30.0f) * 0.5f);
+  const float x = column == 0 ? 10.0f : d.x - w - 10.0f;
+  const float y = 10.0f + float(row) * (h + 10.0f);
+  ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(w, h), ImGuiCond_FirstUseEver);
+}
+
+// Combo over a list of names; returns true when the user picked another entry.
+bool nameCombo(const char* label, int* current, std::span<const std::string_view> names) {
+  bool changed = false;
+  const std::string preview(*current >= 0 && size_t(*current) < names.size()
+                                ? names[size_t(*current)]
+                                : std::string_view("?"));
+  if (ImGui::BeginCombo(label, preview.c_str())) {
+    for (size_t i = 0; i < names.size(); ++i) {
+      const std::string n(names[i]);
+      const bool sel = int(i) == *current;
+      if (ImGui::Selectable(n.c_str(), sel)) {
+        changed = int(i) != *current;
+        *current = int(i);
+      }
+      if (sel) ImGui::SetItemDefaultFocus();
+    }
+    ImGui::EndCombo();
+  }
+  return changed;
+}
+
+}  // namespace
+
+bool drawMaterialPanel(MaterialPanelModel& model, const std::string& scene_path,
+                       std::string* status) {
+  bool changed = false;
+  placeNext(0, 0);
+  if (!ImGui::Begin("Material")) {
+    ImGui::End();
+    return false;
+  }
+  if (model.count() == 0) {
+    ImGui::TextUnformatted("no materials");
+    ImGui::End();
+    return false;
+  }
+  const Material& cur = model.current();
+  std::string preview = cur.name.empty() ? "(unnamed)" : cur.name;
+  if (ImGui::BeginCombo("material", preview.c_str())) {
+    for (size_t i = 0; i < model.count(); ++i) {
+      const Material& m = model.loaded(int(i));
+      std::string label = (m.name.empty() ? std::string("(unnamed)") : m.name) +
+                          (model.modified(int(i)) ? " *" : "") + "##" + std::to_string(i);
+      if (ImGui::Selectable(label.c_str(), int(i) == model.selected())) model.select(int(i));
+    }
+    ImGui::EndCombo();
+  }
+  Material m = model.current();
+  if (ImGui::ColorEdit3("base color", &m.base_color.x, ImGuiColorEditFlags_Float)) {
+    changed |= model.setBaseColor(m.base_color);
+  }
+  if (ImGui::SliderFloat("metallic", &m.metallic, 0.0f, 1.0f))
+    changed |= model.setMetallic(m.metallic);
+  if (ImGui::SliderFloat("roughness", &m.roughness, 0.0f, 1.0f)) {
+    changed |= model.setRoughness(m.roughness);
+  }
+  if (ImGui::SliderFloat("cavity", &m.cavity, 0.0f, 1.0f)) changed |= model.setCavity(m.cavity);
+  if (ImGui::DragFloat3("emissive", &m.emissive.x, 0.05f, 0.0f, MaterialPanelModel::kMaxEmissive)) {
+    changed |= model.setEmissive(m.emissive);
+  }
+  // Background (0) is not a material's shading model: offer unlit / default_lit.
+  const auto names = enumNames<ShadingModel>().subspan(1);
+  int model_index = int(m.model) - 1;
+  if (nameCombo("shading model", &model_index, names)) {
+    changed |= model.setShadingModel(ShadingModel(model_index + 1));
+  }
+  if (ImGui::Button("Reset")) changed |= model.reset();
+  ImGui::SameLine();
+  if (ImGui::Button("Reset all")) changed |= model.resetAll();
+  ImGui::SameLine();
+  if (ImGui::Button("Save to scene file")) {
+    try {
+      const int n = model.saveMaterials(scene_path);
+      if (status) *status = "saved " + std::to_string(n) + " materials to " + scene_path;
+    } catch (const std::exception& e) {
+      if (status) *status = std::string("save failed: ") + e.what();
+    }
+  }
+  if (status && !status->empty()) ImGui::TextWrapped("%s", status->c_str());
+  ImGui::End();
+  return changed;
+}
+
+bool drawLightsPanel(LightsPanelModel& model) {
+  bool changed = false;
+  placeNext(0, 1);
+  if (!ImGui::Begin("Lights")) {
+    ImGui::End();
+    return false;
+  }
+  ImGui::Text("%zu lights", model.count());
+  for (LightType t : {LightType::Point, LightType::Sphere, LightType::Tube}) {
+    const std::string label = "+ " + std::string(toString(t));
+    ImGui::SameLine();
+    if (ImGui::SmallButton(label.c_str())) {
+      model.add(t);
+      changed = true;
+    }
+  }
+  if (model.count() > 0) {
+    int sel = model.selected();
+    if (ImGui::SliderInt("light", &sel, 0, int(model.count()) - 1)) model.select(sel);
+    if (const Light* cur = model.current()) {
+      Light l = *cur;
+      int type = int(l.type);
+      if (nameCombo("type", &type, enumNames<LightType>()))
+        changed |= model.setType(LightType(type));
+      if (ImGui::DragFloat3("position", &l.position.x, 0.02f))
+        changed |= model.setPosition(l.position);
+      if (ImGui::ColorEdit3("color", &l.color.x, ImGuiColorEditFlags_Float)) {
+        changed |= model.setColor(l.color);
+      }
+      if (ImGui::DragFloat("intensity", &l.intensity, 0.1f, 0.0f, 1e4f)) {
+        changed |= model.setIntensity(l.intensity);
+      }
+      if (ImGui::DragFloat("range", &l.range, 0.05f, 0.01f, 1e3f))
+        changed |= model.setRange(l.range);
+      if (l.type != LightType::Point &&
+          ImGui::DragFloat("radius", &l.radius, 0.005f, 0.0f, 100.0f)) {
+        changed |= model.setRadius(l.radius);
+      }
+      if (l.type == LightType::Tube) {
+        if (ImGui::DragFloat("length", &l.length, 0.01f, 0.0f, 100.0f)) {
+          changed |= model.setLength(l.length);
+        }
+        if (ImGui::DragFloat3("axis", &l.axis.x, 0.01f, -1.0f, 1.0f))
+          changed |= model.setAxis(l.axis);
+      }
+      if (ImGui::Button("Remove")) changed |= model.remove(model.selected());
+      ImGui::SameLine();
+    }
+    if (ImGui::Button("Remove all")) {
+      model.clear();
+      changed = true;
+    }
+  }
+  if (ImGui::CollapsingHeader("Generate random lights")) {
+    LightGenerator& g = model.generator;
+    ImGui::SliderInt("count", &g.count, 1, 4096);
+    ImGui::SliderFloat("point", &g.point_weight, 0.0f, 1.0f);
+    ImGui::SliderFloat("sphere", &g.sphere_weight, 0.0f, 1.0f);
+    ImGui::SliderFloat("tube", &g.tube_weight, 0.0f, 1.0f);
+    ImGui::DragFloat3("box min", &g.box_min.x, 0.05f);
+    ImGui::DragFloat3("box max", &g.box_max.x, 0.05f);
+    ImGui::DragFloatRange2("intensity", &g.intensity_min, &g.intensity_max, 0.1f, 0.0f, 1e4f);
+    ImGui::DragFloat("range##gen", &g.range, 0.05f, 0.01f, 100.0f);
+    ImGui::DragFloat("radius##gen", &g.radius, 0.005f, 0.0f, 10.0f);
+    ImGui::DragFloat("length##gen", &g.length, 0.01f, 0.0f, 10.0f);
+    int seed = int(g.seed);
+    if (ImGui::InputInt("seed", &seed)) g.seed = uint32_t(seed);
+    if (ImGui::Button("Replace")) {
+      model.generate(g, true);
+      changed = true;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Append")) {
+      model.generate(g, false);
+      changed = true;
+    }
+  }
+  ImGui::End();
+  return changed;
+}
+
+bool drawRenderingPanel(RenderSettingsModel& model) {
+  bool changed = false;
+  placeNext(1, 0);
+  if (!ImGui::Begin("Rendering")) {
+    ImGui::End();
+    return false;
+  }
+  ImGui::PushItemWidth(ImGui::GetWindowWidth() * 0.5f);  // room for the long labels
+  const auto& enums = model.enumFields();
+  for (size_t i = 0; i < enums.size(); ++i) {
+    int v = enums[i].get(model.settings());
+    if (nameCombo(enums[i].label, &v, enums[i].names)) changed |= model.setEnum(i, v);
+  }
+  const auto& bools = model.boolFields();
+  for (size_t i = 0; i < bools.size(); ++i) {
+    bool b = model.settings().*(bools[i].member);
+    if (ImGui::Checkbox(bools[i].label, &b)) changed |= model.setBool(i, b);
+  }
+  float exposure = model.settings().exposure;
+  if (ImGui::SliderFloat("exposure", &exposure, 1.0f / 64.0f, 64.0f, "%.3f",
+                         ImGuiSliderFlags_Logarithmic)) {
+    changed |= model.setExposure(exposure);
+  }
+  const auto views = RenderSettingsModel::debugViewNames();
+  int view = int(model.view);
+  if (ImGui::Combo("debug view", &view, views.data(), int(views.size()))) {
+    model.view = render::DebugView(view);
+    changed = true;
+  }
+  ImGui::PopItemWidth();
+  ImGui::End();
+  return changed;
+}
+
+void drawStatsPanel(const StatsModel& stats, size_t light_count, const std::string& gpu_name) {
+  placeNext(1, 1);
+  if (!ImGui::Begin("Stats")) {
+    ImGui::End();
+    return;
+  }
+  const auto& last = stats.last();
+  if (!gpu_name.empty()) ImGui::TextWrapped("%s", gpu_name.c_str());
+  ImGui::Text("%dx%d  %zu lights  G-buffer %d B/px", last.width, last.height, light_count,
+              render::kGBufferBytesPerPixel);
+  ImGui::Text("frame %.2f ms (%.0f fps)  GPU %.3f ms", stats.averageFrameMs(),
+              stats.averageFrameMs() > 0 ? 1000.0 / stats.averageFrameMs() : 0.0,
+              stats.averageGpuMs());
+  const auto& ft = stats.frameTimes();
+  if (!ft.empty()) {
+    char overlay[64];
+    std::snprintf(overlay, sizeof overlay, "frame ms (last %.2f)", double(ft.back()));
+    ImGui::PlotLines("##frame", ft.data(), int(ft.size()), 0, overlay, 0.0f, FLT_MAX,
+                     ImVec2(-1, 60));
+  }
+  if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+    for (const auto& [name, ms] : last.passes) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(name.c_str());
+      ImGui::TableNextColumn();
+      ImGui::Text("%8.3f ms", ms);
+    }
+    ImGui::EndTable();
+  }
+  ImGui::End();
+}
+
+void drawErrorPanel(const std::string& title, const std::string& message) {
+  if (message.empty()) return;
+  const ImVec2 size = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(size.x * 0.5f, size.y - 10), ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+  ImGui::SetNextWindowSize(ImVec2(size.x * 0.6f, 0), ImGuiCond_Always);
+  ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0.35f, 0.05f, 0.05f, 0.95f));
+  ImGui::Begin(title.c_str(), nullptr, ImGuiWindowFlags_NoCollapse);
+  ImGui::TextWrapped("%s", message.c_str());
+  ImGui::End();
+  ImGui::PopStyleColor();
+}
+
+}  // namespace hv::ui

@@ -1,0 +1,356 @@
+// `halfvec view`: interactive viewer. The same Renderer as `render`, drawing into the window's
+// default framebuffer, with the ImGui panels (engine/ui) on top.
+#include "gl/gl.hpp"  // before GLFW, which must not pull in GL/gl.h
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <thread>
+
+#include "app/commands.hpp"
+#include "gl/shader_source.hpp"
+#include "platform/context.hpp"
+#include "render/renderer.hpp"
+#include "scene/scene_loader.hpp"
+#include "ui/imgui_layer.hpp"
+#include "ui/panels.hpp"
+
+namespace hv::app {
+
+namespace {
+constexpr const char* kViewHelp = R"(Usage: halfvec view SCENE.json [options]
+
+Opens SCENE.json in a window with material, lights, rendering and stats panels.
+
+Options:
+  --size WxH            window size (default 1280x720)
+  --frames N            quit after N frames (for tests and timing)
+  --screenshot FILE.png after the last frame, save the window (scene + panels)
+  -h, --help            this text
+
+Controls: left drag orbit, right/middle drag pan, wheel zoom (around the camera target),
+WASD fly (Q/E down/up), F12 save out/view_<n>.png + .pfm, R reload shaders, Esc quit.
+The scene file is reloaded when it changes on disk.
+)";
+
+struct ViewArgs {
+  std::string scene, screenshot;
+  int width = 1280, height = 720, frames = 0;
+};
+
+ViewArgs parse(const Args& args) {
+  ViewArgs r;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= args.size()) throw UsageError{a + " needs a value"};
+      return args[++i];
+    };
+    if (a == "--size") {
+      const std::string v = value();
+      if (std::sscanf(v.c_str(), "%dx%d", &r.width, &r.height) != 2 || r.width <= 0 ||
+          r.height <= 0 || r.width > 16384 || r.height > 16384) {
+        throw UsageError{"--size expects WxH with 1 <= W,H <= 16384, got '" + v + "'"};
+      }
+    } else if (a == "--frames") {
+      r.frames = std::atoi(value().c_str());
+      if (r.frames < 1) throw UsageError{"--frames expects a positive count"};
+    } else if (a == "--screenshot") {
+      r.screenshot = value();
+    } else if (!a.empty() && a[0] == '-') {
+      throw UsageError{"unknown option '" + a + "'"};
+    } else if (r.scene.empty()) {
+      r.scene = a;
+    } else {
+      throw UsageError{"more than one scene file given"};
+    }
+  }
+  if (r.scene.empty()) throw UsageError{"no scene file given"};
+  return r;
+}
+
+double g_scroll = 0.0;  // wheel steps since the last frame (GLFW callback -> main loop)
+
+std::filesystem::file_time_type mtimeOf(const std::string& path) {
+  std::error_code ec;
+  auto t = std::filesystem::last_write_time(path, ec);
+  return ec ? std::filesystem::file_time_type{} : t;
+}
+
+bool sameCamera(const Camera& a, const Camera& b) {
+  return a.position == b.position && a.target == b.target && a.up == b.up &&
+         a.fov_y_deg == b.fov_y_deg && a.near_plane == b.near_plane && a.far_plane == b.far_plane;
+}
+
+// The window's back buffer, row 0 = top.
+ImageRGBA8 readFramebuffer(int w, int h) {
+  ImageRGBA8 img;
+  img.width = w;
+  img.height = h;
+  img.px.resize(size_t(w) * size_t(h) * 4);
+  std::vector<uint8_t> rows(img.px.size());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glReadBuffer(GL_BACK);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
+  const size_t stride = size_t(w) * 4;
+  for (int y = 0; y < h; ++y) {
+    std::copy_n(rows.data() + size_t(h - 1 - y) * stride, stride,
+                img.px.data() + size_t(y) * stride);
+  }
+  for (size_t i = 3; i < img.px.size(); i += 4) img.px[i] = 255;
+  return img;
+}
+
+// Orbit / pan / zoom / fly around Camera::target.
+struct CameraController {
+  double last_x = 0, last_y = 0;
+  bool dragging[3] = {false, false, false};
+
+  void update(GLFWwindow* win, Camera& cam, bool ui_mouse, bool ui_keys, float dt) {
+    double x, y;
+    glfwGetCursorPos(win, &x, &y);
+    const float dx = float(x - last_x), dy = float(y - last_y);
+    last_x = x;
+    last_y = y;
+    glm::vec3 offset = cam.position - cam.target;
+    float dist = glm::length(offset);
+    if (dist < 1e-4f) dist = 1e-4f;
+    const glm::vec3 fwd = -offset / dist;
+    const glm::vec3 right = glm::normalize(glm::cross(fwd, cam.up));
+    const glm::vec3 up = glm::cross(right, fwd);
+    for (int b = 0; b < 3; ++b) {
+      const bool down = glfwGetMouseButton(win, b) == GLFW_PRESS;
+      if (!down)
+        dragging[b] = false;
+      else if (!dragging[b] && !ui_mouse)
+        dragging[b] = true;  // drags start outside the panels
+    }
+    if (dragging[GLFW_MOUSE_BUTTON_LEFT] && (dx != 0 || dy != 0)) {
+      // Yaw about the world up, pitch about the right axis, kept off the poles.
+      const glm::vec3 wup = glm::normalize(cam.up);
+      float yaw = -dx * 0.005f, pitch = -dy * 0.005f;
+      const float elev = std::asin(glm::clamp(glm::dot(offset / dist, wup), -1.0f, 1.0f));
+      pitch = glm::clamp(elev + pitch, -1.5f, 1.5f) - elev;
+      glm::vec3 o = offset / dist;
+      auto rot = [](glm::vec3 v, glm::vec3 axis, float a) {
+        return v * std::cos(a) + glm::cross(axis, v) * std::sin(a) +
+               axis * glm::dot(axis, v) * (1.0f - std::cos(a));
+      };
+      o = rot(o, right, pitch);
+      o = rot(o, wup, yaw);
+      cam.position = cam.target + o * dist;
+    }
+    const bool pan = dragging[GLFW_MOUSE_BUTTON_RIGHT] || dragging[GLFW_MOUSE_BUTTON_MIDDLE];
+    if (pan && (dx != 0 || dy != 0)) {
+      int wh = 1, ww = 1;
+      glfwGetWindowSize(win, &ww, &wh);
+      const float scale = 2.0f * dist * std::tan(glm::radians(cam.fov_y_deg) * 0.5f) / float(wh);
+      const glm::vec3 move = (-dx * right + dy * up) * scale;
+      cam.position += move;
+      cam.target += move;
+    }
+    if (g_scroll != 0.0 && !ui_mouse) {
+      const float nd = glm::clamp(dist * std::pow(0.9f, float(g_scroll)), 0.05f, 500.0f);
+      cam.position = cam.target - fwd * nd;
+    }
+    g_scroll = 0.0;
+    if (!ui_keys) {
+      glm::vec3 v(0.0f);
+      if (glfwGetKey(win, GLFW_KEY_W) == GLFW_PRESS) v += fwd;
+      if (glfwGetKey(win, GLFW_KEY_S) == GLFW_PRESS) v -= fwd;
+      if (glfwGetKey(win, GLFW_KEY_D) == GLFW_PRESS) v += right;
+      if (glfwGetKey(win, GLFW_KEY_A) == GLFW_PRESS) v -= right;
+      if (glfwGetKey(win, GLFW_KEY_E) == GLFW_PRESS) v += up;
+      if (glfwGetKey(win, GLFW_KEY_Q) == GLFW_PRESS) v -= up;
+      if (v != glm::vec3(0.0f)) {
+        const float speed = std::max(dist, 1.0f) * 0.8f *
+                            (glfwGetKey(win, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ? 4.0f : 1.0f);
+        const glm::vec3 move = glm::normalize(v) * speed * dt;
+        cam.position += move;
+        cam.target += move;
+      }
+    }
+  }
+};
+
+// A key's press edge.
+struct KeyEdge {
+  int key;
+  bool was = false;
+  bool pressed(GLFWwindow* w) {
+    const bool now = glfwGetKey(w, key) == GLFW_PRESS;
+    const bool edge = now && !was;
+    was = now;
+    return edge;
+  }
+};
+
+}  // namespace
+
+int cmdView(const Args& args) {
+  for (const auto& a : args) {
+    if (a == "--help" || a == "-h") {
+      std::fputs(kViewHelp, stdout);
+      return 0;
+    }
+  }
+  const ViewArgs va = parse(args);
+  auto scene = std::make_unique<Scene>(loadScene(va.scene));
+  Camera loaded_camera = scene->camera;
+  auto file_time = mtimeOf(va.scene);
+
+  auto ctx = createWindowContext(va.width, va.height, "halfvec view - " + va.scene);
+  GLFWwindow* win = ctx->window();
+  glfwSetScrollCallback(win, [](GLFWwindow*, double, double y) { g_scroll += y; });
+  if (va.frames > 0) glfwSwapInterval(0);  // scripted runs: no vsync wait
+  render::Renderer renderer;
+  renderer.setScene(*scene);
+  ui::ImGuiLayer imgui(win);  // after our callbacks: the backend chains to them
+
+  ui::MaterialPanelModel materials(*scene);
+  ui::LightsPanelModel lights(*scene);
+  ui::RenderSettingsModel settings(*scene);
+  ui::StatsModel stats;
+  std::string save_status, scene_error, shader_error;
+  bool shaders_ok = true;
+  CameraController controller;
+  KeyEdge key_f12{GLFW_KEY_F12}, key_r{GLFW_KEY_R}, key_esc{GLFW_KEY_ESCAPE};
+  const std::string gpu = ctx->renderer();
+  int shot_index = 0;
+
+  auto last = std::chrono::steady_clock::now();
+  auto last_poll = last;
+  int frame = 0;
+  while (!ctx->shouldClose()) {
+    ctx->pollEvents();
+    const glm::ivec2 fb = ctx->framebufferSize();
+    if (fb.x <= 0 || fb.y <= 0) {  // minimized: nothing to draw into
+      glfwWaitEventsTimeout(0.1);
+      last = std::chrono::steady_clock::now();
+      continue;
+    }
+    const auto now = std::chrono::steady_clock::now();
+    const double frame_ms = std::chrono::duration<double, std::milli>(now - last).count();
+    last = now;
+
+    // Scene file changed on disk: reload, keep the last good scene on failure.
+    if (now - last_poll > std::chrono::milliseconds(250)) {
+      last_poll = now;
+      const auto t = mtimeOf(va.scene);
+      if (t != file_time) {
+        file_time = t;
+        try {
+          auto fresh = std::make_unique<Scene>(loadScene(va.scene));
+          const bool camera_edited = !sameCamera(fresh->camera, loaded_camera);
+          loaded_camera = fresh->camera;
+          if (!camera_edited) fresh->camera = scene->camera;  // keep the user's view
+          try {
+            renderer.setScene(*fresh);
+          } catch (...) {
+            renderer.setScene(*scene);
+            throw;
+          }
+          scene = std::move(fresh);
+          materials.attach(*scene);
+          lights.attach(*scene);
+          settings.attach(*scene);
+          scene_error.clear();
+          std::printf("reloaded %s\n", va.scene.c_str());
+        } catch (const std::exception& e) {
+          scene_error = e.what();
+          std::fprintf(stderr, "reload failed: %s\n", e.what());
+        }
+      }
+    }
+
+    imgui.beginFrame();
+    controller.update(win, scene->camera, imgui.wantsMouse(), imgui.wantsKeyboard(),
+                      float(std::min(frame_ms, 100.0) / 1000.0));
+    if (!imgui.wantsKeyboard()) {
+      if (key_esc.pressed(win)) glfwSetWindowShouldClose(win, GLFW_TRUE);
+      if (key_r.pressed(win)) {
+        renderer.programs().clear();
+        shaders_ok = true;
+        shader_error.clear();
+      }
+    }
+
+    if (ui::drawMaterialPanel(materials, va.scene, &save_status)) renderer.updateMaterials();
+    if (ui::drawLightsPanel(lights)) renderer.updateLights();
+    ui::drawRenderingPanel(settings);
+    if (settings.takeNeedsSetScene()) {
+      try {
+        renderer.setScene(*scene);
+      } catch (const std::exception& e) {
+        scene_error = e.what();
+      }
+    }
+    materials.takeDirty();
+    lights.takeDirty();
+    ui::drawStatsPanel(stats, scene->lights.size(), gpu);
+    ui::drawErrorPanel("Scene error (showing the last good scene)", scene_error);
+    ui::drawErrorPanel("Shader error (fix and press R)", shader_error);
+
+    if (shaders_ok) {
+      try {
+        stats.push(renderer.render(fb.x, fb.y, settings.view, GLuint(0)), frame_ms);
+      } catch (const gl::ShaderError& e) {
+        shaders_ok = false;  // retried after the next R
+        shader_error = e.what();
+        std::fprintf(stderr, "shader error: %s\n", e.what());
+      } catch (const std::exception& e) {
+        shaders_ok = false;
+        shader_error = e.what();
+        std::fprintf(stderr, "render error: %s\n", e.what());
+      }
+    }
+    if (!shaders_ok) {
+      glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+      glViewport(0, 0, fb.x, fb.y);
+      glDisable(GL_SCISSOR_TEST);
+      glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+      glClearColor(0.08f, 0.08f, 0.1f, 1.0f);
+      glClear(GL_COLOR_BUFFER_BIT);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, fb.x, fb.y);
+    imgui.endFrame();
+
+    if (key_f12.pressed(win) && shaders_ok) {
+      std::filesystem::create_directories("out");
+      std::string base;
+      do {
+        base = "out/view_" + std::to_string(shot_index++);
+      } while (std::filesystem::exists(base + ".png"));
+      writePng(base + ".png", renderer.readLdr());
+      writePfm(base + ".pfm", renderer.readHdr());
+      save_status = "saved " + base + ".png / .pfm";
+      std::printf("%s\n", save_status.c_str());
+    }
+    ++frame;
+    const bool last_frame = va.frames > 0 && frame >= va.frames;
+    if (last_frame && !va.screenshot.empty()) {
+      const auto dir = std::filesystem::path(va.screenshot).parent_path();
+      if (!dir.empty()) std::filesystem::create_directories(dir);
+      writePng(va.screenshot, readFramebuffer(fb.x, fb.y));
+      std::printf("screenshot: %s\n", std::filesystem::absolute(va.screenshot).string().c_str());
+    }
+    ctx->swapBuffers();
+    if (last_frame) break;
+  }
+  if (!stats.frameTimes().empty()) {
+    std::printf("frames: %d, mean frame %.2f ms, mean GPU %.3f ms (%s)\n", frame,
+                stats.averageFrameMs(), stats.averageGpuMs(), gpu.c_str());
+    for (const auto& [name, ms] : stats.last().passes)
+      std::printf("  %-12s %8.3f ms\n", name.c_str(), ms);
+  }
+  return 0;
+}
+
+}  // namespace hv::app
