@@ -24,6 +24,12 @@ Run `halfvec <command> --help` for the options of each command.
 )";
 }  // namespace
 
+void parseSize(const std::string& v, int& w, int& h) {
+  if (std::sscanf(v.c_str(), "%dx%d", &w, &h) != 2 || w <= 0 || h <= 0 || w > 16384 || h > 16384) {
+    throw UsageError{"--size expects WxH with 1 <= W,H <= 16384, got '" + v + "'"};
+  }
+}
+
 int runCli(const std::vector<std::string>& args) {
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
     std::fputs(kHelp, stdout);

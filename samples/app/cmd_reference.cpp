@@ -47,10 +47,7 @@ int cmdReference(const Args& args) {
       std::fputs(kHelp, stdout);
       return 0;
     } else if (a == "--size") {
-      const std::string v = value();
-      if (std::sscanf(v.c_str(), "%dx%d", &w, &h) != 2 || w <= 0 || h <= 0) {
-        throw UsageError{"--size expects WxH, got '" + v + "'"};
-      }
+      parseSize(value(), w, h);
     } else if (a == "--samples") {
       opt.samples = std::atoi(value().c_str());
       if (opt.samples < 1) throw UsageError{"--samples expects a positive count"};

@@ -48,11 +48,7 @@ RenderArgs parse(const Args& args) {
       return args[++i];
     };
     if (a == "--size") {
-      const std::string v = value();
-      if (std::sscanf(v.c_str(), "%dx%d", &r.width, &r.height) != 2 || r.width <= 0 ||
-          r.height <= 0 || r.width > 16384 || r.height > 16384) {
-        throw UsageError{"--size expects WxH with 1 <= W,H <= 16384, got '" + v + "'"};
-      }
+      parseSize(value(), r.width, r.height);
     } else if (a == "--out") {
       r.out = value();
     } else if (a == "--hdr") {
@@ -123,9 +119,13 @@ int cmdRender(const Args& args) {
   writePng(ra.out, renderer.readLdr());
   if (!ra.hdr.empty()) writePfm(ra.hdr, renderer.readHdr());
 
+  size_t triangles = 0;
+  for (const Object& o : scene.objects) {
+    for (int m : o.meshes) triangles += scene.meshes[m].indices.size() / 3;
+  }
   std::printf("renderer: %s (%s)\n", ctx->renderer().c_str(), ctx->platform().c_str());
   std::printf("scene: %s, %dx%d, %zu lights, %zu triangles\n", ra.scene.c_str(), w, h,
-              scene.lights.size(), size_t(0));
+              scene.lights.size(), triangles);
   std::printf("%-14s %10s\n", "pass", "GPU ms");
   for (auto& [name, ms] : stats.passes) std::printf("%-14s %10.3f\n", name.c_str(), ms);
   std::printf("%-14s %10.3f\n", "total", stats.total_ms);

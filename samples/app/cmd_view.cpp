@@ -52,11 +52,7 @@ ViewArgs parse(const Args& args) {
       return args[++i];
     };
     if (a == "--size") {
-      const std::string v = value();
-      if (std::sscanf(v.c_str(), "%dx%d", &r.width, &r.height) != 2 || r.width <= 0 ||
-          r.height <= 0 || r.width > 16384 || r.height > 16384) {
-        throw UsageError{"--size expects WxH with 1 <= W,H <= 16384, got '" + v + "'"};
-      }
+      parseSize(value(), r.width, r.height);
     } else if (a == "--frames") {
       r.frames = std::atoi(value().c_str());
       if (r.frames < 1) throw UsageError{"--frames expects a positive count"};

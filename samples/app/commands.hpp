@@ -15,6 +15,9 @@ int cmdBench(const Args& args);
 int cmdReference(const Args& args);
 int cmdView(const Args&);
 
+// Parses a --size value "WxH" (1..16384 each); throws UsageError naming the bad value.
+void parseSize(const std::string& value, int& width, int& height);
+
 // Thrown for bad command-line usage; the message is printed with the command's help hint.
 struct UsageError {
   std::string message;
