@@ -12,12 +12,11 @@ namespace {
 constexpr size_t kTileHeaderUints = 4;  // counter + padding before the index array
 }
 
-void Renderer::cullLightsPass(const FrameBlock& frame) {
+void Renderer::cullLightsPass(FrameBlock& frame) {
   gl::ScopedPass pass(timer_, "light_cull");
   applyState(PipelineState{});
   Targets& t = *targets_;
   const uint32_t tiles = frame.viewport.z * frame.viewport.w;
-  const size_t lights = gpu_->lightCount();
   if (!tile_ranges_ || tile_ranges_.id() == 0 ||
       size_t(tiles) * 2 * sizeof(uint32_t) > size_t(tile_ranges_capacity_)) {
     tile_ranges_capacity_ = size_t(tiles) * 2 * sizeof(uint32_t);
@@ -34,9 +33,10 @@ void Renderer::cullLightsPass(const FrameBlock& frame) {
     const uint32_t zero = 0;
     glClearNamedBufferSubData(tile_indices_.id(), GL_R32UI, 0, sizeof(uint32_t), GL_RED_INTEGER,
                               GL_UNSIGNED_INT, &zero);
-    FrameBlock f = frame;
-    f.counts.y = static_cast<uint32_t>(tile_capacity_);
-    glNamedBufferSubData(frame_ubo_.id(), 0, sizeof f, &f);
+    if (frame.counts.y != tile_capacity_) {  // the list was created or grown: tell the shaders
+      frame.counts.y = static_cast<uint32_t>(tile_capacity_);
+      glNamedBufferSubData(frame_ubo_.id(), 0, sizeof frame, &frame);
+    }
     glUseProgram(prog);
     glBindTextureUnit(3, t.depth.id());
     glBindSampler(3, nearest_.id());
@@ -53,20 +53,15 @@ void Renderer::cullLightsPass(const FrameBlock& frame) {
     tile_capacity_ = size_t(total) + total / 4;
     tile_indices_.reset();
   }
-  (void)lights;
   glBindSampler(3, 0);
   glUseProgram(0);
 }
 
-void Renderer::lightPass() {
+void Renderer::lightPass(const FrameBlock& frame) {
   gl::ScopedPass pass(timer_, "light");
   applyState(PipelineState{});
   Targets& t = *targets_;
   if (gpu_->lightCount() == 0) return;
-  FrameBlock f = makeFrameBlock(*scene_, t.width, t.height);
-  f.counts.x = static_cast<uint32_t>(gpu_->lightCount());
-  f.counts.y = static_cast<uint32_t>(tile_capacity_);
-  glNamedBufferSubData(frame_ubo_.id(), 0, sizeof f, &f);
   const GLuint prog =
       programs_.get({"light", {{GL_COMPUTE_SHADER, "passes/light_shade.comp"}}, lightingDefines()});
   glUseProgram(prog);
@@ -81,7 +76,7 @@ void Renderer::lightPass() {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, tile_ranges_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, tile_indices_.id());
   }
-  glDispatchCompute(f.viewport.z, f.viewport.w, 1);
+  glDispatchCompute(frame.viewport.z, frame.viewport.w, 1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   for (GLuint u = 0; u < 4; ++u) glBindSampler(u, 0);
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);

@@ -88,6 +88,7 @@ FrameStats Renderer::render(int width, int height, DebugView view,
   ensureTargets(width, height);
   FrameBlock frame = makeFrameBlock(*scene_, width, height);
   frame.counts.x = static_cast<uint32_t>(gpu_->lightCount());
+  frame.counts.y = static_cast<uint32_t>(tile_capacity_);
   frame.counts.z = static_cast<uint32_t>(view);
   glNamedBufferSubData(frame_ubo_.id(), 0, sizeof frame, &frame);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, frame_ubo_.id());
@@ -96,7 +97,7 @@ FrameStats Renderer::render(int width, int height, DebugView view,
   if (scene_->settings.culling == Culling::Tiled || view == DebugView::LightsPerTile) {
     cullLightsPass(frame);
   }
-  lightPass();
+  lightPass(frame);
   ambientPass();
   tonemapPass(view, present_fbo, width, height);
   applyState(PipelineState{});

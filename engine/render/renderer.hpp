@@ -96,8 +96,8 @@ class Renderer {
   void ensureTargets(int width, int height);
   void setEnvironment(const Scene& scene);
   void gbufferPass(const FrameBlock& frame);
-  void cullLightsPass(const FrameBlock& frame);
-  void lightPass();
+  void cullLightsPass(FrameBlock& frame);  // may grow the list: updates frame.counts.y
+  void lightPass(const FrameBlock& frame);
   void ambientPass();
   void tonemapPass(DebugView view, std::optional<GLuint> present_fbo, int width, int height);
 
