@@ -9,8 +9,10 @@ namespace {
 
 constexpr float kPi = std::numbers::pi_v<float>;
 
+// glTF convention (see tangents.hpp): B = cross(N, T) * w points up the image, i.e. along -dP/dv,
+// because texture v runs down the image.
 float handedness(const glm::vec3& n, const glm::vec3& t, const glm::vec3& dp_dv) {
-  return glm::dot(glm::cross(n, t), dp_dv) >= 0.0f ? 1.0f : -1.0f;
+  return glm::dot(glm::cross(n, t), dp_dv) <= 0.0f ? 1.0f : -1.0f;
 }
 
 // One profile sample of a surface of revolution about +Y: colatitude theta (normal direction),

@@ -36,8 +36,10 @@ void generateTangents(Mesh& mesh, int texcoord) {
       bit = (e2 * d1.x - e1 * d2.x) / det;  // dP/dv
     }
     const glm::vec3 face_n = glm::cross(e1, e2);
-    // The orientation of the UV map relative to the geometric face decides handedness.
-    const int side = glm::dot(glm::cross(face_n, tan), bit) >= 0.0f ? 0 : 1;
+    // The orientation of the UV map relative to the geometric face decides handedness. glTF's v
+    // runs down the image while a normal map's green channel points up it (MikkTSpace's v-up
+    // convention), so B = cross(N, T) * w must point along -dP/dv: side 0 (w = +1) when it does.
+    const int side = glm::dot(glm::cross(face_n, tan), bit) <= 0.0f ? 0 : 1;
     tri_side[t / 3] = uint8_t(side);
     for (int c = 0; c < 3; ++c) {
       const Vertex& v = mesh.vertices[idx[c]];

@@ -131,8 +131,9 @@ TEST(Gltf, LoadsHandBuiltQuad) {
   for (const hv::Vertex& v : m.vertices) {
     EXPECT_NEAR(v.normal.z, 1.0f, 1e-6f);
     EXPECT_NEAR(v.tangent.x, 1.0f, 1e-5f);  // +u is +x
-    // +v (downwards in the image) is -y here: cross(N,T) = +y, so w = -1.
-    EXPECT_EQ(v.tangent.w, -1.0f);
+    // +v (down the image) is -y here; B = cross(N,T) * w must point up the image (+y), and
+    // cross(N,T) = +y already, so w = +1.
+    EXPECT_EQ(v.tangent.w, 1.0f);
   }
   // Child transform: parent translate * child scale.
   const glm::vec4 p = scene.objects[1].transform * glm::vec4(1, 0, 0, 1);

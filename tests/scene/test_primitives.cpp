@@ -28,13 +28,14 @@ void checkMesh(
     ASSERT_GT(glm::length(fn), 0.0f) << "degenerate triangle " << t / 3;
     const glm::vec3 avg_n = a.normal + b.normal + c.normal;
     EXPECT_GT(glm::dot(fn, avg_n), 0.0f) << "triangle " << t / 3 << " is clockwise from outside";
-    // Tangent frame agrees with the UV derivatives: T along +u, cross(N,T)*w along +v.
+    // Tangent frame agrees with the UV derivatives: T along +u, cross(N,T)*w along -v (up the
+    // image: glTF's convention, tangents.hpp).
     const glm::vec2 d1 = b.uv0 - a.uv0, d2 = c.uv0 - a.uv0;
     const float det = d1.x * d2.y - d2.x * d1.y;
     if (std::abs(det) < 1e-12f) continue;
     const glm::vec3 dpdu = (e1 * d2.y - e2 * d1.y) / det, dpdv = (e2 * d1.x - e1 * d2.x) / det;
     EXPECT_GT(glm::dot(glm::vec3(a.tangent), dpdu), 0.0f);
-    EXPECT_GT(glm::dot(glm::cross(a.normal, glm::vec3(a.tangent)) * a.tangent.w, dpdv), 0.0f);
+    EXPECT_LT(glm::dot(glm::cross(a.normal, glm::vec3(a.tangent)) * a.tangent.w, dpdv), 0.0f);
   }
 }
 
