@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
+#include "ibl/ibl.hpp"
 #include "platform/context.hpp"
 #include "render/renderer.hpp"
 #include "scene/enums.hpp"
@@ -130,6 +131,15 @@ int cmdRender(const Args& args) {
   for (auto& [name, ms] : stats.passes) std::printf("%-14s %10.3f\n", name.c_str(), ms);
   std::printf("%-14s %10.3f\n", "total", stats.total_ms);
   std::printf("setup (upload + environment bake): %.1f ms\n", setup_ms);
+  const BakeTimings* bake = renderer.environmentTimings();
+  if (bake) {
+    std::printf(
+        "environment bake (%s): load %.1f, convert %.1f, prefilter %.1f, env BRDF %.1f, "
+        "SH9 %.1f, irradiance %.1f, cache %.1f, total %.1f ms\n",
+        bake->cache_hit ? "cache hit" : "computed", bake->load_ms, bake->convert_ms,
+        bake->prefilter_ms, bake->env_brdf_ms, bake->sh_ms, bake->irradiance_ms, bake->cache_ms,
+        bake->total_ms);
+  }
   std::printf("image: %s\n", std::filesystem::absolute(ra.out).string().c_str());
   if (!ra.hdr.empty()) std::printf("hdr: %s\n", std::filesystem::absolute(ra.hdr).string().c_str());
 
@@ -148,6 +158,18 @@ int cmdRender(const Args& args) {
     j["total_ms"] = stats.total_ms;
     j["setup_ms"] = setup_ms;
     j["gbuffer_bytes_per_pixel"] = render::kGBufferBytesPerPixel;
+    j["triangles"] = triangles;
+    if (bake) {
+      j["environment_bake_ms"] = {{"cache_hit", bake->cache_hit},
+                                  {"load", bake->load_ms},
+                                  {"convert", bake->convert_ms},
+                                  {"prefilter", bake->prefilter_ms},
+                                  {"env_brdf", bake->env_brdf_ms},
+                                  {"sh9", bake->sh_ms},
+                                  {"irradiance", bake->irradiance_ms},
+                                  {"cache", bake->cache_ms},
+                                  {"total", bake->total_ms}};
+    }
     nlohmann::ordered_json counts;
     for (auto t : {LightType::Point, LightType::Sphere, LightType::Tube}) {
       counts[std::string(toString(t))] = std::count_if(scene.lights.begin(), scene.lights.end(),
