@@ -50,11 +50,16 @@ struct EnvSource {
   SkyParams sky;
   ImageRGBf equirect;  // HdrFile: linear radiance, row 0 = top (+Y)
   float intensity = 1.0f;
-  float rotation_deg = 0.0f;  // about +Y, applied to the environment
+  float rotation_deg = 0.0f;     // about +Y, applied to the environment
+  float sky_illuminance = 0.0f;  // Sky: skyDomeIlluminance(sky), computed once by makeEnvSource
   glm::vec3 radiance(glm::vec3 dir) const;
 };
 
+// Horizontal illuminance of the procedural sky's dome (sun excluded).
+float skyDomeIlluminance(const SkyParams& sky);
 // Radiance of the procedural sky (see SkyParams) in direction `dir` (normalized inside).
+// `dome_illuminance` = skyDomeIlluminance(sky) (pass it when evaluating many directions).
+glm::vec3 skyRadiance(const SkyParams& sky, glm::vec3 dir, float dome_illuminance);
 glm::vec3 skyRadiance(const SkyParams& sky, glm::vec3 dir);
 glm::vec3 skySunDirection(const SkyParams& sky);
 

@@ -135,29 +135,38 @@ glm::vec3 skySunDirection(const SkyParams& s) {
   return {std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)};
 }
 
+namespace {
+// The dome: horizon -> zenith blend by a (1 - cos theta)^4 weight on the horizon, i.e. a bright
+// band near the horizon.
+glm::vec3 skyDome(const SkyParams& s, float mu) {
+  const float t = std::pow(1.0f - std::clamp(mu, 0.0f, 1.0f), 4.0f);
+  return glm::mix(s.zenith, s.horizon, t);
+}
+}  // namespace
+
+// E_sky = int L cos over the upper hemisphere = 2 pi int_0^1 L(mu) mu dmu, by a 64-step midpoint
+// rule (exact enough for a smooth quartic blend).
+float skyDomeIlluminance(const SkyParams& s) {
+  float e = 0.0f;
+  for (int i = 0; i < 64; ++i) {
+    const float mu = (float(i) + 0.5f) / 64.0f;
+    e += luminance(skyDome(s, mu)) * mu / 64.0f;
+  }
+  return 2.0f * kPi * e;
+}
+
 glm::vec3 skyRadiance(const SkyParams& s, glm::vec3 dir) {
+  return skyRadiance(s, dir, skyDomeIlluminance(s));
+}
+
+glm::vec3 skyRadiance(const SkyParams& s, glm::vec3 dir, float e_sky) {
   dir = glm::normalize(dir);
-  // Dome: horizon -> zenith blend by (1 - cos theta)^4 weight on the horizon, i.e. a bright band
-  // near the horizon. Its horizontal illuminance E_sky = int L cos over the upper hemisphere =
-  // 2 pi int_0^1 L(mu) mu dmu, computed by a 64-step midpoint rule (cheap, exact enough).
-  auto dome = [&](float mu) {
-    const float t = std::pow(1.0f - std::clamp(mu, 0.0f, 1.0f), 4.0f);
-    return glm::mix(s.zenith, s.horizon, t);
-  };
-  auto skyIlluminance = [&] {
-    float e = 0.0f;
-    for (int i = 0; i < 64; ++i) {
-      const float mu = (float(i) + 0.5f) / 64.0f;
-      e += luminance(dome(mu)) * mu / 64.0f;
-    }
-    return 2.0f * kPi * e;
-  };
+  auto dome = [&](float mu) { return skyDome(s, mu); };
   const glm::vec3 sun_dir = skySunDirection(s);
   const float cos_r = std::cos(glm::radians(s.sun_angular_radius_deg));
   const float sun_omega = 2.0f * kPi * (1.0f - cos_r);
   const bool in_sun = glm::dot(dir, sun_dir) >= cos_r;
   if (!in_sun && dir.y >= 0.0f) return dome(dir.y);
-  const float e_sky = skyIlluminance();
   const float e_sun = s.sun_to_sky * e_sky;  // normal illuminance of the sun
   const glm::vec3 sun_chroma = s.sun_color / std::max(luminance(s.sun_color), 1e-6f);
   if (in_sun) return sun_chroma * (e_sun / sun_omega);
@@ -177,7 +186,7 @@ glm::vec3 EnvSource::radiance(glm::vec3 dir) const {
     case EnvironmentKind::Uniform:
       return color * intensity;
     case EnvironmentKind::Sky:
-      return skyRadiance(sky, d) * intensity;
+      return skyRadiance(sky, d, sky_illuminance) * intensity;
     case EnvironmentKind::HdrFile: {
       const glm::vec2 uv = equirectUV(d);
       const int w = equirect.width, h = equirect.height;
@@ -201,6 +210,7 @@ EnvSource makeEnvSource(const Environment& env, const SkyParams& sky) {
   src.kind = env.kind;
   src.color = env.color;
   src.sky = sky;
+  src.sky_illuminance = skyDomeIlluminance(sky);
   src.intensity = env.intensity;
   src.rotation_deg = env.rotation_deg;
   if (env.kind == EnvironmentKind::None)
