@@ -50,8 +50,9 @@ struct EnvSource {
   SkyParams sky;
   ImageRGBf equirect;  // HdrFile: linear radiance, row 0 = top (+Y)
   float intensity = 1.0f;
-  float rotation_deg = 0.0f;     // about +Y, applied to the environment
-  float sky_illuminance = 0.0f;  // Sky: skyDomeIlluminance(sky), computed once by makeEnvSource
+  float rotation_deg = 0.0f;  // about +Y, applied to the environment
+  float sky_illuminance =
+      0.0f;  // Sky: skyDomeIlluminance(sky), cached by makeEnvSource; 0 = compute per call
   glm::vec3 radiance(glm::vec3 dir) const;
 };
 

@@ -186,7 +186,10 @@ glm::vec3 EnvSource::radiance(glm::vec3 dir) const {
     case EnvironmentKind::Uniform:
       return color * intensity;
     case EnvironmentKind::Sky:
-      return skyRadiance(sky, d, sky_illuminance) * intensity;
+      // A source built by hand (not makeEnvSource) has no cached dome illuminance yet.
+      return skyRadiance(sky, d,
+                         sky_illuminance > 0.0f ? sky_illuminance : skyDomeIlluminance(sky)) *
+             intensity;
     case EnvironmentKind::HdrFile: {
       const glm::vec2 uv = equirectUV(d);
       const int w = equirect.width, h = equirect.height;
