@@ -234,12 +234,14 @@ void drawStatsPanel(const StatsModel& stats, size_t light_count, const std::stri
   ImGui::Text("frame %.2f ms (%.0f fps)  GPU %.3f ms", stats.averageFrameMs(),
               stats.averageFrameMs() > 0 ? 1000.0 / stats.averageFrameMs() : 0.0,
               stats.averageGpuMs());
+  // Frame-time graph: explicit 0..1.25*max scale (auto-scaling with a flat history collapses the
+  // range to nothing), label above the plot rather than an overlay.
   const auto& ft = stats.frameTimes();
-  if (!ft.empty()) {
-    char overlay[64];
-    std::snprintf(overlay, sizeof overlay, "frame ms (last %.2f)", double(ft.back()));
-    ImGui::PlotLines("##frame", ft.data(), int(ft.size()), 0, overlay, 0.0f, FLT_MAX,
-                     ImVec2(-1, 60));
+  if (ft.size() >= 2) {
+    const float top = *std::max_element(ft.begin(), ft.end());
+    ImGui::Text("frame ms, last %zu frames (max %.1f)", ft.size(), double(top));
+    ImGui::PlotLines("##frame", ft.data(), int(ft.size()), 0, nullptr, 0.0f,
+                     std::max(top * 1.25f, 1e-3f), ImVec2(ImGui::GetContentRegionAvail().x, 60));
   }
   if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
     for (const auto& [name, ms] : last.passes) {
