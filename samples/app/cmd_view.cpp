@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "app/commands.hpp"
+#include "app/scene_reload.hpp"
 #include "gl/shader_source.hpp"
 #include "platform/context.hpp"
 #include "render/renderer.hpp"
@@ -71,17 +72,6 @@ ViewArgs parse(const Args& args) {
 }
 
 double g_scroll = 0.0;  // wheel steps since the last frame (GLFW callback -> main loop)
-
-std::filesystem::file_time_type mtimeOf(const std::string& path) {
-  std::error_code ec;
-  auto t = std::filesystem::last_write_time(path, ec);
-  return ec ? std::filesystem::file_time_type{} : t;
-}
-
-bool sameCamera(const Camera& a, const Camera& b) {
-  return a.position == b.position && a.target == b.target && a.up == b.up &&
-         a.fov_y_deg == b.fov_y_deg && a.near_plane == b.near_plane && a.far_plane == b.far_plane;
-}
 
 // The window's back buffer, row 0 = top.
 ImageRGBA8 readFramebuffer(int w, int h) {
@@ -197,16 +187,16 @@ int cmdView(const Args& args) {
     }
   }
   const ViewArgs va = parse(args);
-  auto scene = std::make_unique<Scene>(loadScene(va.scene));
-  Camera loaded_camera = scene->camera;
-  auto file_time = mtimeOf(va.scene);
+  // Load before opening a window: a bad scene file fails without one.
+  (void)loadScene(va.scene);
 
   auto ctx = createWindowContext(va.width, va.height, "halfvec view - " + va.scene);
   GLFWwindow* win = ctx->window();
   glfwSetScrollCallback(win, [](GLFWwindow*, double, double y) { g_scroll += y; });
   if (va.frames > 0) glfwSwapInterval(0);  // scripted runs: no vsync wait
   render::Renderer renderer;
-  renderer.setScene(*scene);
+  SceneReloader reloader(va.scene, renderer);
+  Scene* scene = &reloader.scene();
   ui::ImGuiLayer imgui(win);  // after our callbacks: the backend chains to them
 
   ui::MaterialPanelModel materials(*scene);
@@ -238,31 +228,13 @@ int cmdView(const Args& args) {
     // Scene file changed on disk: reload, keep the last good scene on failure.
     if (now - last_poll > std::chrono::milliseconds(250)) {
       last_poll = now;
-      const auto t = mtimeOf(va.scene);
-      if (t != file_time) {
-        file_time = t;
-        try {
-          auto fresh = std::make_unique<Scene>(loadScene(va.scene));
-          const bool camera_edited = !sameCamera(fresh->camera, loaded_camera);
-          loaded_camera = fresh->camera;
-          if (!camera_edited) fresh->camera = scene->camera;  // keep the user's view
-          try {
-            renderer.setScene(*fresh);
-          } catch (...) {
-            renderer.setScene(*scene);
-            throw;
-          }
-          scene = std::move(fresh);
-          materials.attach(*scene);
-          lights.attach(*scene);
-          settings.attach(*scene);
-          scene_error.clear();
-          std::printf("reloaded %s\n", va.scene.c_str());
-        } catch (const std::exception& e) {
-          scene_error = e.what();
-          std::fprintf(stderr, "reload failed: %s\n", e.what());
-        }
+      if (reloader.poll()) {
+        scene = &reloader.scene();
+        materials.attach(*scene);
+        lights.attach(*scene);
+        settings.attach(*scene);
       }
+      scene_error = reloader.error();
     }
 
     imgui.beginFrame();
