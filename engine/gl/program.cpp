@@ -7,6 +7,8 @@
 #include <optional>
 #include <sstream>
 
+#include <unistd.h>
+
 #include "gl/log.hpp"
 
 namespace hv::gl {
@@ -186,7 +188,10 @@ bool readBinary(const fs::path& path, const BinaryKey& key, BinaryBlob& blob, st
 
 void writeBinary(const fs::path& path, const BinaryKey& key, const BinaryBlob& blob) {
   fs::create_directories(path.parent_path());
-  const fs::path tmp = path.string() + ".tmp" + std::to_string(std::rand());
+  // Unique per process and write: parallel runs (ctest -j) never share a temporary file.
+  static int counter = 0;
+  const fs::path tmp =
+      path.string() + ".tmp" + std::to_string(getpid()) + "_" + std::to_string(counter++);
   {
     std::ofstream o(tmp, std::ios::binary | std::ios::trunc);
     if (!o) throw ShaderError("program binary cache '" + tmp.string() + "': cannot open");

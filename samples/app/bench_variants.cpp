@@ -44,7 +44,10 @@ int benchVariants(int w, int h, int frames) {
       "renderer: %s, %dx%d, median of %d frames (specialized and uber frames interleaved; "
       "binary cache off)\n",
       ctx->renderer().c_str(), w, h, frames);
-  std::printf("Absolute times are noisy on a shared machine: compare the ratios.\n\n");
+  std::printf(
+      "Absolute times are noisy on a shared machine: compare the ratios. Compile times "
+      "may come from the driver's own shader cache (Mesa: MESA_SHADER_CACHE_DISABLE=true "
+      "for cold compiles).\n\n");
   std::vector<std::filesystem::path> files;
   for (const auto& e : std::filesystem::directory_iterator(HV_SAMPLES_DIR)) {
     if (e.path().extension() == ".json") files.push_back(e.path());
