@@ -259,17 +259,8 @@ fs::path ProgramCache::binaryCachePath(const ProgramDesc& desc) const {
   return cacheFile(binary_dir_, binaryKey(driver_, desc, expandAll(desc)));
 }
 
-GLuint ProgramCache::get(const ProgramDesc& desc) {
-  const std::string key = desc.key();
-  if (auto it = programs_.find(key); it != programs_.end()) {
-    variants_[it->second.second].last_frame = frame_;
-    return it->second.first.id();
-  }
-  VariantInfo info;
-  info.name = desc.name;
-  info.key = key;
-  info.defines = defineKey(desc.defines);
-  for (const auto& s : desc.stages) info.stages.push_back(s.path);
+std::vector<std::string> ProgramCache::reasonsFor(const ProgramDesc& desc) const {
+  std::vector<std::string> out;
   for (const auto& d : desc.defines) {
     std::string line = d.name + "=" + d.value;
     if (auto r = desc.reasons.find(d.name); r != desc.reasons.end()) {
@@ -278,8 +269,30 @@ GLuint ProgramCache::get(const ProgramDesc& desc) {
                dr != define_reasons_.end() && dr->second.first == d.value) {
       line += ": " + dr->second.second;
     }
-    info.reasons.push_back(line);
+    out.push_back(std::move(line));
   }
+  return out;
+}
+
+GLuint ProgramCache::get(const ProgramDesc& desc) {
+  const std::string key = desc.key();
+  if (auto it = programs_.find(key); it != programs_.end()) {
+    VariantInfo& info = variants_[it->second.second];
+    info.last_frame = frame_;
+    // The scene changed since (e.g. more lights of a type present): same code, new reasons.
+    if (info.reasons_generation != reasons_generation_) {
+      info.reasons = reasonsFor(desc);
+      info.reasons_generation = reasons_generation_;
+    }
+    return it->second.first.id();
+  }
+  VariantInfo info;
+  info.name = desc.name;
+  info.key = key;
+  info.defines = defineKey(desc.defines);
+  for (const auto& s : desc.stages) info.stages.push_back(s.path);
+  info.reasons = reasonsFor(desc);
+  info.reasons_generation = reasons_generation_;
   info.last_frame = frame_;
 
   const auto sources = expandAll(desc);

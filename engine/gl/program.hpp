@@ -53,6 +53,7 @@ struct VariantInfo {
   bool from_binary_cache = false;
   bool binary_saved = false;  // written to the binary cache this run
   uint64_t last_frame = 0;    // the frame (ProgramCache::beginFrame count) it was last used in
+  uint64_t reasons_generation = 0;  // the setDefineReasons call the reasons were written after
 };
 
 // Where the binary cache lives: $HV_CACHE_DIR, else $XDG_CACHE_HOME/halfvec, else
@@ -69,9 +70,11 @@ class ProgramCache {
   size_t size() const { return programs_.size(); }
 
   // Default reasons for defines of programs whose desc gives none: NAME -> (VALUE, why); used
-  // when the program's value matches. Replaces the previous table.
+  // when the program's value matches. Replaces the previous table; a cached program's reasons
+  // are rewritten (from its desc and this table) the next time it is used.
   void setDefineReasons(std::map<std::string, std::pair<std::string, std::string>> reasons) {
     define_reasons_ = std::move(reasons);
+    ++reasons_generation_;
   }
 
   // Starts a frame: variants() entries whose last_frame equals frame() were used in it.
@@ -101,6 +104,8 @@ class ProgramCache {
   std::string driver_;  // GL_VENDOR|GL_RENDERER|GL_VERSION
   size_t hits_ = 0, misses_ = 0;
   std::map<std::string, std::pair<std::string, std::string>> define_reasons_;
+  uint64_t reasons_generation_ = 0;
+  std::vector<std::string> reasonsFor(const ProgramDesc& desc) const;
 };
 
 }  // namespace hv::gl

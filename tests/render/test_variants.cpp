@@ -311,6 +311,16 @@ TEST(Variants, ManifestListsTheFramesProgramsWithReasons) {
   ASSERT_NE(floor, nullptr) << floor_name;
   EXPECT_EQ(reason(*floor, "HV_MAT_NORMAL_MAP"), "HV_MAT_NORMAL_MAP=1: material floor");
 
+  // One more sphere light: the same program (same defines), its reason updated.
+  s.lights.push_back(s.lights[1]);
+  r.updateLights();
+  r.render(32, 32);
+  const render::Manifest m2 = r.manifest();
+  const auto* light2 = findProgram(m2, "light_cull");
+  ASSERT_NE(light2, nullptr);
+  EXPECT_EQ(light2->key, light->key);
+  EXPECT_EQ(reason(*light2, "HV_HAS_SPHERE_LIGHTS"), "HV_HAS_SPHERE_LIGHTS=1: 2 sphere lights");
+
   // A program not used in the last frame leaves the manifest: the debug view's.
   r.render(32, 32, render::DebugView::Normal);
   EXPECT_NE(findProgram(r.manifest(), "debug_view"), nullptr);
