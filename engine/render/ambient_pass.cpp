@@ -67,15 +67,8 @@ void Renderer::ambientPass() {
   gl::ScopedPass pass(timer_, "ambient");
   applyState(PipelineState{});
   Targets& t = *targets_;
-  const RenderSettings& s = scene_->settings;
-  gl::DefineSet defines;
-  for (auto& [k, v] : brdfDefines(s)) defines.push_back({k, v});
-  defines.push_back({"HV_ENV_BRDF_ANALYTIC", s.env_brdf == EnvBrdf::Analytic ? "1" : "0"});
-  defines.push_back({"HV_ENERGY_COMPENSATION", s.energy_compensation ? "1" : "0"});
-  defines.push_back({"HV_IRRADIANCE_CUBEMAP", s.irradiance == Irradiance::Cubemap ? "1" : "0"});
-  defines.push_back({"HV_SPECULAR_OCCLUSION", s.specular_occlusion ? "1" : "0"});
-  const GLuint prog =
-      programs_.get({"ambient", {{GL_COMPUTE_SHADER, "passes/ambient.comp"}}, defines});
+  // Defines from the variant key: environment presence, shading models, IBL options.
+  const GLuint prog = programs_.get(ambient_desc_);
   glUseProgram(prog);
   const GLuint inputs[4] = {t.base_cavity.id(), t.material.id(), t.normal.id(), t.depth.id()};
   for (GLuint u = 0; u < 4; ++u) {

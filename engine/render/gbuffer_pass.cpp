@@ -1,5 +1,6 @@
 // G-buffer pass. In: the scene's geometry, materials, textures. Out: base color + cavity,
 // metallic/roughness/model, octahedral normal, reversed-Z depth, and emissive in the HDR target.
+// One program per material variant of the scene's VariantKey (docs/variants.md).
 #include <glm/gtc/type_ptr.hpp>
 
 #include "render/pipeline_state.hpp"
@@ -27,16 +28,21 @@ void Renderer::gbufferPass(const FrameBlock&) {
   const float far_depth = 0.0f;  // reversed Z clears to 0 (infinity)
   glClearNamedFramebufferfv(t.gbuffer.id(), GL_DEPTH, 0, &far_depth);
 
-  const GLuint prog = programs_.get(
-      {"gbuffer",
-       {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "passes/gbuffer.frag"}},
-       {}});
-  glUseProgram(prog);
   glBindVertexArray(gpu_->vertexArray());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, gpu_->materialBuffer());
   int bound_material = -1;
+  int bound_variant = -1;
   bool culling = true;
-  for (const DrawItem& d : gpu_->draws()) {
+  const auto& draws = gpu_->draws();
+  // draw_order_ groups the draws by material variant: one program switch per variant.
+  for (size_t di : draw_order_) {
+    const DrawItem& d = draws[di];
+    const int variant = key_.material_variant[size_t(d.material)];
+    if (variant != bound_variant) {
+      bound_variant = variant;
+      glUseProgram(programs_.get(gbuffer_descs_.at(size_t(variant))));
+      bound_material = -1;  // uniforms are per program
+    }
     const glm::mat4& model = scene_->objects[d.object].transform;
     const glm::mat4 normal_matrix = glm::transpose(glm::inverse(model));
     glUniformMatrix4fv(0, 1, GL_FALSE, glm::value_ptr(model));

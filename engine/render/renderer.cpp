@@ -2,11 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
 
 #include "render/pipeline_state.hpp"
 #include "render/targets.hpp"
-#include "shading/brdf.hpp"
+#include "scene/enums.hpp"
 #include "shading/light_gpu.hpp"
 #include "shading/shading.hpp"
 
@@ -32,6 +33,7 @@ const char* toString(DebugView v) {
 Renderer::Renderer() : targets_(std::make_unique<Targets>()) {
   frame_ubo_ = gl::createBuffer("frame uniforms", sizeof(FrameBlock));
   empty_vao_ = gl::createVertexArray("fullscreen triangle");
+  programs_.setBinaryCacheDir(gl::defaultProgramCacheDir());
   nearest_ = gl::createSampler("nearest clamp");
   glSamplerParameteri(nearest_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glSamplerParameteri(nearest_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -45,23 +47,83 @@ void Renderer::setScene(const Scene& scene) {
   scene_ = &scene;
   gpu_ = std::make_unique<GpuScene>(scene);
   setEnvironment(scene);
+  refreshVariants();
 }
 
 void Renderer::updateMaterials() {
   if (gpu_) gpu_->updateMaterials(*scene_);
+  if (scene_) refreshVariants();
 }
 
 void Renderer::updateLights() {
   if (gpu_) gpu_->updateLights(*scene_);
+  if (scene_) refreshVariants();
 }
 
 gl::DefineSet Renderer::lightingDefines() const {
+  return light_defines_;
+}
+
+namespace {
+gl::DefineSet toDefineSet(const std::vector<KeyDefine>& defs,
+                          std::map<std::string, std::string>* reasons = nullptr) {
   gl::DefineSet d;
-  for (auto& [k, v] : brdfDefines(scene_->settings)) d.push_back({k, v});
-  for (auto& [k, v] : lightTypeDefines(scene_->lights)) d.push_back({k, v});
-  d.push_back(
-      {"HV_CULLING_BRUTE_FORCE", scene_->settings.culling == Culling::BruteForce ? "1" : "0"});
+  for (const KeyDefine& k : defs) {
+    d.push_back({k.name, k.value});
+    if (reasons) (*reasons)[k.name] = k.why;
+  }
   return d;
+}
+}  // namespace
+
+void Renderer::refreshVariants() {
+  key_ = deriveVariantKey(*scene_);
+  key_settings_ = scene_->settings;
+  gbuffer_descs_.clear();
+  for (size_t v = 0; v < key_.material_variants.size(); ++v) {
+    gl::ProgramDesc d{
+        "gbuffer",
+        {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "passes/gbuffer.frag"}},
+        {}};
+    d.name = key_.uber ? "gbuffer uber" : "gbuffer " + key_.material_variants[v].text();
+    d.defines = toDefineSet(gbufferDefines(key_, v, *scene_), &d.reasons);
+    gbuffer_descs_.push_back(std::move(d));
+  }
+  ambient_desc_ = {"ambient", {{GL_COMPUTE_SHADER, "passes/ambient.comp"}}, {}};
+  ambient_desc_.defines = toDefineSet(ambientDefines(key_, *scene_), &ambient_desc_.reasons);
+  // The light passes build their own descriptions from lightingDefines(); their reasons go to
+  // the cache's table.
+  const auto light = lightDefines(key_, *scene_);
+  light_defines_ = toDefineSet(light);
+  std::map<std::string, std::pair<std::string, std::string>> reasons;
+  for (const KeyDefine& k : light) reasons[k.name] = {k.value, k.why};
+  const RenderSettings& s = scene_->settings;
+  reasons["HV_TONEMAP"] = {std::to_string(int(s.tone_map)),
+                           "settings.tone_map = " + std::string(toString(s.tone_map))};
+  reasons["HV_GAMMA"] = {std::to_string(int(s.gamma)),
+                         "settings.gamma = " + std::string(toString(s.gamma))};
+  programs_.setDefineReasons(std::move(reasons));
+  // Draws grouped by program, then by material (fewer program and texture switches).
+  const auto& draws = gpu_->draws();
+  draw_order_.resize(draws.size());
+  std::iota(draw_order_.begin(), draw_order_.end(), size_t(0));
+  std::stable_sort(draw_order_.begin(), draw_order_.end(), [&](size_t a, size_t b) {
+    const int va = key_.material_variant[size_t(draws[a].material)];
+    const int vb = key_.material_variant[size_t(draws[b].material)];
+    return va != vb ? va < vb : draws[a].material < draws[b].material;
+  });
+}
+
+Manifest Renderer::manifest() const {
+  Manifest m;
+  m.key = key_.text();
+  m.binary_cache = programs_.binaryCacheStatus();
+  m.binary_hits = programs_.binaryHits();
+  m.binary_misses = programs_.binaryMisses();
+  for (const auto& v : programs_.variants()) {
+    if (v.last_frame == programs_.frame()) m.programs.push_back(v);
+  }
+  return m;
 }
 
 void Renderer::ensureTargets(int w, int h) {
@@ -86,6 +148,8 @@ FrameStats Renderer::render(int width, int height, DebugView view,
   if (!scene_) throw gl::GlError("Renderer::render called before setScene");
   if (width <= 0 || height <= 0) return {};
   ensureTargets(width, height);
+  if (!(scene_->settings == key_settings_)) refreshVariants();  // edited in place (viewer)
+  programs_.beginFrame();
   FrameBlock frame = makeFrameBlock(*scene_, width, height);
   frame.counts.x = static_cast<uint32_t>(gpu_->lightCount());
   frame.counts.y = static_cast<uint32_t>(tile_capacity_);

@@ -13,6 +13,7 @@
 #include "image/image.hpp"
 #include "render/frame_data.hpp"
 #include "render/gpu_scene.hpp"
+#include "render/variant_key.hpp"
 #include "scene/scene.hpp"
 
 namespace hv {
@@ -49,6 +50,15 @@ struct GBufferReadback {
   std::vector<float> metallic, roughness, cavity, depth;
   std::vector<glm::vec3> normal;
   std::vector<uint32_t> model;
+};
+
+// What was compiled for the scene and why (docs/variants.md): `render --stats` and the viewer's
+// stats panel print it.
+struct Manifest {
+  std::string key;           // VariantKey::text()
+  std::string binary_cache;  // ProgramCache::binaryCacheStatus()
+  size_t binary_hits = 0, binary_misses = 0;
+  std::vector<gl::VariantInfo> programs;  // the programs the last frame used, in compile order
 };
 
 constexpr int kGBufferBytesPerPixel = 16;  // RGBA8 + RGBA8 + RG16 + D32F (docs/gbuffer.md)
@@ -88,8 +98,17 @@ class Renderer {
 
   const gl::ProgramCache& programs() const { return programs_; }
   gl::ProgramCache& programs() { return programs_; }
-  // Defines every light/ambient program of the current scene is compiled with.
+  // Defines every light-culling and light program of the current scene is compiled with (from
+  // the variant key: BRDF terms, light options, light types present, culling).
   gl::DefineSet lightingDefines() const;
+  // The scene's variant key (recomputed by setScene, updateMaterials, updateLights).
+  const VariantKey& variantKey() const { return key_; }
+  // The programs of the last rendered frame with their keys, reasons and compile times.
+  Manifest manifest() const;
+  // The program descriptions the key gives the G-buffer (one per material variant) and ambient
+  // passes; for tests that inspect the generated source.
+  const std::vector<gl::ProgramDesc>& gbufferPrograms() const { return gbuffer_descs_; }
+  const gl::ProgramDesc& ambientProgram() const { return ambient_desc_; }
 
  private:
   struct Targets;
@@ -100,6 +119,14 @@ class Renderer {
   void lightPass(const FrameBlock& frame);
   void ambientPass();
   void tonemapPass(DebugView view, std::optional<GLuint> present_fbo, int width, int height);
+  void refreshVariants();  // key, program descriptions, draw order
+
+  VariantKey key_;
+  RenderSettings key_settings_;                 // the scene settings key_ was derived from
+  std::vector<gl::ProgramDesc> gbuffer_descs_;  // per material variant
+  gl::ProgramDesc ambient_desc_;
+  gl::DefineSet light_defines_;
+  std::vector<size_t> draw_order_;  // gpu_->draws() indices grouped by variant, then material
 
   const Scene* scene_ = nullptr;
   std::unique_ptr<GpuScene> gpu_;

@@ -164,6 +164,8 @@ struct RenderSettings {
   bool energy_compensation = false;
   Irradiance irradiance = Irradiance::SH9;
   bool specular_occlusion = false;
+  bool uber = false;  // compile every feature in, chosen at run time (docs/variants.md)
+  bool operator==(const RenderSettings&) const = default;
 };
 
 struct Scene {

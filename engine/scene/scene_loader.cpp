@@ -450,7 +450,7 @@ RenderSettings parseSettings(const Ctx& ctx, const json& j) {
   Obj o(ctx, j, "/settings",
         {"width", "height", "exposure", "tone_map", "gamma", "dither", "brdf", "falloff_plus_one",
          "sphere_diffuse", "sphere_normalization", "tube_specular", "tube_normalization", "culling",
-         "env_brdf", "energy_compensation", "irradiance", "specular_occlusion"});
+         "env_brdf", "energy_compensation", "irradiance", "specular_occlusion", "uber"});
   RenderSettings s;
   s.width = o.integer("width", s.width, 1, 16384);
   s.height = o.integer("height", s.height, 1, 16384);
@@ -476,6 +476,7 @@ RenderSettings parseSettings(const Ctx& ctx, const json& j) {
   s.energy_compensation = o.boolean("energy_compensation", s.energy_compensation);
   s.irradiance = o.enumeration("irradiance", s.irradiance);
   s.specular_occlusion = o.boolean("specular_occlusion", s.specular_occlusion);
+  s.uber = o.boolean("uber", s.uber);
   return s;
 }
 

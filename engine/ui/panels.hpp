@@ -204,7 +204,10 @@ bool drawMaterialPanel(MaterialPanelModel& model, const std::string& scene_path,
                        std::string* status);
 bool drawLightsPanel(LightsPanelModel& model);
 bool drawRenderingPanel(RenderSettingsModel& model);
-void drawStatsPanel(const StatsModel& stats, size_t light_count, const std::string& gpu_name);
+// With a manifest: a "Programs" section listing the last frame's programs, their keys, why each
+// define is on and their compile times (docs/variants.md).
+void drawStatsPanel(const StatsModel& stats, size_t light_count, const std::string& gpu_name,
+                    const render::Manifest* manifest = nullptr);
 // A red error box; nothing when `message` is empty.
 void drawErrorPanel(const std::string& title, const std::string& message);
 

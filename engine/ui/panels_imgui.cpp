@@ -221,7 +221,8 @@ bool drawRenderingPanel(RenderSettingsModel& model) {
   return changed;
 }
 
-void drawStatsPanel(const StatsModel& stats, size_t light_count, const std::string& gpu_name) {
+void drawStatsPanel(const StatsModel& stats, size_t light_count, const std::string& gpu_name,
+                    const render::Manifest* manifest) {
   placeNext(1, 1);
   if (!ImGui::Begin("Stats")) {
     ImGui::End();
@@ -252,6 +253,24 @@ void drawStatsPanel(const StatsModel& stats, size_t light_count, const std::stri
       ImGui::Text("%8.3f ms", ms);
     }
     ImGui::EndTable();
+  }
+  if (manifest && ImGui::CollapsingHeader("Programs (variant manifest)")) {
+    ImGui::TextWrapped("key: %s", manifest->key.c_str());
+    ImGui::TextWrapped("binary cache: %s (%zu hits, %zu misses)", manifest->binary_cache.c_str(),
+                       manifest->binary_hits, manifest->binary_misses);
+    int id = 0;
+    for (const auto& p : manifest->programs) {
+      ImGui::PushID(id++);
+      const double ms = p.from_binary_cache ? p.cache_load_ms : p.compile_ms + p.link_ms;
+      if (ImGui::TreeNode("program", "%s  %.1f ms%s", p.name.c_str(), ms,
+                          p.from_binary_cache ? " (binary cache)" : "")) {
+        if (!p.from_binary_cache)
+          ImGui::Text("compile %.1f ms, link %.1f ms", p.compile_ms, p.link_ms);
+        for (const auto& r : p.reasons) ImGui::BulletText("%s", r.c_str());
+        ImGui::TreePop();
+      }
+      ImGui::PopID();
+    }
   }
   ImGui::End();
 }

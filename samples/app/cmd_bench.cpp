@@ -23,6 +23,9 @@ Light-pass benchmark on a 40 m x 40 m floor seen from above at an angle, lights 
 the median light_cull and light pass GPU ms over N frames and light-pixel evaluations per
 second (evaluations = sum over lit pixels of the lights in the pixel's tile list), then tiled vs
 brute force at 1,024 lights. Absolute times are noisy on a shared machine: compare ratios.
+
+  --variants   instead: programs specialized to the scene vs the uber build, GPU ms per pass on
+               every scene of samples/scenes, as a markdown table (--quick: at most 640x360)
 )";
 
 constexpr float kFloor = 40.0f;
@@ -106,6 +109,7 @@ void header() {
 int cmdBench(const Args& args) {
   int w = 1280, h = 720, frames = 5, max_lights = 16384;
   bool quick = false;
+  bool variants = false;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a == "--help" || a == "-h") {
@@ -121,10 +125,15 @@ int cmdBench(const Args& args) {
       max_lights = std::atoi(args[++i].c_str());
     } else if (a == "--quick") {
       quick = true;
+    } else if (a == "--variants") {
+      variants = true;
     } else {
       throw UsageError{"unknown option '" + a + "'"};
     }
   }
+  if (variants)
+    return quick ? benchVariants(std::min(w, 640), std::min(h, 360), frames)
+                 : benchVariants(w, h, frames);
   auto ctx = createHeadlessContext();
   std::printf("renderer: %s, %dx%d, median of %d frames\n\n", ctx->renderer().c_str(), w, h,
               frames);

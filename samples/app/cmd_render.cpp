@@ -30,6 +30,9 @@ Options:
   --view NAME           debug view: basecolor|metallic|roughness|cavity|normal|depth|
                         shading_model|lights_per_tile
   --frames N            render N frames and report the median pass times (default 1)
+  --uber                compile every feature in, chosen at run time (= --set settings.uber=true);
+                        default: programs specialized to the scene (docs/variants.md)
+  --no-binary-cache     neither read nor write the on-disk program binary cache
   -h, --help            this text
 )";
 
@@ -37,6 +40,7 @@ struct RenderArgs {
   std::string scene, out, hdr, stats;
   std::vector<std::string> overrides;
   int width = 0, height = 0, frames = 1;
+  bool binary_cache = true;
   render::DebugView view = render::DebugView::None;
 };
 
@@ -61,6 +65,10 @@ RenderArgs parse(const Args& args) {
     } else if (a == "--frames") {
       r.frames = std::atoi(value().c_str());
       if (r.frames < 1 || r.frames > 1000) throw UsageError{"--frames expects 1..1000"};
+    } else if (a == "--uber") {
+      r.overrides.push_back("settings.uber=true");
+    } else if (a == "--no-binary-cache") {
+      r.binary_cache = false;
     } else if (a == "--view") {
       const std::string v = value();
       auto dv = render::debugViewFromString(v);
@@ -76,6 +84,29 @@ RenderArgs parse(const Args& args) {
   }
   if (r.scene.empty()) throw UsageError{"no scene file given"};
   return r;
+}
+
+nlohmann::ordered_json manifestJson(const render::Manifest& m) {
+  nlohmann::ordered_json j;
+  j["key"] = m.key;
+  j["binary_cache"] = m.binary_cache;
+  j["binary_cache_hits"] = m.binary_hits;
+  j["binary_cache_misses"] = m.binary_misses;
+  nlohmann::ordered_json progs = nlohmann::ordered_json::array();
+  for (const auto& v : m.programs) {
+    nlohmann::ordered_json p;
+    p["program"] = v.name;
+    p["stages"] = v.stages;
+    p["key"] = v.defines;
+    p["reasons"] = v.reasons;
+    p["compile_ms"] = v.compile_ms;
+    p["link_ms"] = v.link_ms;
+    p["from_binary_cache"] = v.from_binary_cache;
+    p["cache_load_ms"] = v.cache_load_ms;
+    progs.push_back(p);
+  }
+  j["programs"] = progs;
+  return j;
 }
 
 }  // namespace
@@ -98,6 +129,7 @@ int cmdRender(const Args& args) {
 
   auto ctx = createHeadlessContext();
   render::Renderer renderer;
+  if (!ra.binary_cache) renderer.programs().setBinaryCacheDir({});
   const auto t0 = std::chrono::steady_clock::now();
   renderer.setScene(scene);
   const double setup_ms =
@@ -140,6 +172,12 @@ int cmdRender(const Args& args) {
         bake->prefilter_ms, bake->env_brdf_ms, bake->sh_ms, bake->irradiance_ms, bake->cache_ms,
         bake->total_ms);
   }
+  const render::Manifest manifest = renderer.manifest();
+  double compile_ms = 0.0;
+  for (const auto& v : manifest.programs) compile_ms += v.compile_ms + v.link_ms + v.cache_load_ms;
+  std::printf("programs: %zu (%s), %.1f ms compile+link, binary cache %zu hits / %zu misses\n",
+              manifest.programs.size(), manifest.key.c_str(), compile_ms, manifest.binary_hits,
+              manifest.binary_misses);
   std::printf("image: %s\n", std::filesystem::absolute(ra.out).string().c_str());
   if (!ra.hdr.empty()) std::printf("hdr: %s\n", std::filesystem::absolute(ra.hdr).string().c_str());
 
@@ -182,6 +220,7 @@ int cmdRender(const Args& args) {
       vars.push_back({{"program", v.name}, {"defines", v.defines}, {"compile_ms", v.compile_ms}});
     }
     j["program_variants"] = vars;
+    j["manifest"] = manifestJson(renderer.manifest());
     std::ofstream(ra.stats) << j.dump(2) << "\n";
     std::printf("stats: %s\n", std::filesystem::absolute(ra.stats).string().c_str());
   }

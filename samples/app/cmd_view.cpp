@@ -261,7 +261,8 @@ int cmdView(const Args& args) {
     }
     materials.takeDirty();
     lights.takeDirty();
-    ui::drawStatsPanel(stats, scene->lights.size(), gpu);
+    const render::Manifest manifest = renderer.manifest();
+    ui::drawStatsPanel(stats, scene->lights.size(), gpu, &manifest);
     ui::drawErrorPanel("Scene error (showing the last good scene)", scene_error);
     ui::drawErrorPanel("Shader error (fix and press R)", shader_error);
 

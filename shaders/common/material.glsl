@@ -3,6 +3,8 @@
 #ifndef HV_MATERIAL_GLSL
 #define HV_MATERIAL_GLSL
 
+#include "material_features.glsl"
+
 #define HV_MAT_BASE_COLOR_TEX 1u
 #define HV_MAT_METAL_ROUGH_TEX 2u
 #define HV_MAT_NORMAL_TEX 4u

@@ -9,6 +9,19 @@
 #include "../common/brdf.glsl"
 #include "../common/ibl.glsl"
 
+// Specialization (docs/variants.md); the defaults are the uber build.
+//   HV_ENVIRONMENT 1|0: 0 = no environment: black background, no image-based lighting code.
+//   HV_ENV_RUNTIME_CHECK 1|0: 1 = the environment's presence is read from u_env.z (uber).
+//   HV_HAS_DEFAULT_LIT 1|0: 0 = no lit material: only the background is written.
+#ifndef HV_ENVIRONMENT
+#define HV_ENVIRONMENT 1
+#endif
+#ifndef HV_ENV_RUNTIME_CHECK
+#define HV_ENV_RUNTIME_CHECK 1
+#endif
+#ifndef HV_HAS_DEFAULT_LIT
+#define HV_HAS_DEFAULT_LIT 1
+#endif
 #ifndef HV_ENV_BRDF_ANALYTIC
 #define HV_ENV_BRDF_ANALYTIC 0
 #endif
@@ -45,14 +58,25 @@ void main() {
   uint model = uint(mat.b * 255.0 + 0.5);
   vec4 hdr = imageLoad(i_hdr, px);
   if (model == HV_MODEL_BACKGROUND) {
+#if HV_ENVIRONMENT
     vec2 uv = (vec2(px) + 0.5) / vec2(u_viewport.xy);
     vec3 far_point = reconstructWorldPosition(uv, 1e-3, u_inv_view_proj);
     vec3 dir = normalize(far_point - u_camera_pos.xyz);
-    vec3 sky = u_env.z > 0.5 ? textureLod(t_radiance, dir, 0.0).rgb : vec3(0.0);
+    vec3 sky = textureLod(t_radiance, dir, 0.0).rgb;
+#if HV_ENV_RUNTIME_CHECK
+    if (u_env.z < 0.5) sky = vec3(0.0);
+#endif
+#else
+    vec3 sky = vec3(0.0);
+#endif
     imageStore(i_hdr, px, vec4(min(sky, vec3(HV_HDR_MAX)), 1.0));
     return;
   }
-  if (model != HV_MODEL_DEFAULT_LIT || u_env.z < 0.5) return;
+#if HV_ENVIRONMENT && HV_HAS_DEFAULT_LIT
+  if (model != HV_MODEL_DEFAULT_LIT) return;
+#if HV_ENV_RUNTIME_CHECK
+  if (u_env.z < 0.5) return;
+#endif
 
   vec4 bc = texelFetch(t_base_cavity, px, 0);
   vec3 N = octDecode(texelFetch(t_normal, px, 0).xy);
@@ -88,4 +112,5 @@ void main() {
   specular *= specularOcclusion(NoV, s.cavity, s.alpha);
 #endif
   imageStore(i_hdr, px, vec4(min(hdr.rgb + diffuse + specular, vec3(HV_HDR_MAX)), hdr.a));
+#endif
 }

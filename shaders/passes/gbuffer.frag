@@ -1,6 +1,7 @@
 #version 450 core
 // G-buffer pass: writes the material attributes (layout in common/gbuffer.glsl) and the emissive
-// radiance straight into the HDR accumulation target.
+// radiance straight into the HDR accumulation target. Compiled per material variant: a feature
+// switched off in common/material_features.glsl has no code here (docs/variants.md).
 #include "../common/frame.glsl"
 #include "../common/gbuffer.glsl"
 #include "../common/material.glsl"
@@ -14,40 +15,68 @@ layout(binding = 3) uniform sampler2D t_occlusion;
 layout(binding = 4) uniform sampler2D t_emissive;
 
 layout(location = 0) in vec3 v_normal;
+#if HV_MAT_NORMAL_MAP
 layout(location = 1) in vec4 v_tangent;
+#endif
 layout(location = 2) in vec2 v_uv0;
+#if HV_MAT_UV1
 layout(location = 3) in vec2 v_uv1;
+#endif
 
 layout(location = 0) out vec4 o_base_cavity;  // SRGB8_ALPHA8
 layout(location = 1) out vec4 o_material;     // RGBA8
 layout(location = 2) out vec2 o_normal;       // RG16_SNORM
 layout(location = 3) out vec4 o_hdr;          // RGBA16F
 
+#if HV_MAT_UV1
 vec2 uvSet(uint set) { return set == 0u ? v_uv0 : v_uv1; }
+#else
+vec2 uvSet(uint set) { return v_uv0; }
+#endif
+
+// Uber build: a compiled-in feature still tests the material's flag. Specialized: every material
+// of the variant has the feature, so there is nothing to test.
+#if HV_MAT_RUNTIME_FLAGS
+#define HV_MAT_USES(bit) ((m.flags.x & (bit)) != 0u)
+#define HV_MAT_MASKED (m.flags.y == HV_ALPHA_MASK)
+#else
+#define HV_MAT_USES(bit) true
+#define HV_MAT_MASKED true
+#endif
 
 void main() {
   GpuMaterial m = materials[u_material];
-  uint flags = m.flags.x;
   vec4 base = m.base_color;
-  if ((flags & HV_MAT_BASE_COLOR_TEX) != 0u) base *= texture(t_base_color, uvSet(m.texcoords.x));
-  if (m.flags.y == HV_ALPHA_MASK && base.a < m.params.w) discard;
+#if HV_MAT_BASE_COLOR_MAP
+  if (HV_MAT_USES(HV_MAT_BASE_COLOR_TEX)) base *= texture(t_base_color, uvSet(m.texcoords.x));
+#endif
+#if HV_MAT_ALPHA_MASK
+  if (HV_MAT_MASKED && base.a < m.params.w) discard;
+#endif
 
   float metallic = m.params.x;
   float roughness = m.params.y;
-  if ((flags & HV_MAT_METAL_ROUGH_TEX) != 0u) {
+#if HV_MAT_METAL_ROUGH_MAP
+  if (HV_MAT_USES(HV_MAT_METAL_ROUGH_TEX)) {
     vec4 mr = texture(t_metal_rough, uvSet(m.texcoords.y));
     metallic *= mr.b;   // glTF: B = metallic
     roughness *= mr.g;  //       G = roughness
   }
+#endif
   float cavity = m.params.z;
-  if ((flags & HV_MAT_OCCLUSION_TEX) != 0u) {
+#if HV_MAT_OCCLUSION_MAP
+  if (HV_MAT_USES(HV_MAT_OCCLUSION_TEX)) {
     float ao = texture(t_occlusion, uvSet(m.texcoords.w)).r;
     cavity *= 1.0 + m.extra.y * (ao - 1.0);  // glTF occlusion strength
   }
+#endif
 
   vec3 n = normalize(v_normal);
+#if HV_MAT_DOUBLE_SIDED
   if (!gl_FrontFacing) n = -n;  // double-sided surfaces light their back face
-  if ((flags & HV_MAT_NORMAL_TEX) != 0u) {
+#endif
+#if HV_MAT_NORMAL_MAP
+  if (HV_MAT_USES(HV_MAT_NORMAL_TEX)) {
     vec3 t = v_tangent.xyz - n * dot(n, v_tangent.xyz);
     float tl = length(t);
     if (tl > 1e-8) {
@@ -60,9 +89,16 @@ void main() {
       if (ml > 1e-8) n = mapped / ml;
     }
   }
+#endif
 
+#if HV_MAT_EMISSIVE
   vec3 emissive = m.emissive.rgb;
-  if ((flags & HV_MAT_EMISSIVE_TEX) != 0u) emissive *= texture(t_emissive, uvSet(m.extra.z > 0.5 ? 1u : 0u)).rgb;
+#if HV_MAT_EMISSIVE_MAP
+  if (HV_MAT_USES(HV_MAT_EMISSIVE_TEX)) emissive *= texture(t_emissive, uvSet(m.extra.z > 0.5 ? 1u : 0u)).rgb;
+#endif
+#else
+  vec3 emissive = vec3(0.0);
+#endif
 
   o_base_cavity = vec4(clamp(base.rgb, 0.0, 1.0), clamp(cavity, 0.0, 1.0));
   o_material = vec4(clamp(metallic, 0.0, 1.0), clamp(roughness, 0.0, 1.0), float(m.flags.z) / 255.0, 0.0);

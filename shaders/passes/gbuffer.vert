@@ -1,5 +1,8 @@
 #version 450 core
+// G-buffer vertex stage. The tangent and the second UV set are passed on only when the material
+// variant reads them (common/material_features.glsl).
 #include "../common/frame.glsl"
+#include "../common/material_features.glsl"
 
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
@@ -11,15 +14,23 @@ layout(location = 0) uniform mat4 u_model;
 layout(location = 1) uniform mat4 u_normal_matrix;  // inverse transpose of u_model
 
 layout(location = 0) out vec3 v_normal;
+#if HV_MAT_NORMAL_MAP
 layout(location = 1) out vec4 v_tangent;
+#endif
 layout(location = 2) out vec2 v_uv0;
+#if HV_MAT_UV1
 layout(location = 3) out vec2 v_uv1;
+#endif
 
 void main() {
   vec4 world = u_model * vec4(a_position, 1.0);
   v_normal = mat3(u_normal_matrix) * a_normal;
+#if HV_MAT_NORMAL_MAP
   v_tangent = vec4(mat3(u_model) * a_tangent.xyz, a_tangent.w);
+#endif
   v_uv0 = a_uv0;
+#if HV_MAT_UV1
   v_uv1 = a_uv1;
+#endif
   gl_Position = u_view_proj * world;
 }

@@ -1,9 +1,11 @@
 // End-to-end tests of the halfvec command through runCli (no subprocess).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 #include <nlohmann/json.hpp>
 
@@ -82,6 +84,40 @@ TEST(Cli, RendersDefaultSceneFiniteAndNotUniform) {
     EXPECT_TRUE(j["passes"].contains(pass)) << pass;
   }
   EXPECT_EQ(j["light_counts"]["tube"].get<int>(), 1);
+  // The manifest: every program of the frame with its key and one reason per define.
+  const auto& m = j["manifest"];
+  EXPECT_EQ(m["key"].get<std::string>().find("lights point+sphere+tube"), 0u) << m["key"];
+  std::set<std::string> names;
+  for (const auto& p : m["programs"]) {
+    names.insert(
+        p["program"].get<std::string>().substr(0, p["program"].get<std::string>().find(' ')));
+    const std::string key = p["key"];
+    const size_t defines = key.empty() ? 0 : size_t(std::count(key.begin(), key.end(), ';')) + 1;
+    EXPECT_EQ(p["reasons"].size(), defines) << p["program"];
+  }
+  EXPECT_EQ(names, (std::set<std::string>{"gbuffer", "light_cull", "light", "ambient", "tonemap"}));
+}
+
+TEST(Cli, UberRendersTheSameImage) {
+  const fs::path a = tmp("spec.pfm"), b = tmp("uber.pfm"), stats = tmp("uber.json");
+  ASSERT_EQ(hv::app::runCli({"render", samples() + "/default.json", "--size", "96x64", "--out",
+                             tmp("spec.png").string(), "--hdr", a.string()}),
+            0);
+  ASSERT_EQ(hv::app::runCli({"render", samples() + "/default.json", "--size", "96x64", "--out",
+                             tmp("uber.png").string(), "--hdr", b.string(), "--uber", "--stats",
+                             stats.string()}),
+            0);
+  nlohmann::json j;
+  std::ifstream(stats) >> j;
+  EXPECT_NE(j["manifest"]["key"].get<std::string>().find("uber"), std::string::npos);
+  const hv::ImageRGBf x = hv::readPfm(a.string()), y = hv::readPfm(b.string());
+  ASSERT_EQ(x.px.size(), y.px.size());
+  // Same tolerance as tests/render/test_variants.cpp: 2 half-float steps + 1e-4.
+  for (size_t i = 0; i < x.px.size(); ++i) {
+    for (int k = 0; k < 3; ++k) {
+      ASSERT_NEAR(x.px[i][k], y.px[i][k], 1e-4f + std::abs(y.px[i][k]) * (2.0f / 512.0f)) << i;
+    }
+  }
 }
 
 TEST(Cli, SetOverridesAField) {

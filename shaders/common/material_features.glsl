@@ -1,0 +1,42 @@
+// Material feature switches of the G-buffer program (docs/variants.md), set per material variant
+// by engine/render/variant_key.cpp. A feature at 0 compiles no code for it. The defaults (every
+// feature in, flags read at run time) are the uber build.
+//   HV_MAT_RUNTIME_FLAGS 1|0: 1 = test each material's flags at run time (uber); 0 = every
+//     material drawn with the program has exactly the features switched on (no tests).
+//   HV_MAT_BASE_COLOR_MAP, HV_MAT_METAL_ROUGH_MAP, HV_MAT_NORMAL_MAP, HV_MAT_OCCLUSION_MAP,
+//   HV_MAT_EMISSIVE, HV_MAT_EMISSIVE_MAP, HV_MAT_ALPHA_MASK, HV_MAT_DOUBLE_SIDED, HV_MAT_UV1 1|0.
+#ifndef HV_MATERIAL_FEATURES_GLSL
+#define HV_MATERIAL_FEATURES_GLSL
+
+#ifndef HV_MAT_RUNTIME_FLAGS
+#define HV_MAT_RUNTIME_FLAGS 1
+#endif
+#ifndef HV_MAT_BASE_COLOR_MAP
+#define HV_MAT_BASE_COLOR_MAP 1
+#endif
+#ifndef HV_MAT_METAL_ROUGH_MAP
+#define HV_MAT_METAL_ROUGH_MAP 1
+#endif
+#ifndef HV_MAT_NORMAL_MAP
+#define HV_MAT_NORMAL_MAP 1
+#endif
+#ifndef HV_MAT_OCCLUSION_MAP
+#define HV_MAT_OCCLUSION_MAP 1
+#endif
+#ifndef HV_MAT_EMISSIVE
+#define HV_MAT_EMISSIVE 1
+#endif
+#ifndef HV_MAT_EMISSIVE_MAP
+#define HV_MAT_EMISSIVE_MAP 1
+#endif
+#ifndef HV_MAT_ALPHA_MASK
+#define HV_MAT_ALPHA_MASK 1
+#endif
+#ifndef HV_MAT_DOUBLE_SIDED
+#define HV_MAT_DOUBLE_SIDED 1
+#endif
+#ifndef HV_MAT_UV1
+#define HV_MAT_UV1 1
+#endif
+
+#endif

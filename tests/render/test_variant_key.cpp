@@ -1,0 +1,312 @@
+// Rules of the variant key (docs/variants.md), without GL: which material features a material
+// needs, which settings change code in which scene, which keys are valid, and the defines (with
+// their reasons) each pass gets.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+
+#include "render/variant_key.hpp"
+#include "scene/primitives.hpp"
+
+using namespace hv;
+using namespace hv::render;
+
+namespace {
+
+Light light(LightType t) {
+  Light l;
+  l.type = t;
+  l.radius = t == LightType::Point ? 0.0f : 0.1f;
+  l.length = t == LightType::Tube ? 0.5f : 0.0f;
+  return l;
+}
+
+// Materials drawn by one plane each (in order); no lights, environment none.
+Scene sceneWith(const std::vector<Material>& mats) {
+  Scene s;
+  s.environment.kind = EnvironmentKind::None;
+  for (size_t i = 0; i < mats.size(); ++i) {
+    s.materials.push_back(mats[i]);
+    s.meshes.push_back(makePlane(1.0f, 1.0f));
+    s.meshes.back().material = int(i);
+    Object o;
+    o.meshes = {int(i)};
+    s.objects.push_back(o);
+  }
+  return s;
+}
+
+TextureRef tex(int texcoord = 0) {
+  TextureRef t;
+  t.image = 0;
+  t.texcoord = texcoord;
+  return t;
+}
+
+std::map<std::string, KeyDefine> byName(const std::vector<KeyDefine>& defs) {
+  std::map<std::string, KeyDefine> m;
+  for (const auto& d : defs) m[d.name] = d;
+  return m;
+}
+
+}  // namespace
+
+TEST(VariantKey, MaterialFeaturesFollowTheMaterial) {
+  Material plain;
+  EXPECT_EQ(materialFeatures(plain), MaterialFeatures{});
+  EXPECT_EQ(materialFeatures(plain).text(), "none");
+
+  Material m;
+  m.base_color_tex = tex();
+  m.normal_tex = tex();
+  m.alpha_mode = AlphaMode::Mask;
+  m.double_sided = true;
+  const MaterialFeatures f = materialFeatures(m);
+  EXPECT_TRUE(f.base_color_map);
+  EXPECT_TRUE(f.normal_map);
+  EXPECT_TRUE(f.alpha_mask);
+  EXPECT_TRUE(f.double_sided);
+  EXPECT_FALSE(f.metal_rough_map);
+  EXPECT_FALSE(f.occlusion_map);
+  EXPECT_FALSE(f.emissive);
+  EXPECT_FALSE(f.uv1);
+  EXPECT_EQ(f.text(), "base_color_map+normal_map+alpha_mask+double_sided");
+
+  // Blend is drawn as opaque: no alpha test.
+  Material blend;
+  blend.alpha_mode = AlphaMode::Blend;
+  EXPECT_FALSE(materialFeatures(blend).alpha_mask);
+}
+
+TEST(VariantKey, MaterialRulesDropCodeThatChangesNothing) {
+  // An emissive map multiplies the emissive constant: with a zero constant it is dropped, and
+  // so is the second UV set only that map read.
+  Material m;
+  m.emissive_tex = tex(1);
+  MaterialFeatures f = materialFeatures(m);
+  EXPECT_FALSE(f.emissive);
+  EXPECT_FALSE(f.emissive_map);
+  EXPECT_FALSE(f.uv1);
+  m.emissive = {1.0f, 0.5f, 0.0f};
+  f = materialFeatures(m);
+  EXPECT_TRUE(f.emissive);
+  EXPECT_TRUE(f.emissive_map);
+  EXPECT_TRUE(f.uv1);
+
+  // Occlusion strength 0 leaves Cavity unchanged: no occlusion code.
+  Material o;
+  o.occlusion_tex = tex(1);
+  o.occlusion_tex.scale = 0.0f;
+  EXPECT_FALSE(materialFeatures(o).occlusion_map);
+  EXPECT_FALSE(materialFeatures(o).uv1);
+  o.occlusion_tex.scale = 0.7f;
+  EXPECT_TRUE(materialFeatures(o).occlusion_map);
+  EXPECT_TRUE(materialFeatures(o).uv1);
+}
+
+TEST(VariantKey, DerivedFromTheScene) {
+  Material a, b, c, unused;
+  a.name = "a";
+  b.name = "b";
+  b.normal_tex = tex();
+  c.name = "c";
+  c.model = ShadingModel::Unlit;
+  unused.normal_tex = tex();
+  unused.emissive = glm::vec3(1.0f);
+  unused.model = ShadingModel::Unlit;
+  Scene s = sceneWith({a, b, c});
+  s.materials.push_back(unused);  // no mesh uses it
+  s.lights = {light(LightType::Point), light(LightType::Tube), light(LightType::Tube)};
+  s.environment.kind = EnvironmentKind::Sky;
+
+  const VariantKey k = deriveVariantKey(s);
+  EXPECT_TRUE(k.point_lights);
+  EXPECT_FALSE(k.sphere_lights);
+  EXPECT_TRUE(k.tube_lights);
+  EXPECT_TRUE(k.default_lit);
+  EXPECT_TRUE(k.unlit);
+  EXPECT_EQ(k.environment, EnvironmentKind::Sky);
+  EXPECT_FALSE(k.uber);
+  // a and c have the same features (the shading model is data, not code): one program; b its own.
+  ASSERT_EQ(k.material_variants.size(), 2u);
+  EXPECT_EQ(k.material_variant[0], k.material_variant[2]);
+  EXPECT_NE(k.material_variant[0], k.material_variant[1]);
+  EXPECT_EQ(k.material_variant[3], -1);  // not drawn
+  EXPECT_TRUE(k.material_variants[size_t(k.material_variant[1])].normal_map);
+  EXPECT_TRUE(validateKey(k).empty());
+  EXPECT_EQ(k.text(),
+            "lights point+tube; models default_lit+unlit; environment sky; 2 material variants; "
+            "specialized");
+
+  // Only unlit materials: no default_lit, so no ambient IBL code even with an environment.
+  Scene u = sceneWith({c});
+  u.environment.kind = EnvironmentKind::Uniform;
+  const VariantKey ku = deriveVariantKey(u);
+  EXPECT_FALSE(ku.default_lit);
+  EXPECT_TRUE(ku.unlit);
+  EXPECT_FALSE(ku.ambientIbl());
+}
+
+TEST(VariantKey, UberTurnsEveryFeatureOn) {
+  Material a;
+  Scene s = sceneWith({a, a});
+  s.settings.uber = true;
+  const VariantKey k = deriveVariantKey(s);
+  EXPECT_TRUE(k.uber);
+  EXPECT_TRUE(k.point_lights && k.sphere_lights && k.tube_lights);
+  EXPECT_TRUE(k.unlit && k.default_lit);
+  ASSERT_EQ(k.material_variants.size(), 1u);
+  EXPECT_EQ(k.material_variants[0], allMaterialFeatures());
+  EXPECT_EQ(k.material_variant, (std::vector<int>{0, 0}));
+  EXPECT_TRUE(validateKey(k).empty());
+  const auto g = byName(gbufferDefines(k, 0, s));
+  EXPECT_EQ(g.at("HV_MAT_RUNTIME_FLAGS").value, "1");
+  EXPECT_EQ(g.at("HV_MAT_NORMAL_MAP").value, "1");
+  const auto l = byName(lightDefines(k, s));
+  EXPECT_EQ(l.at("HV_HAS_TUBE_LIGHTS").value, "1");
+  EXPECT_EQ(l.at("HV_HAS_TUBE_LIGHTS").why, "uber build (no tube lights)");
+  // Without an environment the uber ambient program still has the IBL code, checked at run time.
+  const auto a_defs = byName(ambientDefines(k, s));
+  EXPECT_EQ(a_defs.at("HV_ENVIRONMENT").value, "1");
+  EXPECT_EQ(a_defs.at("HV_ENV_RUNTIME_CHECK").value, "1");
+}
+
+TEST(VariantKey, RemapOnlyWhereTheVisibilityTermUsesAlpha) {
+  EXPECT_TRUE(remapMeaningful(VisibilityTerm::SchlickGGX));
+  EXPECT_TRUE(remapMeaningful(VisibilityTerm::SmithGGXCorrelated));
+  EXPECT_TRUE(remapMeaningful(VisibilityTerm::SmithBeckmannSeparable));
+  EXPECT_FALSE(remapMeaningful(VisibilityTerm::CookTorrance));
+  EXPECT_FALSE(remapMeaningful(VisibilityTerm::Implicit));
+  Scene s = sceneWith({Material{}});
+  s.lights = {light(LightType::Point)};
+  s.settings.v = VisibilityTerm::Implicit;
+  s.settings.remap_roughness = true;
+  const VariantKey k = deriveVariantKey(s);
+  EXPECT_FALSE(k.settings.remap_roughness);
+  const auto l = byName(lightDefines(k, s));
+  EXPECT_EQ(l.at("HV_REMAP_ROUGHNESS").value, "0");
+  EXPECT_NE(l.at("HV_REMAP_ROUGHNESS").why.find("does not use alpha"), std::string::npos);
+}
+
+TEST(VariantKey, SettingsWithoutCodeAreCanonical) {
+  // Two scenes that differ only in settings that change no code get the same defines.
+  Scene a = sceneWith({Material{}});
+  a.lights = {light(LightType::Point)};
+  Scene b = a;
+  b.settings.tube_specular = TubeSpecular::SmallestAngleEq18;  // no tubes
+  b.settings.tube_normalization = false;
+  b.settings.sphere_diffuse = SphereDiffuse::HorizonCorrect;  // no spheres
+  b.settings.irradiance = Irradiance::Cubemap;                // no environment
+  b.settings.energy_compensation = true;
+  const VariantKey ka = deriveVariantKey(a), kb = deriveVariantKey(b);
+  auto values = [](const std::vector<KeyDefine>& d) {
+    std::vector<std::pair<std::string, std::string>> v;
+    for (const auto& x : d) v.emplace_back(x.name, x.value);
+    return v;
+  };
+  EXPECT_EQ(values(lightDefines(ka, a)), values(lightDefines(kb, b)));
+  EXPECT_EQ(values(ambientDefines(ka, a)), values(ambientDefines(kb, b)));
+  // ... and the reason says the setting was reset.
+  const auto l = byName(lightDefines(kb, b));
+  EXPECT_NE(l.at("HV_TUBE_SPECULAR").why.find("no tube lights"), std::string::npos);
+  const auto am = byName(ambientDefines(kb, b));
+  EXPECT_EQ(am.at("HV_IRRADIANCE_CUBEMAP").value, "0");
+  EXPECT_NE(am.at("HV_IRRADIANCE_CUBEMAP").why.find("no environment"), std::string::npos);
+  EXPECT_EQ(am.at("HV_ENVIRONMENT").value, "0");
+
+  // With the lights and environment present the same settings do change code.
+  b.lights = {light(LightType::Sphere), light(LightType::Tube)};
+  b.environment.kind = EnvironmentKind::Sky;
+  const VariantKey kc = deriveVariantKey(b);
+  const auto l2 = byName(lightDefines(kc, b));
+  EXPECT_EQ(l2.at("HV_TUBE_SPECULAR").value, "1");
+  EXPECT_EQ(l2.at("HV_TUBE_SPECULAR").why, "settings.tube_specular = smallest_angle_eq18");
+  EXPECT_EQ(l2.at("HV_SPHERE_DIFFUSE").value, "1");
+  EXPECT_EQ(l2.at("HV_HAS_POINT_LIGHTS").value, "0");
+  EXPECT_EQ(l2.at("HV_HAS_TUBE_LIGHTS").why, "1 tube light");
+  EXPECT_EQ(byName(ambientDefines(kc, b)).at("HV_IRRADIANCE_CUBEMAP").value, "1");
+}
+
+TEST(VariantKey, ValidationRejectsImpossibleCombinations) {
+  VariantKey k;  // no lights, no environment, no materials: valid
+  EXPECT_TRUE(validateKey(k).empty());
+
+  auto expectInvalid = [](const VariantKey& key, const std::string& fragment) {
+    const auto bad = validateKey(key);
+    const bool found = std::any_of(bad.begin(), bad.end(), [&](const std::string& s) {
+      return s.find(fragment) != std::string::npos;
+    });
+    EXPECT_TRUE(found) << "expected a violation containing '" << fragment << "'";
+  };
+  VariantKey a = k;
+  a.settings.irradiance = Irradiance::Cubemap;
+  expectInvalid(a, "irradiance cubemap without an environment");
+  VariantKey b = k;
+  b.point_lights = true;
+  b.settings.v = VisibilityTerm::CookTorrance;
+  b.settings.remap_roughness = true;
+  expectInvalid(b, "roughness remap");
+  VariantKey c = k;
+  c.point_lights = true;
+  c.settings.tube_normalization = false;
+  expectInvalid(c, "tube-light options without tube lights");
+  VariantKey d = k;
+  MaterialFeatures f;
+  f.emissive_map = true;
+  d.material_variants = {f};
+  expectInvalid(d, "emissive map without emissive");
+  VariantKey e = k;
+  MaterialFeatures g;
+  g.uv1 = true;
+  e.material_variants = {g, g};
+  expectInvalid(e, "second UV set without any map");
+  expectInvalid(e, "duplicate feature set");
+  VariantKey h = k;
+  h.material_variant = {3};
+  expectInvalid(h, "out of range");
+  VariantKey u = k;
+  u.uber = true;
+  expectInvalid(u, "uber key without every light type");
+
+  // Every derived key is valid, whatever the settings ask for.
+  for (int env = 0; env < 2; ++env) {
+    for (int types = 0; types < 8; ++types) {
+      Material m;
+      m.emissive_tex = tex(1);
+      Scene s = sceneWith({m});
+      s.environment.kind = env ? EnvironmentKind::Sky : EnvironmentKind::None;
+      if (types & 1) s.lights.push_back(light(LightType::Point));
+      if (types & 2) s.lights.push_back(light(LightType::Sphere));
+      if (types & 4) s.lights.push_back(light(LightType::Tube));
+      s.settings.v = VisibilityTerm::CookTorrance;
+      s.settings.irradiance = Irradiance::Cubemap;
+      s.settings.sphere_diffuse = SphereDiffuse::HorizonCorrect;
+      s.settings.tube_specular = TubeSpecular::SmallestAngleEq18;
+      s.settings.d = DistributionTerm::Beckmann;
+      const auto bad = validateKey(deriveVariantKey(s));
+      EXPECT_TRUE(bad.empty()) << "env " << env << " types " << types << ": " << bad.front();
+    }
+  }
+}
+
+TEST(VariantKey, GBufferReasonsNameTheMaterials) {
+  Material x, y, z;
+  x.name = "brick";
+  x.normal_tex = tex();
+  y.name = "tile";
+  y.normal_tex = tex();
+  z.name = "plaster";
+  Scene s = sceneWith({x, y, z});
+  const VariantKey k = deriveVariantKey(s);
+  ASSERT_EQ(k.material_variants.size(), 2u);
+  const size_t v = size_t(k.material_variant[0]);
+  const auto g = byName(gbufferDefines(k, v, s));
+  EXPECT_EQ(g.at("HV_MAT_NORMAL_MAP").value, "1");
+  EXPECT_EQ(g.at("HV_MAT_NORMAL_MAP").why, "materials brick, tile");
+  EXPECT_EQ(g.at("HV_MAT_RUNTIME_FLAGS").value, "0");
+  EXPECT_EQ(g.at("HV_MAT_EMISSIVE").value, "0");
+  const auto g2 = byName(gbufferDefines(k, size_t(k.material_variant[2]), s));
+  EXPECT_EQ(g2.at("HV_MAT_NORMAL_MAP").value, "0");
+  EXPECT_EQ(g2.at("HV_MAT_NORMAL_MAP").why, "no material of this variant uses it");
+}
