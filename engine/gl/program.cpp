@@ -350,6 +350,7 @@ GLuint ProgramCache::get(const ProgramDesc& desc) {
     }
   }
   const GLuint id = prog->id();
+  descs_.emplace(key, desc);
   programs_.emplace(key, std::make_pair(std::move(*prog), variants_.size()));
   variants_.push_back(std::move(info));
   return id;
@@ -358,6 +359,30 @@ GLuint ProgramCache::get(const ProgramDesc& desc) {
 void ProgramCache::clear() {
   programs_.clear();
   variants_.clear();
+  descs_.clear();
+}
+
+void ProgramCache::reloadAll() {
+  struct Rebuilt {
+    std::string key;
+    Program program;
+    BuildTimings timings;
+  };
+  std::vector<Rebuilt> fresh;
+  for (const auto& [key, desc] : descs_) {
+    BuildTimings t;
+    Program p = buildProgram(desc, &t);  // may throw: nothing replaced yet
+    fresh.push_back({key, std::move(p), t});
+  }
+  for (Rebuilt& r : fresh) {
+    auto& entry = programs_.at(r.key);
+    entry.first = std::move(r.program);
+    VariantInfo& info = variants_[entry.second];
+    info.compile_ms = r.timings.compile_ms;
+    info.link_ms = r.timings.link_ms;
+    info.cache_load_ms = 0.0;
+    info.from_binary_cache = false;
+  }
 }
 
 }  // namespace hv::gl

@@ -67,6 +67,10 @@ class ProgramCache {
   GLuint get(const ProgramDesc& desc);
   const std::vector<VariantInfo>& variants() const { return variants_; }
   void clear();
+  // Rebuilds every cached program from its files as they are now (shader hot reload). All or
+  // nothing: if any fails to compile or link, throws its ShaderError and every program stays the
+  // last good one, still usable.
+  void reloadAll();
   size_t size() const { return programs_.size(); }
 
   // Default reasons for defines of programs whose desc gives none: NAME -> (VALUE, why); used
@@ -96,6 +100,7 @@ class ProgramCache {
  private:
   std::map<std::string, std::pair<Program, size_t>> programs_;  // key -> program, variants_ index
   std::vector<VariantInfo> variants_;
+  std::map<std::string, ProgramDesc> descs_;  // key -> what built it (for reloadAll)
   uint64_t frame_ = 0;
   std::filesystem::path binary_dir_;
   bool binary_supported_ = false;

@@ -35,7 +35,8 @@ Options:
   -h, --help            this text
 
 Controls: left drag orbit, right/middle drag pan, wheel zoom (around the camera target),
-WASD fly (Q/E down/up), F12 save out/view_<n>.png + .pfm, R reload shaders, Esc quit.
+WASD fly (Q/E down/up), F12 save out/view_<n>.png + .pfm, R reload shaders (an error keeps
+the last good programs running and shows in a panel), Esc quit.
 The scene file is reloaded when it changes on disk.
 )";
 
@@ -243,9 +244,17 @@ int cmdView(const Args& args) {
     if (!imgui.wantsKeyboard()) {
       if (key_esc.pressed(win)) glfwSetWindowShouldClose(win, GLFW_TRUE);
       if (key_r.pressed(win)) {
-        renderer.programs().clear();
-        shaders_ok = true;
-        shader_error.clear();
+        // Rebuild every program from the files as they are now; on an error the last good
+        // programs keep rendering and the panel shows the error (file:line).
+        try {
+          renderer.programs().reloadAll();
+          shaders_ok = true;
+          shader_error.clear();
+          std::printf("shaders reloaded\n");
+        } catch (const std::exception& e) {
+          shader_error = e.what();
+          std::fprintf(stderr, "shader reload failed: %s\n", e.what());
+        }
       }
     }
 
@@ -264,7 +273,8 @@ int cmdView(const Args& args) {
     const render::Manifest manifest = renderer.manifest();
     ui::drawStatsPanel(stats, scene->lights.size(), gpu, &manifest);
     ui::drawErrorPanel("Scene error (showing the last good scene)", scene_error);
-    ui::drawErrorPanel("Shader error (fix and press R)", shader_error);
+    ui::drawErrorPanel("Shader error (last good programs still running; fix and press R)",
+                       shader_error);
 
     if (shaders_ok) {
       try {

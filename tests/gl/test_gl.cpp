@@ -145,3 +145,48 @@ TEST(Timer, ReportsEveryPass) {
   EXPECT_GE(r[0].second, 0.0);
   EXPECT_EQ(r[1].first, "b");
 }
+
+// Shader hot reload: a broken edit throws naming file:line and leaves the last good program in
+// place and running; a good edit replaces it.
+TEST(Program, ReloadAllKeepsLastGoodProgramOnError) {
+  testContext();
+  const fs::path dir = fs::temp_directory_path() / "hv_reload_shader";
+  fs::create_directories(dir);
+  const fs::path file = dir / "value.comp";
+  auto writeShader = [&](const std::string& body) {
+    std::ofstream(file) << "#version 450 core\nlayout(local_size_x = 1) in;\n"
+                           "layout(std430, binding = 0) buffer Out { float values[]; };\n"
+                        << body << "\n";
+  };
+  auto run = [&](GLuint prog) {
+    auto buf = gl::createBuffer("out", sizeof(float));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buf.id());
+    glUseProgram(prog);
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    float v = 0;
+    glGetNamedBufferSubData(buf.id(), 0, sizeof v, &v);
+    glUseProgram(0);
+    return v;
+  };
+  writeShader("void main() { values[0] = 42.0; }");
+  gl::ProgramCache cache;
+  const gl::ProgramDesc d{"reload", {{GL_COMPUTE_SHADER, file.string()}}, {}};
+  const GLuint good = cache.get(d);
+  EXPECT_FLOAT_EQ(run(good), 42.0f);
+
+  writeShader("void main() { values[0] = undefined_thing; }");  // line 4
+  try {
+    cache.reloadAll();
+    FAIL() << "the broken edit compiled";
+  } catch (const gl::ShaderError& e) {
+    EXPECT_NE(std::string(e.what()).find("value.comp:4"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(cache.get(d), good);
+  EXPECT_FLOAT_EQ(run(cache.get(d)), 42.0f);
+
+  writeShader("void main() { values[0] = 7.0; }");
+  cache.reloadAll();
+  EXPECT_FLOAT_EQ(run(cache.get(d)), 7.0f);
+  fs::remove_all(dir);
+}
