@@ -74,6 +74,7 @@ void Renderer::ambientPass() {
   defines.push_back({"HV_ENERGY_COMPENSATION", s.energy_compensation ? "1" : "0"});
   defines.push_back({"HV_IRRADIANCE_CUBEMAP", s.irradiance == Irradiance::Cubemap ? "1" : "0"});
   defines.push_back({"HV_SPECULAR_OCCLUSION", s.specular_occlusion ? "1" : "0"});
+  defines.push_back({"HV_AMBIENT_TERMS", std::to_string(int(s.ambient_terms))});
   const GLuint prog =
       programs_.get({"ambient", {{GL_COMPUTE_SHADER, "passes/ambient.comp"}}, defines});
   glUseProgram(prog);

@@ -164,6 +164,10 @@ struct RenderSettings {
   bool energy_compensation = false;
   Irradiance irradiance = Irradiance::SH9;
   bool specular_occlusion = false;
+  // Term masks (not scene-file fields; `halfvec render --aov` sets them): bit 1 diffuse, bit 2
+  // specular of direct light (HV_DIRECT_TERMS) and of ambient light (HV_AMBIENT_TERMS).
+  uint8_t direct_terms = 3;
+  uint8_t ambient_terms = 3;
 };
 
 struct Scene {

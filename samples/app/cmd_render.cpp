@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
+#include "app/engine_aov.hpp"
 #include "platform/context.hpp"
 #include "render/renderer.hpp"
 #include "scene/enums.hpp"
@@ -29,11 +30,15 @@ Options:
   --view NAME           debug view: basecolor|metallic|roughness|cavity|normal|depth|
                         shading_model|lights_per_tile
   --frames N            render N frames and report the median pass times (default 1)
+  --aov DIR             also write the engine's direct_diffuse, direct_specular, ambient_diffuse
+                        and ambient_specular .pfm (lit pixels only, no emissive; one re-render
+                        per term with HV_DIRECT_TERMS / HV_AMBIENT_TERMS), named as the
+                        reference's AOVs so `halfvec compare` pairs them
   -h, --help            this text
 )";
 
 struct RenderArgs {
-  std::string scene, out, hdr, stats;
+  std::string scene, out, hdr, stats, aov;
   std::vector<std::string> overrides;
   int width = 0, height = 0, frames = 1;
   render::DebugView view = render::DebugView::None;
@@ -55,6 +60,8 @@ RenderArgs parse(const Args& args) {
       r.hdr = value();
     } else if (a == "--stats") {
       r.stats = value();
+    } else if (a == "--aov") {
+      r.aov = value();
     } else if (a == "--set") {
       r.overrides.push_back(value());
     } else if (a == "--frames") {
@@ -118,6 +125,15 @@ int cmdRender(const Args& args) {
   if (!out_dir.empty()) std::filesystem::create_directories(out_dir);
   writePng(ra.out, renderer.readLdr());
   if (!ra.hdr.empty()) writePfm(ra.hdr, renderer.readHdr());
+  if (!ra.aov.empty()) {
+    const auto aovs = renderEngineAovs(renderer, scene, w, h);
+    std::filesystem::create_directories(ra.aov);
+    for (int k = 0; k < kReferenceAovCount; ++k) {
+      const auto which = static_cast<ReferenceAov>(k);
+      writePfm((std::filesystem::path(ra.aov) / (std::string(toString(which)) + ".pfm")).string(),
+               aovs[size_t(k)]);
+    }
+  }
 
   size_t triangles = 0;
   for (const Object& o : scene.objects) {
@@ -132,6 +148,7 @@ int cmdRender(const Args& args) {
   std::printf("setup (upload + environment bake): %.1f ms\n", setup_ms);
   std::printf("image: %s\n", std::filesystem::absolute(ra.out).string().c_str());
   if (!ra.hdr.empty()) std::printf("hdr: %s\n", std::filesystem::absolute(ra.hdr).string().c_str());
+  if (!ra.aov.empty()) std::printf("aov: %s\n", std::filesystem::absolute(ra.aov).string().c_str());
 
   if (!ra.stats.empty()) {
     nlohmann::ordered_json j;
