@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ibl/parallel.hpp"
+
 namespace hv::reference_detail {
 
 namespace {
@@ -17,24 +19,43 @@ int findInterval(const float* cdf, int n, float u) {
 
 EnvDistribution::EnvDistribution(const EnvSource& env, int width, int height)
     : width_(width), height_(height) {
-  std::vector<double> w(size_t(width) * size_t(height));
-  double total = 0.0;
-  for (int y = 0; y < height; ++y) {
+  // The largest luminance of 4x4 sub-samples per texel: a source much smaller than the texel
+  // (the sky's sun is 0.53 degrees, a texel 0.35) still gets its full weight wherever a
+  // sub-sample sees it.
+  std::vector<double> lum(size_t(width) * size_t(height), 0.0);
+  detail::parallelFor(height, 0, [&](int y) {
     for (int x = 0; x < width; ++x) {
-      // The largest of 4x4 sub-samples: a source much smaller than the texel (the sky's sun is
-      // 0.53 degrees, a texel 0.35) still gets its full weight wherever it touches the texel.
-      double lum = 0.0;
+      double m = 0.0;
       for (int sy = 0; sy < 4; ++sy) {
         for (int sx = 0; sx < 4; ++sx) {
           const glm::vec2 uv((float(x) + 0.125f + 0.25f * float(sx)) / float(width),
                              (float(y) + 0.125f + 0.25f * float(sy)) / float(height));
           const glm::vec3 c = env.radiance(equirectDirection(uv));
-          lum = std::max(lum, 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z);
+          m = std::max(m, 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z);
         }
       }
-      const double sin_t = std::sin(kPi * (double(y) + 0.5) / double(height));
-      w[size_t(y) * size_t(width) + size_t(x)] = std::max(lum, 0.0) * sin_t;
-      total += w[size_t(y) * size_t(width) + size_t(x)];
+      lum[size_t(y) * size_t(width) + size_t(x)] = m;
+    }
+  });
+  // Dilated by one texel (3x3 maximum, longitude wraps): a sliver of a source that no
+  // sub-sample of its texel saw lies next to a texel that saw it, and then keeps a density of
+  // the source's order. Without this such slivers were hit by the other strategies with a tiny
+  // density and gave rare, huge samples (a heavy-tailed estimate of the sky's irradiance).
+  std::vector<double> w(lum.size());
+  double total = 0.0;
+  for (int y = 0; y < height; ++y) {
+    const double sin_t = std::sin(kPi * (double(y) + 0.5) / double(height));
+    for (int x = 0; x < width; ++x) {
+      double m = 0.0;
+      for (int dy = -1; dy <= 1; ++dy) {
+        const int yy = std::clamp(y + dy, 0, height - 1);
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int xx = (x + dx + width) % width;
+          m = std::max(m, lum[size_t(yy) * size_t(width) + size_t(xx)]);
+        }
+      }
+      w[size_t(y) * size_t(width) + size_t(x)] = m * sin_t;
+      total += m * sin_t;
     }
   }
   // Floor: 1e-3 of the mean weight (times sin theta), so no direction has density 0.
