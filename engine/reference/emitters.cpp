@@ -114,7 +114,92 @@ LightSample sampleTube(const Light& light, const RenderSettings& settings, const
   return ls;
 }
 
+// Nearest t > 0 where the ray P + t L (L unit) enters the sphere (center c, radius r), or -1.
+// Double precision: near-tangent rays lose half the digits in b^2 - c.
+double raySphere(const glm::dvec3& P, const glm::dvec3& L, const glm::dvec3& c, double r) {
+  const glm::dvec3 oc = P - c;
+  const double b = glm::dot(L, oc);
+  const double h = b * b - (glm::dot(oc, oc) - r * r);
+  if (h < 0.0) return -1.0;
+  const double t = -b - std::sqrt(h);
+  return t > 0.0 ? t : -1.0;
+}
+
+float capsulePdf(const Light& light, const glm::vec3& Pf, const glm::vec3& Lf) {
+  const double r = light.radius;
+  const double len = std::max(light.length, 0.0f);
+  if (r <= 0.0) return 0.0f;
+  const glm::dvec3 P(Pf), L(glm::normalize(glm::dvec3(Lf)));
+  const glm::dvec3 axis = glm::normalize(glm::dvec3(light.axis));
+  const glm::dvec3 A = glm::dvec3(light.position) - axis * (0.5 * len);
+  const glm::dvec3 Bp = glm::dvec3(light.position) + axis * (0.5 * len);
+  // The capsule is the union of the two end spheres and the finite cylinder between them; the
+  // first hit of a ray from outside is the smallest first hit over the three (a hit on a
+  // cylinder end disk lies inside an end sphere, so only the curved side is needed).
+  double t = -1.0;
+  for (const glm::dvec3& c : {A, Bp}) {
+    const double ts = raySphere(P, L, c, r);
+    if (ts > 0.0 && (t < 0.0 || ts < t)) t = ts;
+  }
+  if (len > 0.0) {
+    const glm::dvec3 oa = P - A;
+    const double bard = glm::dot(axis, L), baoa = glm::dot(axis, oa);
+    const double a = 1.0 - bard * bard;
+    if (a > 1e-12) {  // not parallel to the axis: the infinite cylinder |x - axis line| = r
+      const double b = glm::dot(L, oa) - baoa * bard;
+      const double c = glm::dot(oa, oa) - baoa * baoa - r * r;
+      const double h = b * b - a * c;
+      if (h >= 0.0) {
+        const double tc = (-b - std::sqrt(h)) / a;
+        const double y = baoa + tc * bard;
+        if (tc > 0.0 && y > 0.0 && y < len && (t < 0.0 || tc < t)) t = tc;
+      }
+    }
+  }
+  if (t <= 0.0) return 0.0f;
+  const glm::dvec3 x = P + L * t;
+  const double y = std::clamp(glm::dot(x - A, axis), 0.0, len);
+  const glm::dvec3 n = glm::normalize(x - (A + axis * y));
+  const double cos_e = -glm::dot(n, L);
+  if (cos_e <= 0.0) return 0.0f;
+  const double area = 2.0 * double(kPi) * r * len + 4.0 * double(kPi) * r * r;
+  return float(t * t / (area * cos_e));
+}
+
 }  // namespace
+
+glm::vec3 emitterRadianceAt(const Light& light, const RenderSettings& settings,
+                            const glm::vec3& P) {
+  if (light.type == LightType::Sphere) {
+    const glm::vec3 Lc = light.position - P;
+    return emitterRadiance(light, settings, glm::dot(Lc, Lc));
+  }
+  if (light.type == LightType::Tube) {
+    const float len = std::max(light.length, 0.0f);
+    const glm::vec3 axis = glm::normalize(light.axis);
+    const glm::vec3 L0 = light.position - axis * (0.5f * len) - P;
+    const float tp = len > 0.0f ? glsl::saturate(-glm::dot(L0, axis) / len) : 0.0f;
+    const glm::vec3 Lp = L0 + axis * (tp * len);
+    return emitterRadiance(light, settings, glm::dot(Lp, Lp));
+  }
+  return glm::vec3(0.0f);
+}
+
+float lightPdf(const Light& light, const glm::vec3& P, const glm::vec3& L) {
+  if (light.type == LightType::Sphere) {
+    const glm::vec3 Lc = light.position - P;
+    const float d2 = glm::dot(Lc, Lc);
+    const float r2 = light.radius * light.radius;
+    if (r2 <= 0.0f) return 0.0f;
+    if (d2 <= r2) return 1.0f / (4.0f * kPi);
+    const float sin2 = r2 / d2;
+    const float cos_max = std::sqrt(std::max(0.0f, 1.0f - sin2));
+    if (glm::dot(L, Lc) < cos_max * std::sqrt(d2)) return 0.0f;  // outside the cone
+    return 1.0f / (2.0f * kPi * (sin2 / (1.0f + cos_max)));
+  }
+  if (light.type == LightType::Tube) return capsulePdf(light, P, L);
+  return 0.0f;
+}
 
 Rng::Rng(uint64_t seed, uint64_t stream) {
   inc_ = (splitmix64(stream ^ 0xDA3E39CB94B95BDBull) << 1u) | 1u;

@@ -42,4 +42,16 @@ struct LightSample {
 LightSample sampleLight(const Light& light, const RenderSettings& settings, const glm::vec3& P,
                         glm::vec2 u);
 
+// The radiance a sphere or tube light sends to P from any visible point of its surface
+// (emitterRadiance of docs/lights.md: L_e times the window times the +1 factor); 0 for points.
+glm::vec3 emitterRadianceAt(const Light& light, const RenderSettings& settings, const glm::vec3& P);
+
+// The density (solid angle) with which sampleLight produces the unit direction L from P, i.e. the
+// pdf to combine a direction drawn by another strategy (BRDF sampling) with the light's own by
+// multiple importance sampling: 0 when the ray from P along L misses the emitter (or, for the
+// capsule, first meets it on a back face, which sampleLight never returns as a hit). Sphere: the
+// cone pdf when L is inside the subtended cone (every L inside the sphere). Capsule: first hit of
+// the ray on the capsule (union of the cylinder and the two end spheres), dist^2 / (A cos_e).
+float lightPdf(const Light& light, const glm::vec3& P, const glm::vec3& L);
+
 }  // namespace hv::reference_detail

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -14,6 +15,8 @@
 #include "ibl/ibl_math.hpp"
 #include "ibl/parallel.hpp"
 #include "reference/emitters.hpp"
+#include "reference/env_sampling.hpp"
+#include "reference/lobes.hpp"
 #include "shading/brdf.hpp"
 #include "shading/shading.hpp"
 
@@ -98,30 +101,13 @@ struct Context {
   glm::mat4 inv_view_proj;
   bool has_env = false;
   EnvSource env;
+  // Luminance sampling of a non-uniform environment (null for uniform: cosine + VNDF suffice).
+  std::unique_ptr<reference_detail::EnvDistribution> env_dist;
   std::vector<const Light*> point_lights, area_lights;
 };
 
-// Diffuse and specular parts of f(v, l) (not times NoL), with the clamps of glsl::evaluateBrdf.
-// analytic: the V term of analytic lights (Disney remap when brdf.remap_roughness, as the light
-// pass); otherwise V at alpha (as the environment BRDF of the ambient pass, Karis 2013).
-struct Lobes {
-  glm::vec3 diffuse{0.0f}, specular{0.0f};
-};
-Lobes brdfLobes(const BrdfConfig& c, const glsl::Surface& s, const glm::vec3& V, const glm::vec3& L,
-                bool analytic) {
-  glm::vec3 H = glsl::safeNormalize(V + L);
-  float NoV = glm::max(glm::dot(s.N, V), glsl::HV_MIN_NOV);
-  float NoL = glsl::saturate(glm::dot(s.N, L));
-  float NoH = glsl::saturate(glm::dot(s.N, H));
-  float VoH = glsl::saturate(glm::dot(V, H));
-  Lobes r;
-  r.diffuse = s.diffuse_color * evalFd(c, s.roughness, NoV, NoL, VoH);
-  float D = evalD(c, s.alpha, NoH);
-  float Vis = analytic ? evalV(c, s.roughness, s.alpha, NoV, NoL, NoH, VoH)
-                       : evalVForAlpha(c, s.alpha, NoV, NoL, NoH, VoH);
-  r.specular = (D * Vis) * evalF(c, s.f0, VoH);
-  return r;
-}
+using reference_detail::brdfLobes;
+using reference_detail::Lobes;
 
 struct PixelOut {
   glm::dvec3 aov[kReferenceAovCount];
@@ -209,24 +195,35 @@ PixelOut shadePixel(const Context& ctx, size_t index, int x, int y) {
         xs[kDD] += glm::dvec3(f.diffuse * w);
         xs[kDS] += glm::dvec3(f.specular * w);
       }
-      // Environment: one cosine and one VNDF sample, balance heuristic (one sample per
-      // strategy: each contributes f L NoL / (p_cos + p_vndf)).
+      // Environment: one cosine, one VNDF and (non-uniform environments) one luminance-sampled
+      // direction, balance heuristic with one sample per strategy: each contributes
+      // f L NoL / (p_cos + p_vndf + p_env).
       if (ctx.has_env) {
         glm::vec2 u1(rng.uniform(), rng.uniform());
         glm::vec2 u2(rng.uniform(), rng.uniform());
-        glm::vec3 Lt[2];
-        Lt[0] = glsl::sampleCosineHemisphere(u1);
+        glm::vec3 Lw[3];
+        int count = 2;
+        glm::vec3 lt0 = glsl::sampleCosineHemisphere(u1);
+        Lw[0] = T * lt0.x + B * lt0.y + N * lt0.z;
         glm::vec3 Ht = glsl::sampleGGXVNDF(Vs, s.alpha, u2);
-        Lt[1] = glm::reflect(-Vs, Ht);
-        for (const glm::vec3& lt : Lt) {
+        glm::vec3 lt1 = glm::reflect(-Vs, Ht);
+        Lw[1] = T * lt1.x + B * lt1.y + N * lt1.z;
+        if (ctx.env_dist) {
+          float unused_pdf = 0.0f;
+          Lw[2] = ctx.env_dist->sample(glm::vec2(rng.uniform(), rng.uniform()), unused_pdf);
+          count = 3;
+        }
+        for (int k = 0; k < count; ++k) {
+          const glm::vec3 L = glm::normalize(Lw[k]);
+          const glm::vec3 lt(glm::dot(L, T), glm::dot(L, B), glm::dot(L, N));
           if (lt.z <= 0.0f) continue;
           glm::vec3 h = glsl::safeNormalize(Vs + lt);
           float VoH = glm::dot(Vs, h);
           float p_cos = glsl::pdfCosineHemisphere(lt.z);
           float p_spec = VoH > 0.0f ? glsl::pdfGGXVNDF(Vs, h, s.alpha) / (4.0f * VoH) : 0.0f;
-          float p = p_cos + p_spec;
+          float p_env = ctx.env_dist ? ctx.env_dist->pdf(L) : 0.0f;
+          float p = p_cos + p_spec + p_env;
           if (!(p > 0.0f) || !std::isfinite(p)) continue;
-          glm::vec3 L = T * lt.x + B * lt.y + N * lt.z;
           Lobes f = brdfLobes(ctx.brdf, s, V, L, false);
           glm::vec3 w = ctx.env.radiance(L) * (lt.z / p);
           xs[kAD] += glm::dvec3(f.diffuse * w * s.cavity);
@@ -280,6 +277,9 @@ ReferenceResult renderReference(const Scene& scene, const render::GBufferReadbac
   if (scene.environment.kind != EnvironmentKind::None) {
     ctx.env = makeEnvSource(scene.environment, opt.sky);
     ctx.has_env = true;
+    if (scene.environment.kind != EnvironmentKind::Uniform) {
+      ctx.env_dist = std::make_unique<reference_detail::EnvDistribution>(ctx.env);
+    }
   }
   for (const Light& l : scene.lights) {
     if (l.type == LightType::Point)

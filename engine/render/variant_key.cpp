@@ -294,6 +294,9 @@ std::vector<KeyDefine> lightDefines(const VariantKey& k, const Scene& scene) {
       {"HV_TUBE_NORMALIZATION",
        settingWhy("tube_normalization", s.tube_normalization ? "true" : "false",
                   in.tube_normalization != s.tube_normalization, "no tube lights")},
+      {"HV_DIRECT_TERMS", s.direct_terms == 3 ? "diffuse and specular (all terms)"
+                                              : "term mask " + std::to_string(int(s.direct_terms)) +
+                                                    " (render --aov)"},
   };
   for (auto& [name, value] : brdfDefines(s)) out.push_back({name, value, why[name]});
   const struct {
@@ -345,6 +348,10 @@ std::vector<KeyDefine> ambientDefines(const VariantKey& k, const Scene& scene) {
   out.push_back({"HV_SPECULAR_OCCLUSION", flag(s.specular_occlusion),
                  settingWhy("specular_occlusion", s.specular_occlusion ? "true" : "false",
                             in.specular_occlusion != s.specular_occlusion, no_ibl)});
+  out.push_back({"HV_AMBIENT_TERMS", std::to_string(int(s.ambient_terms)),
+                 s.ambient_terms == 3
+                     ? "diffuse and specular (all terms)"
+                     : "term mask " + std::to_string(int(s.ambient_terms)) + " (render --aov)"});
   return out;
 }
 

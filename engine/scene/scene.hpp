@@ -166,6 +166,10 @@ struct RenderSettings {
   bool specular_occlusion = false;
   bool uber = false;  // compile every feature in, chosen at run time (docs/variants.md)
   bool operator==(const RenderSettings&) const = default;
+  // Term masks (not scene-file fields; `halfvec render --aov` sets them): bit 1 diffuse, bit 2
+  // specular of direct light (HV_DIRECT_TERMS) and of ambient light (HV_AMBIENT_TERMS).
+  uint8_t direct_terms = 3;
+  uint8_t ambient_terms = 3;
 };
 
 struct Scene {

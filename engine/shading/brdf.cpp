@@ -93,6 +93,7 @@ std::vector<std::pair<std::string, std::string>> brdfDefines(const RenderSetting
       {"HV_SPHERE_NORMALIZATION", flag(s.sphere_normalization)},
       {"HV_TUBE_SPECULAR", num(s.tube_specular)},
       {"HV_TUBE_NORMALIZATION", flag(s.tube_normalization)},
+      {"HV_DIRECT_TERMS", std::to_string(int(s.direct_terms))},
   };
 }
 

@@ -8,6 +8,7 @@
 
 #include "app/commands.hpp"
 #include "ibl/ibl.hpp"
+#include "app/engine_aov.hpp"
 #include "platform/context.hpp"
 #include "render/renderer.hpp"
 #include "scene/enums.hpp"
@@ -33,11 +34,15 @@ Options:
   --uber                compile every feature in, chosen at run time (= --set settings.uber=true);
                         default: programs specialized to the scene (docs/variants.md)
   --no-binary-cache     neither read nor write the on-disk program binary cache
+  --aov DIR             also write the engine's direct_diffuse, direct_specular, ambient_diffuse
+                        and ambient_specular .pfm (lit pixels only, no emissive; one re-render
+                        per term with HV_DIRECT_TERMS / HV_AMBIENT_TERMS), named as the
+                        reference's AOVs so `halfvec compare` pairs them
   -h, --help            this text
 )";
 
 struct RenderArgs {
-  std::string scene, out, hdr, stats;
+  std::string scene, out, hdr, stats, aov;
   std::vector<std::string> overrides;
   int width = 0, height = 0, frames = 1;
   bool binary_cache = true;
@@ -60,6 +65,8 @@ RenderArgs parse(const Args& args) {
       r.hdr = value();
     } else if (a == "--stats") {
       r.stats = value();
+    } else if (a == "--aov") {
+      r.aov = value();
     } else if (a == "--set") {
       r.overrides.push_back(value());
     } else if (a == "--frames") {
@@ -151,6 +158,15 @@ int cmdRender(const Args& args) {
   if (!out_dir.empty()) std::filesystem::create_directories(out_dir);
   writePng(ra.out, renderer.readLdr());
   if (!ra.hdr.empty()) writePfm(ra.hdr, renderer.readHdr());
+  if (!ra.aov.empty()) {
+    const auto aovs = renderEngineAovs(renderer, scene, w, h);
+    std::filesystem::create_directories(ra.aov);
+    for (int k = 0; k < kReferenceAovCount; ++k) {
+      const auto which = static_cast<ReferenceAov>(k);
+      writePfm((std::filesystem::path(ra.aov) / (std::string(toString(which)) + ".pfm")).string(),
+               aovs[size_t(k)]);
+    }
+  }
 
   size_t triangles = 0;
   for (const Object& o : scene.objects) {
@@ -180,6 +196,7 @@ int cmdRender(const Args& args) {
               manifest.binary_misses);
   std::printf("image: %s\n", std::filesystem::absolute(ra.out).string().c_str());
   if (!ra.hdr.empty()) std::printf("hdr: %s\n", std::filesystem::absolute(ra.hdr).string().c_str());
+  if (!ra.aov.empty()) std::printf("aov: %s\n", std::filesystem::absolute(ra.aov).string().c_str());
 
   if (!ra.stats.empty()) {
     nlohmann::ordered_json j;

@@ -12,6 +12,8 @@
 //                               1 = smallest angle (eq. 18) (order of hv::TubeSpecular)
 //  HV_TUBE_NORMALIZATION 1|0    alpha/alpha' line normalization (Karis eq. 20)
 //  HV_HAS_POINT_LIGHTS / HV_HAS_SPHERE_LIGHTS / HV_HAS_TUBE_LIGHTS 1|0: compile that light type
+//  HV_DIRECT_TERMS 3|1|2|0      bit 1 diffuse, bit 2 specular: the terms shadeLight returns (the
+//                               others are 0); for per-term images (`halfvec render --aov`)
 #ifndef HV_LIGHTS_GLSL
 #define HV_LIGHTS_GLSL
 
@@ -45,6 +47,9 @@
 #endif
 #ifndef HV_HAS_TUBE_LIGHTS
 #define HV_HAS_TUBE_LIGHTS 1
+#endif
+#ifndef HV_DIRECT_TERMS
+#define HV_DIRECT_TERMS 3
 #endif
 
 // Light type codes stored (as float) in GpuLight.color_type.w; = hv::LightType.
@@ -164,6 +169,13 @@ vec3 shadeLight(Surface s, vec3 V, float NoV, vec3 Ld, vec3 Ls, vec3 radiant, fl
   float NoH = saturate(dot(s.N, H));
   float VoH = saturate(dot(V, H));
   vec3 specular = specularLobe(s, NoV, NoL, NoH, VoH, spec_norm) * (spec_irr * NoL);
+  // Term mask (HV_DIRECT_TERMS): a term left out is 0; the compiler drops its code.
+#if (HV_DIRECT_TERMS & 1) == 0
+  diffuse = vec3(0.0f);
+#endif
+#if (HV_DIRECT_TERMS & 2) == 0
+  specular = vec3(0.0f);
+#endif
   // Cavity (Karis 2013 "Material Model": small-scale shadowing) multiplies all direct light,
   // diffuse and specular alike, as a shadow factor would.
   return radiant * ((diffuse + specular) * s.cavity);

@@ -34,6 +34,11 @@
 #ifndef HV_SPECULAR_OCCLUSION
 #define HV_SPECULAR_OCCLUSION 0
 #endif
+// Term mask: bit 1 ambient diffuse, bit 2 ambient specular; a term left out is 0 (per-term
+// images, `halfvec render --aov`). Background pixels are drawn whatever the mask.
+#ifndef HV_AMBIENT_TERMS
+#define HV_AMBIENT_TERMS 3
+#endif
 
 layout(local_size_x = HV_TILE_SIZE, local_size_y = HV_TILE_SIZE) in;
 
@@ -110,6 +115,12 @@ void main() {
 #endif
 #if HV_SPECULAR_OCCLUSION
   specular *= specularOcclusion(NoV, s.cavity, s.alpha);
+#endif
+#if (HV_AMBIENT_TERMS & 1) == 0
+  diffuse = vec3(0.0);
+#endif
+#if (HV_AMBIENT_TERMS & 2) == 0
+  specular = vec3(0.0);
 #endif
   imageStore(i_hdr, px, vec4(min(hdr.rgb + diffuse + specular, vec3(HV_HDR_MAX)), hdr.a));
 #endif

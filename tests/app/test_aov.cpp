@@ -1,0 +1,158 @@
+// Engine AOVs (`halfvec render --aov`, app/engine_aov.hpp) and the accuracy sweep command.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "app/cli.hpp"
+#include "app/engine_aov.hpp"
+#include "image/image.hpp"
+#include "platform/context.hpp"
+#include "render/renderer.hpp"
+#include "scene/primitives.hpp"
+
+namespace fs = std::filesystem;
+using namespace hv;
+
+namespace {
+
+fs::path tmp(const std::string& name) {
+  fs::path d = fs::temp_directory_path() / "hv_aov_test";
+  fs::create_directories(d);
+  return d / name;
+}
+
+// A sphere (emissive, default lit) on a floor, one light of each type and a uniform environment:
+// every term is non-zero somewhere.
+Scene aovScene() {
+  Scene s;
+  s.camera.position = {0.0f, 2.0f, 3.5f};
+  s.camera.target = {0.0f, 0.3f, 0.0f};
+  Material m;
+  m.base_color = {0.7f, 0.5f, 0.3f};
+  m.roughness = 0.3f;
+  m.metallic = 0.3f;
+  m.emissive = {0.2f, 0.1f, 0.05f};
+  s.materials.push_back(m);
+  Material floor;
+  floor.roughness = 0.6f;
+  s.materials.push_back(floor);
+  s.meshes.push_back(makeSphere(0.7f, 32, 16));
+  s.meshes.push_back(makePlane(5.0f, 5.0f));
+  s.meshes[0].material = 0;
+  s.meshes[1].material = 1;
+  Object a, b;
+  a.meshes = {0};
+  a.transform[3] = glm::vec4(0, 0.7f, 0, 1);
+  b.meshes = {1};
+  s.objects = {a, b};
+  Light p;
+  p.position = {1.0f, 2.0f, 1.0f};
+  p.intensity = 4.0f;
+  Light sp = p;
+  sp.type = LightType::Sphere;
+  sp.position = {-1.2f, 1.5f, 0.5f};
+  sp.radius = 0.3f;
+  Light tu = p;
+  tu.type = LightType::Tube;
+  tu.position = {0.0f, 2.0f, -1.0f};
+  tu.radius = 0.05f;
+  tu.length = 1.5f;
+  s.lights = {p, sp, tu};
+  s.environment.kind = EnvironmentKind::Uniform;
+  s.environment.color = glm::vec3(0.3f);
+  s.environment.cube_size = 32;
+  s.environment.prefilter_samples = 32;
+  return s;
+}
+
+}  // namespace
+
+// The four AOVs plus the emissive sum to the full HDR image on lit pixels, to the precision of the
+// RGBA16F target: each of the five renders rounds to 2^-11 relative, so 4e-3 of the full value
+// (+ 1e-4 absolute) bounds the difference. Off lit pixels every AOV is 0; each AOV is non-zero on
+// many pixels; the scene's term masks are restored.
+TEST(EngineAov, AovsPlusEmissiveSumToTheFullImage) {
+  auto ctx = createHeadlessContext();
+  Scene s = aovScene();
+  render::Renderer r;
+  r.setScene(s);
+  r.render(96, 72);
+  const ImageRGBf full = r.readHdr();
+  const auto aov = app::renderEngineAovs(r, s, 96, 72);
+  EXPECT_EQ(s.settings.direct_terms, 3);
+  EXPECT_EQ(s.settings.ambient_terms, 3);
+  const auto g = r.readGBuffer();
+  int lit = 0, nonzero[4] = {0, 0, 0, 0};
+  for (size_t i = 0; i < full.px.size(); ++i) {
+    const bool is_lit = g.model[i] == static_cast<uint32_t>(ShadingModel::DefaultLit);
+    glm::vec3 sum(0.0f);
+    for (int k = 0; k < 4; ++k) {
+      sum += aov[size_t(k)].px[i];
+      if (!is_lit) {
+        ASSERT_EQ(aov[size_t(k)].px[i], glm::vec3(0.0f)) << "pixel " << i << " aov " << k;
+      } else if (aov[size_t(k)].px[i].x > 1e-3f) {
+        ++nonzero[k];
+      }
+    }
+    if (!is_lit) continue;
+    ++lit;
+    // Emissive of the pixel's material: the sphere's or 0 (floor), told apart by roughness.
+    const glm::vec3 emissive =
+        std::abs(g.roughness[i] - 0.3f) < 0.01f ? s.materials[0].emissive : glm::vec3(0.0f);
+    for (int c = 0; c < 3; ++c) {
+      ASSERT_NEAR(sum[c] + emissive[c], full.px[i][c], 4e-3f * full.px[i][c] + 1e-4f)
+          << "pixel " << i << " channel " << c;
+    }
+  }
+  EXPECT_GT(lit, 2000);
+  for (int k = 0; k < 4; ++k) EXPECT_GT(nonzero[k], 200) << "aov " << k;
+}
+
+// `halfvec render --aov DIR` writes the four AOVs, finite, at the requested size, non-zero.
+TEST(EngineAov, RenderCommandWritesTheFourAovs) {
+  const fs::path dir = tmp("aov");
+  fs::remove_all(dir);
+  ASSERT_EQ(app::runCli({"render", std::string(HV_SAMPLES_DIR) + "/default.json", "--size", "64x36",
+                         "--out", tmp("aov.png").string(), "--aov", dir.string()}),
+            0);
+  for (const char* n :
+       {"direct_diffuse", "direct_specular", "ambient_diffuse", "ambient_specular"}) {
+    const ImageRGBf img = readPfm((dir / (std::string(n) + ".pfm")).string());
+    EXPECT_EQ(img.width, 64);
+    EXPECT_EQ(img.height, 36);
+    double sum = 0.0;
+    for (auto& p : img.px) {
+      ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) << n;
+      sum += p.x + p.y + p.z;
+    }
+    EXPECT_GT(sum, 0.0) << n;
+  }
+}
+
+// `halfvec accuracy --quick` writes the document with its generated-by header, every section and
+// the heat map it links.
+TEST(Accuracy, QuickSweepWritesTheDocument) {
+  const fs::path dir = tmp("acc");
+  fs::remove_all(dir);
+  const fs::path md = dir / "accuracy.md";
+  ASSERT_EQ(app::runCli({"accuracy", "--quick", "--out", md.string()}), 0);
+  std::ifstream f(md);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  const std::string text = ss.str();
+  EXPECT_EQ(text.rfind("<!-- Generated by `halfvec accuracy --quick`", 0), 0u);
+  for (const char* section : {"## Point lights", "## Sphere lights", "bevy #13327",
+                              "## Tube lights", "## Ambient", "### EnvBRDFApprox vs the table",
+                              "## Sample scenes", "## Summary", "**Worst approximation:**"}) {
+    EXPECT_NE(text.find(section), std::string::npos) << section;
+  }
+  for (const char* bad : {"nan%", "inf%", "nan ", "inf "}) {
+    EXPECT_EQ(text.find(bad), std::string::npos) << bad;
+  }
+  EXPECT_TRUE(fs::exists(dir / "accuracy" / "default.png"));
+  EXPECT_NE(text.find("(accuracy/default.png)"), std::string::npos);
+  EXPECT_EQ(app::runCli({"accuracy", "--bogus"}), 2);
+}
