@@ -98,6 +98,11 @@ struct Context {
   glm::mat4 inv_view_proj;
   bool has_env = false;
   EnvSource env;
+  // EnvironmentKind::Sky: the sun's cone (world direction, cos of its angular radius, 1/omega)
+  // for a third, sun-sampling strategy; the other two almost never hit a 0.27 degree sun.
+  bool has_sun = false;
+  glm::vec3 sun_dir{0.0f, 1.0f, 0.0f};
+  float sun_cos = 1.0f, sun_pdf = 0.0f;
   std::vector<const Light*> point_lights, area_lights;
 };
 
@@ -209,24 +214,37 @@ PixelOut shadePixel(const Context& ctx, size_t index, int x, int y) {
         xs[kDD] += glm::dvec3(f.diffuse * w);
         xs[kDS] += glm::dvec3(f.specular * w);
       }
-      // Environment: one cosine and one VNDF sample, balance heuristic (one sample per
-      // strategy: each contributes f L NoL / (p_cos + p_vndf)).
+      // Environment: one cosine and one VNDF sample (and one in the sun's cone for a sky),
+      // balance heuristic (one sample per strategy: each contributes
+      // f L NoL / (p_cos + p_vndf [+ p_sun])).
       if (ctx.has_env) {
         glm::vec2 u1(rng.uniform(), rng.uniform());
         glm::vec2 u2(rng.uniform(), rng.uniform());
-        glm::vec3 Lt[2];
+        glm::vec3 Lt[3];
+        int strategies = 2;
         Lt[0] = glsl::sampleCosineHemisphere(u1);
         glm::vec3 Ht = glsl::sampleGGXVNDF(Vs, s.alpha, u2);
         Lt[1] = glm::reflect(-Vs, Ht);
-        for (const glm::vec3& lt : Lt) {
+        if (ctx.has_sun) {  // uniform in the cone: cos theta uniform in [sun_cos, 1]
+          glm::vec2 u3(rng.uniform(), rng.uniform());
+          float ct = 1.0f - u3.x * (1.0f - ctx.sun_cos);
+          float st = std::sqrt(std::max(1.0f - ct * ct, 0.0f)), phi = 6.2831853f * u3.y;
+          glm::vec3 sT, sB;
+          glsl::tangentFrame(ctx.sun_dir, sT, sB);
+          glm::vec3 L = sT * (st * std::cos(phi)) + sB * (st * std::sin(phi)) + ctx.sun_dir * ct;
+          Lt[strategies++] = glm::vec3(glm::dot(L, T), glm::dot(L, B), glm::dot(L, N));
+        }
+        for (int k = 0; k < strategies; ++k) {
+          const glm::vec3& lt = Lt[k];
           if (lt.z <= 0.0f) continue;
           glm::vec3 h = glsl::safeNormalize(Vs + lt);
           float VoH = glm::dot(Vs, h);
           float p_cos = glsl::pdfCosineHemisphere(lt.z);
           float p_spec = VoH > 0.0f ? glsl::pdfGGXVNDF(Vs, h, s.alpha) / (4.0f * VoH) : 0.0f;
-          float p = p_cos + p_spec;
-          if (!(p > 0.0f) || !std::isfinite(p)) continue;
           glm::vec3 L = T * lt.x + B * lt.y + N * lt.z;
+          float p_sun = ctx.has_sun && glm::dot(L, ctx.sun_dir) >= ctx.sun_cos ? ctx.sun_pdf : 0.0f;
+          float p = p_cos + p_spec + p_sun;
+          if (!(p > 0.0f) || !std::isfinite(p)) continue;
           Lobes f = brdfLobes(ctx.brdf, s, V, L, false);
           glm::vec3 w = ctx.env.radiance(L) * (lt.z / p);
           xs[kAD] += glm::dvec3(f.diffuse * w * s.cavity);
@@ -280,6 +298,16 @@ ReferenceResult renderReference(const Scene& scene, const render::GBufferReadbac
   if (scene.environment.kind != EnvironmentKind::None) {
     ctx.env = makeEnvSource(scene.environment, opt.sky);
     ctx.has_env = true;
+    if (scene.environment.kind == EnvironmentKind::Sky) {
+      // EnvSource::radiance looks up the unrotated sky at R(-rotation) dir: rotate the sun by +.
+      const glm::vec3 d = skySunDirection(opt.sky);
+      const float a = glm::radians(scene.environment.rotation_deg), c = std::cos(a),
+                  sn = std::sin(a);
+      ctx.sun_dir = glm::normalize(glm::vec3(c * d.x + sn * d.z, d.y, -sn * d.x + c * d.z));
+      ctx.sun_cos = std::cos(glm::radians(opt.sky.sun_angular_radius_deg));
+      ctx.sun_pdf = 1.0f / (6.2831853f * (1.0f - ctx.sun_cos));
+      ctx.has_sun = std::isfinite(ctx.sun_pdf);
+    }
   }
   for (const Light& l : scene.lights) {
     if (l.type == LightType::Point)

@@ -19,6 +19,7 @@ Commands:
   reference SCENE.json  CPU Monte Carlo ground truth over the GPU's G-buffer
   bench                 light-pass scaling tables (ms, light-pixel evaluations per second)
   view SCENE.json       interactive viewer: orbit camera, material/lights/rendering panels
+  trade SCENE.json      speed/accuracy trade report: ms per pass and error per option, presets
 
 Run `halfvec <command> --help` for the options of each command.
 )";
@@ -44,6 +45,7 @@ int runCli(const std::vector<std::string>& args) {
     if (cmd == "bench") return cmdBench(rest);
     if (cmd == "reference") return cmdReference(rest);
     if (cmd == "view") return cmdView(rest);
+    if (cmd == "trade") return cmdTrade(rest);
     std::fprintf(stderr, "halfvec: unknown command '%s' (see halfvec --help)\n", cmd.c_str());
     return 2;
   } catch (const UsageError& e) {

@@ -14,6 +14,7 @@ int cmdStability(const Args& args);
 int cmdBench(const Args& args);
 int cmdReference(const Args& args);
 int cmdView(const Args&);
+int cmdTrade(const Args& args);
 
 // Parses a --size value "WxH" (1..16384 each); throws UsageError naming the bad value.
 void parseSize(const std::string& value, int& width, int& height);
