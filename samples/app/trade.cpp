@@ -24,8 +24,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Bumped whenever the cached reference would change for the same inputs.
-constexpr const char* kReferenceCacheVersion = "trade-reference-v1";
+// Bump whenever engine/reference changes what it computes for the same inputs.
+constexpr const char* kReferenceCacheVersion = "trade-reference-v3";
 
 std::string str(std::string_view s) {
   return std::string(s);
@@ -318,13 +318,6 @@ TradeReport runTrade(const Scene& scene, const TradeOptions& opt) {
   renderer.setScene(work);
   renderer.render(w, h);
   const render::GBufferReadback gb = renderer.readGBuffer();
-  std::vector<bool> lit_mask(gb.model.size());
-  std::vector<size_t> lit;
-  for (size_t i = 0; i < gb.model.size(); ++i) {
-    lit_mask[i] = gb.model[i] == uint32_t(ShadingModel::DefaultLit);
-    if (lit_mask[i]) lit.push_back(i);
-  }
-  rep.lit_pixels = lit.size();
 
   // ---- The reference of the exact configuration, cached by its inputs. ----
   rep.truth = truthSettings(scene.settings);
@@ -381,6 +374,21 @@ TradeReport runTrade(const Scene& scene, const TradeOptions& opt) {
       std::ofstream(meta_path) << j.dump(2) << "\n";
     }
   }
+  // Compared pixels: lit, and the reference converged there.
+  std::vector<bool> lit_mask(gb.model.size());
+  std::vector<size_t> lit;
+  for (size_t i = 0; i < gb.model.size(); ++i) {
+    if (gb.model[i] != uint32_t(ShadingModel::DefaultLit)) continue;
+    const double sum = double(ref.px[i].x) + double(ref.px[i].y) + double(ref.px[i].z);
+    const double se = double(ref_se.px[i].x) + double(ref_se.px[i].y) + double(ref_se.px[i].z);
+    if (!(se <= kMaxReferenceRelError * sum) && se > 0.0) {
+      ++rep.unconverged_pixels;
+      continue;
+    }
+    lit_mask[i] = true;
+    lit.push_back(i);
+  }
+  rep.lit_pixels = lit.size();
   const ImageRGBf ref_lit = litRow(ref, lit);
   {
     double sq = 0.0, abs_ref = 0.0;
@@ -519,13 +527,16 @@ std::string tradeMarkdown(const TradeReport& r, const std::string& prefix, int l
   o << h << " " << sceneName(r) << " (`" << r.scene_path << "`)\n\n";
   o << r.width << "x" << r.height << ", GPU ms = median of " << r.frames
     << " frames after a warm-up frame. Reference: " << r.samples << " samples per pixel over "
-    << r.lit_pixels << " lit pixels"
+    << (r.lit_pixels + r.unconverged_pixels) << " lit pixels"
     << (r.reference_cached ? " (read from the cache; computed in " : " (computed in ")
     << fmtNum(r.reference.seconds, "%.1f")
     << " s); its mean relative standard error of luminance is "
     << fmtNum(r.reference.mean_rel_error, "%.3g") << ", as a relative RMSE the noise is "
     << fmtNum(r.noise_rel_rmse, "%.3g") << " (rows marked `~` are within "
-    << fmtNum(kNoiseFactor, "%g") << "x of it).\n\n";
+    << fmtNum(kNoiseFactor, "%g") << "x of it). Compared: " << r.lit_pixels
+    << " pixels; left out: " << r.unconverged_pixels
+    << " where the reference has not converged (relative standard error > "
+    << fmtNum(kMaxReferenceRelError, "%g") << ").\n\n";
   const auto passes = passNames(r);
   o << "| configuration |";
   for (const auto& p : passes) o << " " << p << " ms |";

@@ -20,6 +20,10 @@ namespace hv::app {
 // A configuration is "within noise" when its relative RMSE is at most this many times the
 // reference's own noise (its standard error expressed as a relative RMSE, TradeReport::noise).
 inline constexpr double kNoiseFactor = 2.0;
+// Lit pixels where the reference has not converged, sum of the channels' standard errors over
+// the sum of the channels above this, are left out of the metrics (and counted): light sampling
+// of small area lights seen in near-mirror surfaces yields rare huge samples (docs/trade.md).
+inline constexpr double kMaxReferenceRelError = 0.25;
 
 struct TradeConfig {
   std::string name;   // "scene", "brdf.v=smith_ggx_correlated", "preset=fast", "exact", ...
@@ -89,9 +93,10 @@ struct TradeReport {
   ReferenceStats reference;
   bool reference_cached = false;
   std::string reference_file;
-  size_t lit_pixels = 0;
-  double noise_rmse = 0.0;      // sqrt(mean of the reference's squared standard error)
-  double noise_rel_rmse = 0.0;  // noise_rmse / mean |reference|, over lit pixels
+  size_t lit_pixels = 0;          // compared pixels: lit, reference converged
+  size_t unconverged_pixels = 0;  // lit pixels left out (kMaxReferenceRelError)
+  double noise_rmse = 0.0;        // sqrt(mean of the reference's squared standard error)
+  double noise_rel_rmse = 0.0;    // noise_rmse / mean |reference|, over lit pixels
   std::vector<TradeRow> rows;
   std::vector<std::string> skipped;
   double max_error = 0.0, max_ms = 0.0;  // the bounds the picks used
