@@ -25,22 +25,22 @@ bool applySettingsPreset(std::string_view name, RenderSettings& s) {
     s.env_brdf = EnvBrdf::Analytic;
     s.irradiance = Irradiance::SH9;
   } else if (name == "balanced") {
-    s.v = VisibilityTerm::SmithGGXCorrelatedFast;
-    s.remap_roughness = false;
-    s.falloff_plus_one = false;
-    s.sphere_diffuse = SphereDiffuse::HorizonCorrect;
+    s.v = VisibilityTerm::SchlickGGX;
+    s.remap_roughness = true;
+    s.falloff_plus_one = true;
+    s.sphere_diffuse = SphereDiffuse::KarisPoint;
     s.sphere_normalization = true;
     s.tube_specular = TubeSpecular::ClosestPointEq19;
     s.tube_normalization = true;
     s.env_brdf = EnvBrdf::Table;
-    s.irradiance = Irradiance::SH9;
+    s.irradiance = Irradiance::Cubemap;
   } else if (name == "accurate") {
-    s.v = VisibilityTerm::SmithGGXCorrelated;
-    s.remap_roughness = false;
+    s.v = VisibilityTerm::SchlickGGX;
+    s.remap_roughness = true;
     s.falloff_plus_one = false;
     s.sphere_diffuse = SphereDiffuse::HorizonCorrect;
     s.sphere_normalization = true;
-    s.tube_specular = TubeSpecular::SmallestAngleEq18;
+    s.tube_specular = TubeSpecular::ClosestPointEq19;
     s.tube_normalization = true;
     s.env_brdf = EnvBrdf::Table;
     s.irradiance = Irradiance::Cubemap;

@@ -32,7 +32,8 @@ Options:
   --doc FILE.md       also write one markdown document with every scene's report (needs --report)
   --size WxH          image size (default 320 wide, the scene's aspect ratio)
   --size-for NAME=WxH the size for the scene file named NAME(.json) (repeatable)
-  --frames N          timed frames per configuration (default 5)
+  --frames N          timed frames per configuration and round (default 5)
+  --rounds R          timing rounds over all configurations, interleaved (default 3)
   --samples N         reference samples per pixel (default 256)
   --max-error E       name the cheapest configuration with rel. RMSE <= E (default 0.05)
   --max-ms T          name the most accurate configuration within T ms (default: the scene's)
@@ -67,6 +68,12 @@ samples/app/trade.hpp):
   over the hemisphere against the full-resolution environment (not the cube map): so the
   representative-point methods, split-sum IBL, SH9, the env BRDF table or fit and the prefilter
   sample count all count as error.
+
+The reference samples the sky's sun explicitly and combines emitter sampling of sphere and tube
+lights with GGX-VNDF directions (multiple importance sampling, docs/reference.md), so glossy
+highlights of small emitters and of the sun converge; lit pixels where it still has not converged
+(the sum of its channels' standard errors above 25%% of the value) are left out and counted per
+scene.
 
 Metrics are over lit (`default_lit`) pixels only, on linear HDR radiance before tone mapping:
 relative RMSE = RMSE / mean |reference|, "bias" = the relative RMSE with the reference's own noise
@@ -178,6 +185,8 @@ int cmdTrade(const Args& args) {
       sizes_for.push_back({stem(v.substr(0, eq)), {w, h}});
     } else if (a == "--frames") {
       opt.frames = positive(value());
+    } else if (a == "--rounds") {
+      opt.rounds = positive(value());
     } else if (a == "--samples") {
       opt.samples = positive(value());
     } else if (a == "--max-error") {

@@ -71,7 +71,8 @@ struct TradeRow {
 
 struct TradeOptions {
   int width = 320, height = 0;  // height 0: from the scene's aspect ratio
-  int frames = 5;               // timed frames after one warm-up frame
+  int frames = 5;               // timed frames after one warm-up frame, per round
+  int rounds = 3;               // timing passes over all configurations (interleaved)
   int samples = 256;            // reference samples per pixel
   double max_error = 0.05;      // relative RMSE bound for the "cheapest within" pick
   double max_ms = 0.0;          // time bound for the "most accurate within" pick; <= 0: scene's
@@ -88,7 +89,7 @@ struct TradeOptions {
 
 struct TradeReport {
   std::string scene_path;
-  int width = 0, height = 0, frames = 0, samples = 0;
+  int width = 0, height = 0, frames = 0, rounds = 0, samples = 0;
   RenderSettings truth;
   ReferenceStats reference;
   bool reference_cached = false;

@@ -30,7 +30,7 @@ hv::Scene tinyScene() {
   hv::Material ball;
   ball.base_color = glm::vec3(0.9f, 0.6f, 0.3f);
   ball.metallic = 1.0f;
-  ball.roughness = 0.4f;
+  ball.roughness = 0.6f;
   s.materials = {floor, ball};
   s.meshes.push_back(hv::makePlane(6.0f, 6.0f));
   s.meshes.back().material = 0;
@@ -138,7 +138,8 @@ TEST(Trade, TinySceneRowsAreConsistent) {
   o.width = 64;
   o.height = 48;
   o.frames = 1;
-  o.samples = 64;
+  o.rounds = 1;
+  o.samples = 128;
   o.threads = 2;
   o.cache_dir = (dir.path / "cache").string();
   o.report_dir = (dir.path / "report").string();

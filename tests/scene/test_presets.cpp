@@ -36,19 +36,19 @@ TEST(Presets, SetWhatTheyClaim) {
   EXPECT_EQ(fast.tube_specular, hv::TubeSpecular::ClosestPointEq19);
 
   const hv::RenderSettings balanced = settingsOf(R"({"preset": "balanced"})");
-  EXPECT_EQ(balanced.v, hv::VisibilityTerm::SmithGGXCorrelated);
-  EXPECT_FALSE(balanced.remap_roughness);
-  EXPECT_FALSE(balanced.falloff_plus_one);
+  EXPECT_EQ(balanced.v, hv::VisibilityTerm::SchlickGGX);
+  EXPECT_TRUE(balanced.remap_roughness);
+  EXPECT_TRUE(balanced.falloff_plus_one);
   EXPECT_EQ(balanced.env_brdf, hv::EnvBrdf::Table);
-  EXPECT_EQ(balanced.irradiance, hv::Irradiance::SH9);
+  EXPECT_EQ(balanced.irradiance, hv::Irradiance::Cubemap);
 
   const hv::RenderSettings accurate = settingsOf(R"({"preset": "accurate"})");
-  EXPECT_EQ(accurate.v, hv::VisibilityTerm::SmithGGXCorrelated);
-  EXPECT_FALSE(accurate.remap_roughness);
+  EXPECT_EQ(accurate.v, hv::VisibilityTerm::SchlickGGX);
+  EXPECT_TRUE(accurate.remap_roughness);
   EXPECT_FALSE(accurate.falloff_plus_one);
   EXPECT_EQ(accurate.sphere_diffuse, hv::SphereDiffuse::HorizonCorrect);
   EXPECT_TRUE(accurate.sphere_normalization);
-  EXPECT_EQ(accurate.tube_specular, hv::TubeSpecular::SmallestAngleEq18);
+  EXPECT_EQ(accurate.tube_specular, hv::TubeSpecular::ClosestPointEq19);
   EXPECT_TRUE(accurate.tube_normalization);
   EXPECT_EQ(accurate.env_brdf, hv::EnvBrdf::Table);
   EXPECT_EQ(accurate.irradiance, hv::Irradiance::Cubemap);
@@ -74,6 +74,7 @@ TEST(Presets, ExplicitSettingsOverrideThePreset) {
   EXPECT_EQ(s.env_brdf, hv::EnvBrdf::Table);               // explicit, although listed first
   EXPECT_EQ(s.v, hv::VisibilityTerm::SmithGGXCorrelated);  // explicit
   EXPECT_EQ(s.irradiance, hv::Irradiance::SH9);            // from the preset
+  EXPECT_TRUE(s.remap_roughness);                          // from the preset
 }
 
 TEST(Presets, BadNameNamesFileAndField) {
