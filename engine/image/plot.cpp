@@ -103,8 +103,8 @@ std::vector<double> logTicks(double lo, double hi) {
   std::vector<double> ticks;
   if (!(lo > 0.0) || !(hi > lo)) return ticks;
   const int k0 = int(std::floor(std::log10(lo))), k1 = int(std::ceil(std::log10(hi)));
-  // Fewer than three decades: 1-2-5 within each decade, else the powers of ten only.
-  const bool fine = k1 - k0 < 3;
+  // At most three decades: 1-2-5 within each decade, else the powers of ten only.
+  const bool fine = k1 - k0 <= 3;
   for (int k = k0; k <= k1; ++k) {
     for (double m : {1.0, 2.0, 5.0}) {
       if (!fine && m != 1.0) continue;
@@ -169,6 +169,12 @@ ImageRGBA8 drawScatterPlot(const ScatterPlot& plot, int width, int height) {
   drawLine(img, left, top, left, bottom, kBlack);
   drawLine(img, left, bottom, right, bottom, kBlack);
   drawText(img, left, 12, plot.title, 2, kBlack);
+  if (!plot.front.empty()) {  // legend
+    const std::string legend = "front (no row faster and more accurate)";
+    const int lx = right - textWidth(legend, 2);
+    fillDisc(img, lx - 12, top - 15, 5, kFront);
+    drawText(img, lx, top - 22, legend, 2, kFront);
+  }
   drawText(img, left, top - 22, plot.y_label, 2, kBlack);
   drawText(img, (left + right - textWidth(plot.x_label, 2)) / 2, height - 26, plot.x_label, 2,
            kBlack);

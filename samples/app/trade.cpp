@@ -450,7 +450,10 @@ TradeReport runTrade(const Scene& scene, const TradeOptions& opt) {
         !opt.report_dir.empty() &&
         (opt.heatmaps == TradeOptions::Heatmaps::All ||
          (opt.heatmaps == TradeOptions::Heatmaps::Presets &&
-          (cfg.group == "scene" || cfg.group == "preset" || cfg.group == "exact")));
+          (cfg.group == "scene" || cfg.group == "preset" || cfg.group == "exact" ||
+           std::any_of(cfg.aliases.begin(), cfg.aliases.end(), [](const std::string& a) {
+             return a.rfind("preset=", 0) == 0 || a == "exact";
+           }))));
     if (want_heat) {
       fs::create_directories(heat_dir);
       row.heatmap = "heatmaps/" + slug(cfg.name) + ".png";
@@ -614,8 +617,11 @@ ImageRGBA8 tradePlot(const TradeReport& r) {
     pt.x = row.total_ms;
     pt.y = row.error.rel_rmse;
     pt.label = row.config.name;
+    for (const std::string& a : row.config.aliases)
+      if (a.rfind("preset=", 0) == 0 || a == "exact") pt.label += " = " + a;
     pt.marked = row.pareto;
-    pt.labeled = row.pareto || row.config.group == "preset" || row.config.group == "scene";
+    pt.labeled = row.pareto || row.config.group == "preset" || row.config.group == "scene" ||
+                 pt.label != row.config.name;
     p.points.push_back(pt);
     if (row.pareto) front.push_back(i);
   }
