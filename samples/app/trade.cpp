@@ -640,22 +640,25 @@ from the tables below:
 
 | preset | sets | why (rows of the tables below) |
 |---|---|---|
-| `fast` | Karis 2013 defaults, `env_brdf: analytic` | the analytic fit removes a texture fetch; its error is a few percent above the table's (`env_brdf=analytic` rows) |
-| `balanced` | Karis 2013 defaults, `irradiance: cubemap` | the irradiance cube map is never worse than SH9 and better on sky-lit scenes (`irradiance=cubemap` rows) for one more fetch |
+| `fast` | Karis 2013 defaults, `env_brdf: analytic` | the analytic fit removes a texture fetch; its relative RMSE is up to 8% above the table's (default), within 1% elsewhere (`env_brdf=analytic` rows) |
+| `balanced` | Karis 2013 defaults, `irradiance: cubemap` | the irradiance cube map's error is equal to or lower than SH9's on every sample scene (`irradiance=cubemap` rows), for one more fetch |
 | `accurate` | `balanced` + `falloff_plus_one: false`, `sphere_diffuse: horizon_correct` | the inverse-square law is the emitter's true falloff: the largest single gain where lights are close to surfaces (`falloff_plus_one=false`, many_lights); the horizon-correct sphere diffuse is exact for a Lambertian lobe (docs/lights.md), equal or better in every table, at no measurable cost. The eq. 18 tube point is not taken: it measured slightly worse than eq. 19 (`tube_specular=smallest_angle_eq18` rows) |
 
-All presets keep `sphere_normalization` and `tube_normalization` on: turning either off is the
-largest error of every table with that light type. `accurate` keeps Schlick's V with the Disney
-remap rather than the exact configuration's height-correlated V without remap: on the sample
-scenes the relative RMSE is dominated by a few highlight pixels where the engine's
-representative-point sphere and tube specular is several times brighter than the reference
-(roughness 0.05 spheres of sphere_grid, the helmet of gltf, the glossy floor of area_lights);
-the exact V and no remap make those highlights brighter still, and so does the inverse-square
-falloff, which is why `accurate` (and `exact`) have a higher relative RMSE than the scene's own
-settings on sphere_grid and gltf while their 99th-percentile error is lower or equal. The
-`exact` row (the reference's own BRDF with the engine's best light and environment methods) has
-the lowest error only where such highlights do not dominate (the CI scene of
-tests/app/test_trade.cpp, many_lights' p99).
+All presets keep `sphere_normalization` and `tube_normalization` on: turning sphere
+normalization off gives by far the largest error on every scene with sphere lights except
+many_lights (where it is neutral), turning tube normalization off the largest on default. `accurate` keeps Schlick's V with the Disney remap rather than the exact
+configuration's height-correlated V without remap. On the sample scenes the relative RMSE is
+dominated by a few highlight pixels where the engine's representative-point sphere and tube
+specular is several times brighter than the reference (the roughness-0.05 spheres of
+sphere_grid, the helmet of gltf, the glossy floor of area_lights): the exact V and no remap make
+those highlights brighter still, and so does the inverse-square falloff. Hence `accurate` and
+`exact` have a higher relative RMSE than the scene's own settings on sphere_grid and gltf (and
+`exact` on area_lights), and a higher 99th-percentile error on area_lights; on default and
+many_lights both are lower. For the same reason the lowest-error rows of several tables are V
+terms that do not belong to GGX (`implicit`, `smith_beckmann_separable`, `cook_torrance`): they
+darken glossy highlights and so offset the overestimate, which is no reason to choose them. The
+`exact` row is the lowest only where such highlights do not dominate (the CI scene of
+tests/app/test_trade.cpp).
 
 Times: on llvmpipe the spread between runs of one configuration is larger than any difference
 between configurations (compare the identical-cost rows `sphere_diffuse`, `culling`,
