@@ -217,6 +217,82 @@ uint32_t Rng::next() {
   return (xorshifted >> rot) | (xorshifted << ((32u - rot) & 31u));
 }
 
+float windowDistance2(const Light& light, const glm::vec3& P) {
+  if (light.type != LightType::Tube) {
+    const glm::vec3 d = light.position - P;
+    return glm::dot(d, d);
+  }
+  const float len = std::max(light.length, 0.0f);
+  const glm::vec3 axis = glm::normalize(light.axis);
+  const glm::vec3 L0 = light.position - axis * (0.5f * len) - P;
+  const float tp = len > 0.0f ? glsl::saturate(-glm::dot(L0, axis) / len) : 0.0f;
+  const glm::vec3 Lp = L0 + axis * (tp * len);
+  return glm::dot(Lp, Lp);
+}
+
+LightSample evalLight(const Light& light, const RenderSettings& settings, const glm::vec3& P,
+                      const glm::vec3& L) {
+  LightSample ls;
+  ls.L = L;
+  const float r = light.radius;
+  if (r <= 0.0f) return ls;
+  if (light.type == LightType::Sphere) {
+    const glm::vec3 Lc = light.position - P;
+    const float d2 = glm::dot(Lc, Lc), r2 = r * r;
+    if (d2 <= r2) {
+      ls.pdf = 1.0f / (4.0f * kPi);
+    } else {  // L sees the sphere iff it lies in the cone sampleSphere draws from
+      const float sin2 = r2 / d2;
+      const float cos_max = std::sqrt(std::max(0.0f, 1.0f - sin2));
+      if (glm::dot(L, Lc) < cos_max * std::sqrt(d2)) return ls;
+      ls.pdf = 1.0f / (2.0f * kPi * (sin2 / (1.0f + cos_max)));
+    }
+    ls.radiance = emitterRadiance(light, settings, d2);
+    return ls;
+  }
+  if (light.type != LightType::Tube) return ls;
+  // Front hit of the ray P + t L on the capsule (segment pa-pb, radius r): the cylinder's body,
+  // else the cap sphere on the side the infinite cylinder's hit falls (Quilez's capsule test), in
+  // double: the quadratic cancels badly near the silhouette, where cos_e is small.
+  const double len = std::max(light.length, 0.0f), rr = double(r) * r;
+  const glm::dvec3 axis = glm::normalize(glm::dvec3(light.axis)), Pd(P), Ld(L);
+  const glm::dvec3 pa = glm::dvec3(light.position) - axis * (0.5 * len), pb = pa + axis * len;
+  auto sphereHit = [&](const glm::dvec3& c) {
+    const glm::dvec3 oc = Pd - c;
+    const double b = glm::dot(Ld, oc), cc = glm::dot(oc, oc) - rr, h = b * b - cc;
+    return h > 0.0 ? -b - std::sqrt(h) : -1.0;
+  };
+  double t = -1.0;
+  const glm::dvec3 ba = pb - pa, oa = Pd - pa;
+  const double baba = glm::dot(ba, ba), bard = glm::dot(ba, Ld), baoa = glm::dot(ba, oa);
+  const double a = baba - bard * bard;
+  if (baba <= 1e-18) {
+    t = sphereHit(glm::dvec3(light.position));
+  } else if (a > 1e-12 * baba) {
+    const double b = baba * glm::dot(Ld, oa) - baoa * bard;
+    const double c = baba * glm::dot(oa, oa) - baoa * baoa - rr * baba;
+    const double h = b * b - a * c;
+    if (h >= 0.0) {
+      t = (-b - std::sqrt(h)) / a;
+      const double y = baoa + t * bard;
+      if (!(y > 0.0 && y < baba)) t = sphereHit(y <= 0.0 ? pa : pb);
+    }
+  } else {  // ray parallel to the axis: the nearer cap
+    t = sphereHit(bard > 0.0 ? pa : pb);
+  }
+  if (!(t > 0.0)) return ls;
+  const glm::dvec3 x = Pd + t * Ld;
+  const double sx = std::clamp(glm::dot(x - pa, axis) / std::max(len, 1e-12), 0.0, 1.0);
+  const glm::dvec3 n = glm::normalize(x - (pa + axis * (sx * len)));
+  const float cos_e = float(-glm::dot(n, Ld));
+  if (cos_e <= 0.0f) return ls;
+  const float lenf = float(len);
+  const float area = 2.0f * kPi * r * lenf + 4.0f * kPi * r * r;
+  ls.pdf = float(t * t) / (area * cos_e);
+  ls.radiance = emitterRadiance(light, settings, windowDistance2(light, P));
+  return ls;
+}
+
 float falloff(const RenderSettings& settings, float d2, float radius, float range) {
   const float d2c = std::max(d2, std::max(radius * radius, glsl::HV_MIN_LIGHT_DIST2));
   return window(d2, range) / (d2c + (settings.falloff_plus_one ? 1.0f : 0.0f));

@@ -54,4 +54,14 @@ glm::vec3 emitterRadianceAt(const Light& light, const RenderSettings& settings, 
 // the ray on the capsule (union of the cylinder and the two end spheres), dist^2 / (A cos_e).
 float lightPdf(const Light& light, const glm::vec3& P, const glm::vec3& L);
 
+// The light strategy's side of a direction L drawn by another strategy (multiple importance
+// sampling): the radiance arriving along L and sampleLight's solid-angle pdf of L, or pdf = 0
+// and no radiance when L misses the emitter (tube: the capsule's front hit along the ray).
+LightSample evalLight(const Light& light, const RenderSettings& settings, const glm::vec3& P,
+                      const glm::vec3& L);
+
+// Squared distance from P to the light's window point (sphere: center; tube: closest point of
+// the segment); beyond light.range the light contributes exactly 0.
+float windowDistance2(const Light& light, const glm::vec3& P);
+
 }  // namespace hv::reference_detail

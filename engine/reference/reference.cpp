@@ -103,6 +103,11 @@ struct Context {
   EnvSource env;
   // Luminance sampling of a non-uniform environment (null for uniform: cosine + VNDF suffice).
   std::unique_ptr<reference_detail::EnvDistribution> env_dist;
+  // EnvironmentKind::Sky: the sun's cone (world direction, cos of its angular radius, 1/omega)
+  // for a third, sun-sampling strategy; the other two almost never hit a 0.27 degree sun.
+  bool has_sun = false;
+  glm::vec3 sun_dir{0.0f, 1.0f, 0.0f};
+  float sun_cos = 1.0f, sun_pdf = 0.0f;
   std::vector<const Light*> point_lights, area_lights;
 };
 
@@ -183,25 +188,54 @@ PixelOut shadePixel(const Context& ctx, size_t index, int x, int y) {
     for (; n < end; ++n) {
       glm::dvec3 xs[kReferenceAovCount] = {glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0),
                                            glm::dvec3(0.0)};
-      // Area lights: one sample each (solid-angle pdf from the emitter's sampler).
-      for (const Light* l : ctx.area_lights) {
-        reference_detail::LightSample ls =
-            reference_detail::sampleLight(*l, settings, P, glm::vec2(rng.uniform(), rng.uniform()));
-        if (ls.pdf <= 0.0f) continue;
-        float NoL = glsl::saturate(glm::dot(N, ls.L));
-        if (NoL <= 0.0f) continue;  // below the horizon
-        Lobes f = brdfLobes(ctx.brdf, s, V, ls.L, true);
-        glm::vec3 w = ls.radiance * (NoL * s.cavity / ls.pdf);
-        xs[kDD] += glm::dvec3(f.diffuse * w);
-        xs[kDS] += glm::dvec3(f.specular * w);
+      // Area lights: per light one sample of the emitter's sampler and one GGX-VNDF direction
+      // (shared by the lights), balance heuristic: each contributes f L NoL / (p_light + p_vndf).
+      // Without the VNDF strategy a glossy surface's highlight of a small emitter is found by
+      // few emitter samples (rare huge values, an underestimate in between).
+      if (!ctx.area_lights.empty()) {
+        glm::vec3 Lv(0.0f);
+        bool vndf_ok = false;
+        {
+          glm::vec3 Ht = glsl::sampleGGXVNDF(Vs, s.alpha, glm::vec2(rng.uniform(), rng.uniform()));
+          glm::vec3 lt = glm::reflect(-Vs, Ht);
+          vndf_ok = lt.z > 0.0f;
+          Lv = T * lt.x + B * lt.y + N * lt.z;
+        }
+        auto pdfVndf = [&](const glm::vec3& L) {
+          glm::vec3 lt(glm::dot(L, T), glm::dot(L, B), glm::dot(L, N));
+          if (lt.z <= 0.0f) return 0.0f;
+          glm::vec3 h = glsl::safeNormalize(Vs + lt);
+          float VoH = glm::dot(Vs, h);
+          return VoH > 0.0f ? glsl::pdfGGXVNDF(Vs, h, s.alpha) / (4.0f * VoH) : 0.0f;
+        };
+        auto add = [&](const reference_detail::LightSample& ls, float p_vndf) {
+          float NoL = glsl::saturate(glm::dot(N, ls.L));
+          float p = ls.pdf + p_vndf;
+          if (NoL <= 0.0f || !(p > 0.0f) || !std::isfinite(p)) return;  // below the horizon
+          Lobes f = brdfLobes(ctx.brdf, s, V, ls.L, true);
+          glm::vec3 w = ls.radiance * (NoL * s.cavity / p);
+          xs[kDD] += glm::dvec3(f.diffuse * w);
+          xs[kDS] += glm::dvec3(f.specular * w);
+        };
+        for (const Light* l : ctx.area_lights) {
+          const glm::vec2 u(rng.uniform(), rng.uniform());
+          // Beyond the range window the light contributes exactly 0.
+          if (reference_detail::windowDistance2(*l, P) >= l->range * l->range) continue;
+          reference_detail::LightSample ls = reference_detail::sampleLight(*l, settings, P, u);
+          if (ls.pdf > 0.0f) add(ls, pdfVndf(ls.L));
+          if (vndf_ok) {
+            reference_detail::LightSample lv = reference_detail::evalLight(*l, settings, P, Lv);
+            if (lv.pdf > 0.0f) add(lv, pdfVndf(Lv));
+          }
+        }
       }
-      // Environment: one cosine, one VNDF and (non-uniform environments) one luminance-sampled
-      // direction, balance heuristic with one sample per strategy: each contributes
-      // f L NoL / (p_cos + p_vndf + p_env).
+      // Environment: one cosine, one VNDF, (non-uniform environments) one luminance-sampled and
+      // (sky) one sun-cone direction; balance heuristic with one sample per strategy: each
+      // contributes f L NoL / (p_cos + p_vndf + p_env + p_sun).
       if (ctx.has_env) {
         glm::vec2 u1(rng.uniform(), rng.uniform());
         glm::vec2 u2(rng.uniform(), rng.uniform());
-        glm::vec3 Lw[3];
+        glm::vec3 Lw[4];
         int count = 2;
         glm::vec3 lt0 = glsl::sampleCosineHemisphere(u1);
         Lw[0] = T * lt0.x + B * lt0.y + N * lt0.z;
@@ -210,8 +244,15 @@ PixelOut shadePixel(const Context& ctx, size_t index, int x, int y) {
         Lw[1] = T * lt1.x + B * lt1.y + N * lt1.z;
         if (ctx.env_dist) {
           float unused_pdf = 0.0f;
-          Lw[2] = ctx.env_dist->sample(glm::vec2(rng.uniform(), rng.uniform()), unused_pdf);
-          count = 3;
+          Lw[count++] = ctx.env_dist->sample(glm::vec2(rng.uniform(), rng.uniform()), unused_pdf);
+        }
+        if (ctx.has_sun) {  // uniform in the cone: cos theta uniform in [sun_cos, 1]
+          glm::vec2 u3(rng.uniform(), rng.uniform());
+          float ct = 1.0f - u3.x * (1.0f - ctx.sun_cos);
+          float st = std::sqrt(std::max(1.0f - ct * ct, 0.0f)), phi = 6.2831853f * u3.y;
+          glm::vec3 sT, sB;
+          glsl::tangentFrame(ctx.sun_dir, sT, sB);
+          Lw[count++] = sT * (st * std::cos(phi)) + sB * (st * std::sin(phi)) + ctx.sun_dir * ct;
         }
         for (int k = 0; k < count; ++k) {
           const glm::vec3 L = glm::normalize(Lw[k]);
@@ -222,7 +263,8 @@ PixelOut shadePixel(const Context& ctx, size_t index, int x, int y) {
           float p_cos = glsl::pdfCosineHemisphere(lt.z);
           float p_spec = VoH > 0.0f ? glsl::pdfGGXVNDF(Vs, h, s.alpha) / (4.0f * VoH) : 0.0f;
           float p_env = ctx.env_dist ? ctx.env_dist->pdf(L) : 0.0f;
-          float p = p_cos + p_spec + p_env;
+          float p_sun = ctx.has_sun && glm::dot(L, ctx.sun_dir) >= ctx.sun_cos ? ctx.sun_pdf : 0.0f;
+          float p = p_cos + p_spec + p_env + p_sun;
           if (!(p > 0.0f) || !std::isfinite(p)) continue;
           Lobes f = brdfLobes(ctx.brdf, s, V, L, false);
           glm::vec3 w = ctx.env.radiance(L) * (lt.z / p);
@@ -279,6 +321,16 @@ ReferenceResult renderReference(const Scene& scene, const render::GBufferReadbac
     ctx.has_env = true;
     if (scene.environment.kind != EnvironmentKind::Uniform) {
       ctx.env_dist = std::make_unique<reference_detail::EnvDistribution>(ctx.env);
+    }
+    if (scene.environment.kind == EnvironmentKind::Sky) {
+      // EnvSource::radiance looks up the unrotated sky at R(-rotation) dir: rotate the sun by +.
+      const glm::vec3 d = skySunDirection(opt.sky);
+      const float a = glm::radians(scene.environment.rotation_deg), c = std::cos(a),
+                  sn = std::sin(a);
+      ctx.sun_dir = glm::normalize(glm::vec3(c * d.x + sn * d.z, d.y, -sn * d.x + c * d.z));
+      ctx.sun_cos = std::cos(glm::radians(opt.sky.sun_angular_radius_deg));
+      ctx.sun_pdf = 1.0f / (6.2831853f * (1.0f - ctx.sun_cos));
+      ctx.has_sun = std::isfinite(ctx.sun_pdf);
     }
   }
   for (const Light& l : scene.lights) {

@@ -16,6 +16,7 @@
 
 #include "scene/enums.hpp"
 #include "scene/gltf_loader.hpp"
+#include "scene/presets.hpp"
 #include "scene/primitives.hpp"
 
 namespace hv {
@@ -448,10 +449,18 @@ Environment parseEnvironment(const Ctx& ctx, const json& j) {
 
 RenderSettings parseSettings(const Ctx& ctx, const json& j) {
   Obj o(ctx, j, "/settings",
-        {"width", "height", "exposure", "tone_map", "gamma", "dither", "brdf", "falloff_plus_one",
-         "sphere_diffuse", "sphere_normalization", "tube_specular", "tube_normalization", "culling",
-         "env_brdf", "energy_compensation", "irradiance", "specular_occlusion", "uber"});
+        {"preset", "width", "height", "exposure", "tone_map", "gamma", "dither", "brdf",
+         "falloff_plus_one", "sphere_diffuse", "sphere_normalization", "tube_specular",
+         "tube_normalization", "culling", "env_brdf", "energy_compensation", "irradiance",
+         "specular_occlusion", "uber"});
   RenderSettings s;
+  if (o.has("preset")) {  // first, so that the explicit settings below override it
+    const std::string name = o.string("preset", "");
+    if (!applySettingsPreset(name, s)) {
+      o.fail("preset", "unknown preset \"" + name + "\"" + didYouMean(name, settingsPresetNames()) +
+                           " (expected one of: " + joinNames(settingsPresetNames()) + ")");
+    }
+  }
   s.width = o.integer("width", s.width, 1, 16384);
   s.height = o.integer("height", s.height, 1, 16384);
   s.exposure = o.num("exposure", s.exposure, kPositive);

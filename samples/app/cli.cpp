@@ -20,6 +20,7 @@ Commands:
   bench                 light-pass scaling tables (ms, light-pixel evaluations per second)
   view SCENE.json       interactive viewer: orbit camera, material/lights/rendering panels
   accuracy              sweep of every approximation vs the reference -> docs/accuracy.md
+  trade SCENE.json      speed/accuracy trade report: ms per pass and error per option, presets
 
 Run `halfvec <command> --help` for the options of each command.
 )";
@@ -46,6 +47,7 @@ int runCli(const std::vector<std::string>& args) {
     if (cmd == "reference") return cmdReference(rest);
     if (cmd == "view") return cmdView(rest);
     if (cmd == "accuracy") return cmdAccuracy(rest);
+    if (cmd == "trade") return cmdTrade(rest);
     std::fprintf(stderr, "halfvec: unknown command '%s' (see halfvec --help)\n", cmd.c_str());
     return 2;
   } catch (const UsageError& e) {

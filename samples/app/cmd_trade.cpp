@@ -1,0 +1,258 @@
+// `halfvec trade`: the speed/accuracy trade report of a scene (samples/app/trade.hpp,
+// docs/trade.md).
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "app/commands.hpp"
+#include "app/trade.hpp"
+#include "image/image.hpp"
+#include "platform/context.hpp"
+#include "scene/presets.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace hv::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+constexpr const char* kHelp = R"(Usage: halfvec trade SCENE.json [SCENE.json ...] [options]
+
+For each accuracy/speed option that applies to the scene (BRDF terms, roughness remap, falloff,
+sphere and tube light methods, culling, environment BRDF, irradiance, prefilter samples, energy
+compensation, specular occlusion) renders the scene with that one option changed, and with the
+presets fast / balanced / accurate and the exact configuration; times every pass (median of N
+frames after a warm-up) and compares the HDR image with the CPU reference of the exact
+configuration over lit pixels (computed once, cached on disk). See docs/trade.md.
+
+Options:
+  --report DIR        write trade.md, trade.csv, plot.png and heatmaps/ (DIR/<scene>/ when
+                      several scenes are given); without it the table goes to stdout
+  --doc FILE.md       also write one markdown document with every scene's report (needs --report)
+  --size WxH          image size (default 320 wide, the scene's aspect ratio)
+  --size-for NAME=WxH the size for the scene file named NAME(.json) (repeatable)
+  --frames N          timed frames per configuration and round (default 5)
+  --rounds R          timing rounds over all configurations, interleaved (default 3)
+  --samples N         reference samples per pixel (default 256)
+  --max-error E       name the cheapest configuration with rel. RMSE <= E (default 0.05)
+  --max-ms T          name the most accurate configuration within T ms (default: the scene's)
+  --heatmaps WHICH    all | presets (scene, presets, exact) | none (default all)
+  --no-cache          recompute the reference (and do not store it)
+  --cache DIR         reference cache folder (default: <halfvec cache>/reference)
+  --threads N         reference worker threads (default: all cores)
+)";
+
+constexpr const char* kDocIntro =
+    R"(This file is generated: do not edit it by hand. It is written by
+
+    %s
+
+(`halfvec trade --help`; the code is samples/app/trade.cpp). For every sample scene it renders the
+scene under one-at-a-time changes of each accuracy/speed option that applies to it, the presets and
+the exact configuration, and measures time and error.
+
+## What "error" is relative to
+
+The truth is the CPU reference renderer (docs/reference.md) run on the engine's own G-buffer with
+the **exact configuration** of the scene's material model (`truthSettings` in
+samples/app/trade.hpp):
+
+- the scene's D term, Fresnel (Schlick's SG fit replaced by Schlick's pow5, which it
+  approximates), diffuse term, energy compensation and specular occlusion: these define the
+  material, so rows changing them measure a different material, not an approximation;
+- the exact V term for the D term: height-correlated Smith for GGX (Heitz 2014), Walter's
+  Beckmann Smith for Beckmann; no Disney roughness remap (a look choice of Karis 2013 for
+  analytic lights); the inverse-square falloff (no +1);
+- sphere and tube lights integrated over the emitter by Monte Carlo, the environment integrated
+  over the hemisphere against the full-resolution environment (not the cube map): so the
+  representative-point methods, split-sum IBL, SH9, the env BRDF table or fit and the prefilter
+  sample count all count as error.
+
+The reference samples the sky's sun explicitly and combines emitter sampling of sphere and tube
+lights with GGX-VNDF directions (multiple importance sampling, docs/reference.md), so glossy
+highlights of small emitters and of the sun converge; lit pixels where it still has not converged
+(the sum of its channels' standard errors above 25%% of the value) are left out and counted per
+scene.
+
+Metrics are over lit (`default_lit`) pixels only, on linear HDR radiance before tone mapping:
+relative RMSE = RMSE / mean |reference|, "bias" = the relative RMSE with the reference's own noise
+removed (sqrt(RMSE^2 - noise^2)), p99 = the 99th percentile of the per-pixel relative error, max
+abs = the largest channel difference (engine/image/metrics.hpp). The reference is a Monte Carlo
+estimate: its standard error, expressed as a relative RMSE, is given per scene; rows within %gx of
+it are marked `~` and cannot be told apart from the exact image. "front" marks the Pareto front of
+(total ms, relative RMSE); the heat maps show the per-pixel relative error on a 0 to %g scale.
+
+Times are GPU timer queries on the machine that ran the command (its renderer string is below);
+on llvmpipe (Mesa's CPU rasterizer) they are CPU times shared with other work and noisy: compare
+ratios within one scene, not absolute values.
+)";
+
+struct SceneRun {
+  std::string path;
+  TradeReport report;
+  std::string dir;
+};
+
+std::string stem(const std::string& p) {
+  return fs::path(p).stem().string();
+}
+
+void writeDoc(const std::string& file, const std::string& command, const std::string& renderer,
+              const std::vector<SceneRun>& runs, const TradeOptions& opt) {
+  std::ostringstream o;
+  char intro[8192];
+  std::snprintf(intro, sizeof intro, kDocIntro, command.c_str(), kNoiseFactor,
+                double(opt.heatmap_max));
+  o << "# Speed/accuracy trade report\n\n" << intro << "\nRenderer: " << renderer << ".\n\n";
+  o << "## Presets\n\n" << presetRationale() << "\n";
+  o << "Measured (total GPU ms / relative RMSE against the exact reference):\n\n";
+  o << "| scene | size | scene's settings | fast | balanced | accurate | exact |\n";
+  o << "|---|---|---:|---:|---:|---:|---:|\n";
+  for (const SceneRun& run : runs) {
+    const TradeReport& r = run.report;
+    auto cell = [&](const std::string& name) -> std::string {
+      for (const TradeRow& row : r.rows) {
+        bool match = row.config.name == name;
+        for (const auto& a : row.config.aliases) match |= a == name;
+        if (!match) continue;
+        char buf[96];
+        std::snprintf(buf, sizeof buf, "%.3f ms / %.4f%s", row.total_ms, row.error.rel_rmse,
+                      row.within_noise ? " ~" : "");
+        return buf;
+      }
+      return "-";
+    };
+    o << "| " << stem(run.path) << " | " << r.width << "x" << r.height << " | " << cell("scene")
+      << " | " << cell("preset=fast") << " | " << cell("preset=balanced") << " | "
+      << cell("preset=accurate") << " | " << cell("exact") << " |\n";
+  }
+  o << "\n";
+  const fs::path doc_dir = fs::absolute(fs::path(file)).parent_path();
+  for (const SceneRun& run : runs) {
+    std::string prefix = fs::relative(fs::absolute(run.dir), doc_dir).generic_string();
+    if (!prefix.empty() && prefix.back() != '/') prefix += "/";
+    o << tradeMarkdown(run.report, prefix, 2) << "\n";
+  }
+  if (fs::absolute(file).has_parent_path()) fs::create_directories(doc_dir);
+  std::ofstream(file) << o.str();
+}
+}  // namespace
+
+int cmdTrade(const Args& args) {
+  std::vector<std::string> scenes;
+  std::vector<std::pair<std::string, std::pair<int, int>>> sizes_for;
+  std::string report, doc;
+  TradeOptions opt;
+  bool size_given = false;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= args.size()) throw UsageError{a + " needs a value"};
+      return args[++i];
+    };
+    auto positive = [&](const std::string& v) {
+      char* end = nullptr;
+      const long n = std::strtol(v.c_str(), &end, 10);
+      if (!end || *end || n < 1 || n > 1000000) {
+        throw UsageError{a + " expects a positive integer, got '" + v + "'"};
+      }
+      return int(n);
+    };
+    auto number = [&](const std::string& v) {
+      char* end = nullptr;
+      const double x = std::strtod(v.c_str(), &end);
+      if (!end || *end || !(x > 0.0))
+        throw UsageError{a + " expects a number > 0, got '" + v + "'"};
+      return x;
+    };
+    if (a == "--help" || a == "-h") {
+      std::fputs(kHelp, stdout);
+      return 0;
+    } else if (a == "--report") {
+      report = value();
+    } else if (a == "--doc") {
+      doc = value();
+    } else if (a == "--size") {
+      parseSize(value(), opt.width, opt.height);
+      size_given = true;
+    } else if (a == "--size-for") {
+      const std::string v = value();
+      const size_t eq = v.find('=');
+      if (eq == std::string::npos || eq == 0) throw UsageError{"--size-for expects NAME=WxH"};
+      int w = 0, h = 0;
+      parseSize(v.substr(eq + 1), w, h);
+      sizes_for.push_back({stem(v.substr(0, eq)), {w, h}});
+    } else if (a == "--frames") {
+      opt.frames = positive(value());
+    } else if (a == "--rounds") {
+      opt.rounds = positive(value());
+    } else if (a == "--samples") {
+      opt.samples = positive(value());
+    } else if (a == "--max-error") {
+      opt.max_error = number(value());
+    } else if (a == "--max-ms") {
+      opt.max_ms = number(value());
+    } else if (a == "--heatmaps") {
+      const std::string v = value();
+      if (v == "all") {
+        opt.heatmaps = TradeOptions::Heatmaps::All;
+      } else if (v == "presets") {
+        opt.heatmaps = TradeOptions::Heatmaps::Presets;
+      } else if (v == "none") {
+        opt.heatmaps = TradeOptions::Heatmaps::None;
+      } else {
+        throw UsageError{"--heatmaps expects all, presets or none, got '" + v + "'"};
+      }
+    } else if (a == "--no-cache") {
+      opt.use_cache = false;
+    } else if (a == "--cache") {
+      opt.cache_dir = value();
+    } else if (a == "--threads") {
+      opt.threads = positive(value());
+    } else if (!a.empty() && a[0] == '-') {
+      throw UsageError{"unknown option '" + a + "'"};
+    } else {
+      scenes.push_back(a);
+    }
+  }
+  if (scenes.empty()) throw UsageError{"no scene file given"};
+  if (!doc.empty() && report.empty()) throw UsageError{"--doc needs --report"};
+  std::string command = "halfvec trade";
+  for (const std::string& a : args) command += " " + a;
+
+  // Load every scene first: a bad file fails before any rendering.
+  std::vector<Scene> loaded;
+  for (const std::string& s : scenes) loaded.push_back(loadScene(s));
+  auto ctx = createHeadlessContext();
+  opt.progress = [](const std::string& line) { std::fprintf(stderr, "trade: %s\n", line.c_str()); };
+  std::vector<SceneRun> runs;
+  for (size_t k = 0; k < scenes.size(); ++k) {
+    TradeOptions o = opt;
+    if (!size_given) o.height = 0;
+    for (const auto& [name, wh] : sizes_for) {
+      if (name == stem(scenes[k])) o.width = wh.first, o.height = wh.second;
+    }
+    SceneRun run;
+    run.path = scenes[k];
+    if (!report.empty())
+      run.dir = scenes.size() > 1 ? (fs::path(report) / stem(scenes[k])).string() : report;
+    o.report_dir = run.dir;
+    std::fprintf(stderr, "trade: %s\n", scenes[k].c_str());
+    run.report = runTrade(loaded[k], o);
+    if (run.dir.empty()) {
+      std::fputs(tradeMarkdown(run.report, "", 1).c_str(), stdout);
+    } else {
+      writeTradeReport(run.report, run.dir);
+      std::printf("%s: %s/trade.md, trade.csv, plot.png\n", scenes[k].c_str(), run.dir.c_str());
+    }
+    runs.push_back(std::move(run));
+  }
+  if (!doc.empty()) {
+    writeDoc(doc, command, ctx->renderer(), runs, opt);
+    std::printf("wrote %s\n", doc.c_str());
+  }
+  return 0;
+}
+
+}  // namespace hv::app

@@ -1,0 +1,130 @@
+// The speed/accuracy trade report behind `halfvec trade` (docs/trade.md): renders a scene under
+// one-at-a-time deviations of its accuracy/speed options and under the presets, times every pass
+// (median of N frames after a warm-up) and measures each image's error against the CPU reference
+// of the physically exact configuration (truthSettings), computed once and cached on disk.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "image/image.hpp"
+#include "image/metrics.hpp"
+#include "reference/reference.hpp"
+#include "scene/scene.hpp"
+
+namespace hv::app {
+
+// A configuration is "within noise" when its relative RMSE is at most this many times the
+// reference's own noise (its standard error expressed as a relative RMSE, TradeReport::noise).
+inline constexpr double kNoiseFactor = 2.0;
+// Lit pixels where the reference has not converged, sum of the channels' standard errors over
+// the sum of the channels above this, are left out of the metrics (and counted): light sampling
+// of small area lights seen in near-mirror surfaces yields rare huge samples (docs/trade.md).
+inline constexpr double kMaxReferenceRelError = 0.25;
+
+struct TradeConfig {
+  std::string name;   // "scene", "brdf.v=smith_ggx_correlated", "preset=fast", "exact", ...
+  std::string group;  // scene, brdf, lights, culling, environment, preset, exact
+  RenderSettings settings;
+  int prefilter_samples = 256;       // Environment::prefilter_samples
+  std::vector<std::string> aliases;  // names of identical configurations merged into this one
+};
+
+// What the reference integrates: the scene's material model (D, F, diffuse term, energy
+// compensation, specular occlusion) with the approximations of the BRDF replaced by the exact
+// terms: V = the exact height-correlated Smith term for GGX (Heitz 2014) or Walter's Beckmann
+// Smith for Beckmann (Blinn-Phong keeps the scene's V), Schlick's F in place of its spherical-
+// Gaussian fit, no Disney roughness remap, the inverse-square falloff (no +1). Area lights and
+// the environment are integrated exactly by the reference whatever the scene's methods.
+RenderSettings truthSettings(const RenderSettings& s);
+
+// True when every field of a and b is equal.
+bool sameSettings(const RenderSettings& a, const RenderSettings& b);
+
+struct TradePlan {
+  std::vector<TradeConfig> configs;  // first: "scene" (the scene's own settings)
+  std::vector<std::string> skipped;  // options left out for this scene, each with the reason
+};
+
+// The configurations for `scene`: its own settings, one row per other value of each option that
+// applies to it (BRDF terms; the falloff and the sphere/tube methods only with lights of that
+// type; brute-force culling only with at most `max_brute_force_lights` lights; the environment
+// options only with an environment, the prefilter sample count only for a non-uniform one), the
+// presets applied on top of the scene's settings, and "exact": truthSettings plus the most
+// accurate light and environment methods. Identical configurations are merged (aliases).
+TradePlan tradePlan(const Scene& scene, int max_brute_force_lights = 64);
+
+struct TradeRow {
+  TradeConfig config;
+  std::vector<std::pair<std::string, double>> pass_ms;  // median GPU ms per pass, in pass order
+  double total_ms = 0.0;                                // median of the per-frame totals
+  ErrorMetrics error;          // engine HDR image vs the reference, over lit pixels
+  double bias_rel_rmse = 0.0;  // sqrt(max(rmse^2 - noise_rmse^2, 0)) / mean |reference|
+  bool within_noise = false;   // error.rel_rmse <= kNoiseFactor * TradeReport::noise_rel_rmse
+  int64_t nonfinite = 0;       // NaN/Inf pixels of the engine image (all pixels)
+  bool pareto = false;         // on the front of (total_ms, rel_rmse)
+  std::string heatmap;         // file name relative to the report folder, empty if none
+};
+
+struct TradeOptions {
+  int width = 320, height = 0;  // height 0: from the scene's aspect ratio
+  int frames = 5;               // timed frames after one warm-up frame, per round
+  int rounds = 3;               // timing passes over all configurations (interleaved)
+  int samples = 256;            // reference samples per pixel
+  double max_error = 0.05;      // relative RMSE bound for the "cheapest within" pick
+  double max_ms = 0.0;          // time bound for the "most accurate within" pick; <= 0: scene's
+  std::string report_dir;       // heat maps go to report_dir/heatmaps (empty: none written)
+  enum class Heatmaps { All, Presets, None } heatmaps = Heatmaps::All;  // Presets: + scene, exact
+  float heatmap_max = 0.2f;                                             // relative error scale
+  std::string cache_dir;  // reference cache; empty: <halfvec cache dir>/reference
+  bool use_cache = true;
+  int max_brute_force_lights = 64;
+  int threads = 0;  // reference threads (0: all cores)
+  uint64_t seed = 1;
+  std::function<void(const std::string&)> progress;  // one line per step (may be empty)
+};
+
+struct TradeReport {
+  std::string scene_path;
+  int width = 0, height = 0, frames = 0, rounds = 0, samples = 0;
+  RenderSettings truth;
+  ReferenceStats reference;
+  bool reference_cached = false;
+  std::string reference_file;
+  size_t lit_pixels = 0;          // compared pixels: lit, reference converged
+  size_t unconverged_pixels = 0;  // lit pixels left out (kMaxReferenceRelError)
+  double noise_rmse = 0.0;        // sqrt(mean of the reference's squared standard error)
+  double noise_rel_rmse = 0.0;    // noise_rmse / mean |reference|, over lit pixels
+  std::vector<TradeRow> rows;
+  std::vector<std::string> skipped;
+  double max_error = 0.0, max_ms = 0.0;  // the bounds the picks used
+  int cheapest_within_error = -1;        // row index, -1 if no row qualifies
+  int most_accurate_within_ms = -1;
+  int exact_row = -1;  // the row named (or aliased) "exact"
+};
+
+// Renders and measures every configuration of tradePlan(scene). Needs a current GL context.
+TradeReport runTrade(const Scene& scene, const TradeOptions& options);
+
+// Marks the rows on the Pareto front of (total_ms, error.rel_rmse), both minimized: no other row
+// is at least as fast and at least as accurate and strictly better in one.
+void markPareto(std::vector<TradeRow>& rows);
+// Sets the picks from report.max_error / report.max_ms (ties: the first row).
+void pickConfigurations(TradeReport& report);
+
+std::string tradeCsv(const TradeReport& report);
+// The report as markdown; images are linked as image_prefix + "plot.png" etc.;
+// heading_level: '#' count of its title.
+std::string tradeMarkdown(const TradeReport& report, const std::string& image_prefix,
+                          int heading_level = 1);
+ImageRGBA8 tradePlot(const TradeReport& report);
+// Why the presets (engine/scene/presets.cpp) set what they set: markdown, for docs/trade.md.
+std::string presetRationale();
+
+// Writes trade.md, trade.csv and plot.png into `dir` (created if needed).
+void writeTradeReport(const TradeReport& report, const std::string& dir);
+
+}  // namespace hv::app

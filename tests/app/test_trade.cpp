@@ -1,0 +1,228 @@
+// The trade report (samples/app/trade.hpp) on a tiny scene: which rows it plans, that its rows
+// are internally consistent (finite images, the exact configuration lowest within noise, the
+// Pareto marks, the named picks satisfy their bounds), the reference cache, and the files.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "app/trade.hpp"
+#include "image/image.hpp"
+#include "platform/context.hpp"
+#include "scene/presets.hpp"
+#include "scene/primitives.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A glossy sphere on a rough floor, a point and a sphere light, a dim uniform environment.
+hv::Scene tinyScene() {
+  hv::Scene s;
+  s.camera.position = {0.0f, 1.5f, 3.0f};
+  s.camera.target = {0.0f, 0.4f, 0.0f};
+  hv::Material floor;
+  floor.base_color = glm::vec3(0.6f);
+  floor.roughness = 0.8f;
+  hv::Material ball;
+  ball.base_color = glm::vec3(0.9f, 0.6f, 0.3f);
+  ball.metallic = 1.0f;
+  ball.roughness = 0.6f;
+  s.materials = {floor, ball};
+  s.meshes.push_back(hv::makePlane(6.0f, 6.0f));
+  s.meshes.back().material = 0;
+  s.meshes.push_back(hv::makeSphere(0.5f, 32, 16));
+  s.meshes.back().material = 1;
+  hv::Object o0, o1;
+  o0.meshes = {0};
+  o1.meshes = {1};
+  o1.transform[3] = glm::vec4(0.0f, 0.5f, 0.0f, 1.0f);
+  s.objects = {o0, o1};
+  hv::Light point;
+  point.position = {1.0f, 2.0f, 1.0f};
+  point.intensity = 4.0f;
+  point.range = 8.0f;
+  hv::Light sphere = point;
+  sphere.type = hv::LightType::Sphere;
+  sphere.position = {-1.2f, 1.2f, 0.8f};
+  sphere.radius = 0.2f;
+  s.lights = {point, sphere};
+  s.environment.kind = hv::EnvironmentKind::Uniform;
+  s.environment.color = glm::vec3(0.05f);
+  return s;
+}
+
+const hv::app::TradeRow* find(const hv::app::TradeReport& r, const std::string& name) {
+  for (const auto& row : r.rows) {
+    if (row.config.name == name) return &row;
+    for (const auto& a : row.config.aliases)
+      if (a == name) return &row;
+  }
+  return nullptr;
+}
+
+bool hasRow(const hv::app::TradePlan& p, const std::string& prefix) {
+  return std::any_of(p.configs.begin(), p.configs.end(),
+                     [&](const hv::app::TradeConfig& c) { return c.name.rfind(prefix, 0) == 0; });
+}
+
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    path = fs::temp_directory_path() /
+           ("hv_trade_test_" + std::to_string(std::hash<std::string>{}(
+                                   std::to_string(reinterpret_cast<uintptr_t>(this)))));
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~TempDir() { fs::remove_all(path); }
+};
+
+}  // namespace
+
+TEST(TradePlan, SkipsOptionsThatDoNotApply) {
+  hv::Scene s = tinyScene();
+  hv::app::TradePlan p = hv::app::tradePlan(s);
+  ASSERT_FALSE(p.configs.empty());
+  EXPECT_EQ(p.configs.front().name, "scene");
+  EXPECT_TRUE(hasRow(p, "sphere_diffuse="));
+  EXPECT_FALSE(hasRow(p, "tube_"));                          // no tube lights
+  EXPECT_FALSE(hasRow(p, "environment.prefilter_samples"));  // uniform environment
+  EXPECT_TRUE(hasRow(p, "culling=brute_force"));             // 2 lights: cheap
+  EXPECT_TRUE(hasRow(p, "preset=accurate") ||
+              std::any_of(p.configs.begin(), p.configs.end(), [](const auto& c) {
+                return std::find(c.aliases.begin(), c.aliases.end(), "preset=accurate") !=
+                       c.aliases.end();
+              }));
+
+  s.environment.kind = hv::EnvironmentKind::None;
+  s.lights.assign(100, s.lights[0]);  // point lights only
+  p = hv::app::tradePlan(s, 64);
+  EXPECT_FALSE(hasRow(p, "env_brdf"));
+  EXPECT_FALSE(hasRow(p, "irradiance"));
+  EXPECT_FALSE(hasRow(p, "culling"));  // 100 lights > 64
+  EXPECT_FALSE(hasRow(p, "sphere_"));
+  EXPECT_GE(p.skipped.size(), 3u);
+
+  // Identical configurations are merged: no two rows share settings and prefilter count.
+  for (size_t i = 0; i < p.configs.size(); ++i)
+    for (size_t j = i + 1; j < p.configs.size(); ++j)
+      EXPECT_FALSE(p.configs[i].prefilter_samples == p.configs[j].prefilter_samples &&
+                   hv::app::sameSettings(p.configs[i].settings, p.configs[j].settings))
+          << p.configs[i].name << " / " << p.configs[j].name;
+}
+
+TEST(TradePlan, TruthReplacesApproximationsOnly) {
+  hv::RenderSettings s;
+  s.f = hv::FresnelTerm::SchlickSG;
+  s.diffuse = hv::DiffuseTerm::Burley;
+  s.energy_compensation = true;
+  const hv::RenderSettings t = hv::app::truthSettings(s);
+  EXPECT_EQ(t.v, hv::VisibilityTerm::SmithGGXCorrelated);
+  EXPECT_EQ(t.f, hv::FresnelTerm::SchlickPow5);
+  EXPECT_FALSE(t.remap_roughness);
+  EXPECT_FALSE(t.falloff_plus_one);
+  EXPECT_EQ(t.d, s.d);
+  EXPECT_EQ(t.diffuse, hv::DiffuseTerm::Burley);  // material model: kept
+  EXPECT_TRUE(t.energy_compensation);
+}
+
+TEST(Trade, TinySceneRowsAreConsistent) {
+  auto ctx = hv::createHeadlessContext();
+  TempDir dir;
+  hv::Scene scene = tinyScene();
+  hv::app::TradeOptions o;
+  o.width = 64;
+  o.height = 48;
+  o.frames = 1;
+  o.rounds = 1;
+  o.samples = 128;
+  o.threads = 2;
+  o.cache_dir = (dir.path / "cache").string();
+  o.report_dir = (dir.path / "report").string();
+  o.heatmaps = hv::app::TradeOptions::Heatmaps::Presets;
+  const hv::app::TradeReport r = hv::app::runTrade(scene, o);
+
+  ASSERT_GE(r.rows.size(), 10u);
+  EXPECT_FALSE(r.reference_cached);
+  EXPECT_GT(r.lit_pixels, 64u * 48u / 4);
+  EXPECT_GT(r.noise_rel_rmse, 0.0);  // the sphere light is sampled
+  for (const auto& row : r.rows) {
+    EXPECT_EQ(row.nonfinite, 0) << row.config.name;
+    EXPECT_TRUE(std::isfinite(row.error.rel_rmse)) << row.config.name;
+    EXPECT_EQ(row.error.compared_pixels, int64_t(r.lit_pixels)) << row.config.name;
+    EXPECT_GT(row.total_ms, 0.0) << row.config.name;
+    EXPECT_LE(row.bias_rel_rmse, row.error.rel_rmse + 1e-12) << row.config.name;
+  }
+
+  // The exact configuration has the lowest error, within the reference's noise.
+  ASSERT_GE(r.exact_row, 0);
+  const auto& exact = r.rows[size_t(r.exact_row)];
+  double lowest = 1e30;
+  for (const auto& row : r.rows) lowest = std::min(lowest, row.error.rel_rmse);
+  EXPECT_LE(exact.error.rel_rmse, lowest + hv::app::kNoiseFactor * r.noise_rel_rmse);
+  // ... and the scene's own settings (falloff +1, remap, Schlick V) are measurably worse.
+  EXPECT_GT(r.rows.front().error.rel_rmse, exact.error.rel_rmse + r.noise_rel_rmse);
+  // Culling changes the speed, not the image.
+  const auto* brute = find(r, "culling=brute_force");
+  ASSERT_NE(brute, nullptr);
+  EXPECT_NEAR(brute->error.rel_rmse, r.rows.front().error.rel_rmse, 1e-3);
+
+  // Pareto marks: a marked row is dominated by none, an unmarked one by some row.
+  for (const auto& row : r.rows) {
+    bool dominated = false;
+    for (const auto& o2 : r.rows) {
+      dominated |= &o2 != &row && o2.total_ms <= row.total_ms &&
+                   o2.error.rel_rmse <= row.error.rel_rmse &&
+                   (o2.total_ms < row.total_ms || o2.error.rel_rmse < row.error.rel_rmse);
+    }
+    EXPECT_EQ(row.pareto, !dominated) << row.config.name;
+  }
+
+  // The picks satisfy their bounds and are the best under them.
+  EXPECT_EQ(r.max_ms, r.rows.front().total_ms);  // default: the scene's own time
+  ASSERT_GE(r.most_accurate_within_ms, 0);
+  const auto& acc = r.rows[size_t(r.most_accurate_within_ms)];
+  EXPECT_LE(acc.total_ms, r.max_ms);
+  if (r.cheapest_within_error >= 0) {
+    EXPECT_LE(r.rows[size_t(r.cheapest_within_error)].error.rel_rmse, r.max_error);
+  }
+  for (const auto& row : r.rows) {
+    if (row.total_ms <= r.max_ms) {
+      EXPECT_GE(row.error.rel_rmse, acc.error.rel_rmse);
+    }
+    if (r.cheapest_within_error >= 0 && row.error.rel_rmse <= r.max_error) {
+      EXPECT_GE(row.total_ms, r.rows[size_t(r.cheapest_within_error)].total_ms);
+    }
+  }
+  hv::app::TradeReport tight = r;  // a bound nothing meets names nothing
+  tight.max_error = 1e-9;
+  tight.max_ms = 1e-9;
+  hv::app::pickConfigurations(tight);
+  EXPECT_EQ(tight.cheapest_within_error, -1);
+  EXPECT_EQ(tight.most_accurate_within_ms, -1);
+
+  // Files: CSV (header + a line per row), markdown naming every row, the plot, heat maps.
+  hv::app::writeTradeReport(r, o.report_dir);
+  std::ifstream csv(fs::path(o.report_dir) / "trade.csv");
+  size_t lines = 0;
+  for (std::string line; std::getline(csv, line);) ++lines;
+  EXPECT_EQ(lines, r.rows.size() + 1);
+  const std::string md = hv::app::tradeMarkdown(r, "", 1);
+  for (const auto& row : r.rows) EXPECT_NE(md.find("`" + row.config.name + "`"), std::string::npos);
+  const hv::ImageRGBA8 plot = hv::readPng((fs::path(o.report_dir) / "plot.png").string());
+  EXPECT_EQ(plot.width, 960);
+  EXPECT_TRUE(fs::exists(fs::path(o.report_dir) / "heatmaps" / "scene.png"));
+  EXPECT_FALSE(fs::exists(fs::path(o.report_dir) / "heatmaps" / "culling-brute_force.png"));
+
+  // Second run: the reference comes from the cache, bit for bit.
+  hv::app::TradeOptions o2 = o;
+  o2.report_dir.clear();
+  const hv::app::TradeReport again = hv::app::runTrade(scene, o2);
+  EXPECT_TRUE(again.reference_cached);
+  EXPECT_EQ(again.noise_rmse, r.noise_rmse);
+  EXPECT_NEAR(again.rows.front().error.rel_rmse, r.rows.front().error.rel_rmse, 1e-6);
+}
