@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "app/commands.hpp"
 #include "platform/context.hpp"
@@ -13,7 +15,7 @@ namespace hv::app {
 
 namespace {
 constexpr const char* kHelp =
-    R"(Usage: halfvec bench [--size WxH] [--frames N] [--max-lights N] [--quick]
+    R"(Usage: halfvec bench [--size WxH] [--frames N] [--max-lights N] [--quick] [--lights N]
 
 Light-pass benchmark on a 40 m x 40 m floor seen from above at an angle, lights of mixed types
 (point, sphere, tube) scattered just above it. Prints, per light count from 64 up:
@@ -22,7 +24,11 @@ Light-pass benchmark on a 40 m x 40 m floor seen from above at an angle, lights 
   (b) fixed scene: the range stays 2 m, so the work grows with N;
 the median light_cull and light pass GPU ms over N frames and light-pixel evaluations per
 second (evaluations = sum over lit pixels of the lights in the pixel's tile list), then tiled vs
-brute force at 1,024 lights. Absolute times are noisy on a shared machine: compare ratios.
+brute force at 1,024 lights, then the issue's three targets with the measured value and
+met/MISSED. Light counts: 64, 256, 1024, 4096, 16384 (--quick: 64, 256, 1024, 16384 for (a),
+64, 1024, 16384 for (b)), up to --max-lights. --lights N: only the row of table (a) at N lights
+(for profiling one change at a time). Absolute times are noisy on a shared machine: compare
+ratios.
 )";
 
 constexpr float kFloor = 40.0f;
@@ -104,7 +110,7 @@ void header() {
 }  // namespace
 
 int cmdBench(const Args& args) {
-  int w = 1280, h = 720, frames = 5, max_lights = 16384;
+  int w = 1280, h = 720, frames = 5, max_lights = 16384, only = 0;
   bool quick = false;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -119,6 +125,9 @@ int cmdBench(const Args& args) {
       frames = std::max(1, std::atoi(args[++i].c_str()));
     } else if (a == "--max-lights" && i + 1 < args.size()) {
       max_lights = std::atoi(args[++i].c_str());
+    } else if (a == "--lights" && i + 1 < args.size()) {
+      only = std::atoi(args[++i].c_str());
+      if (only <= 0) throw UsageError{"--lights expects a positive count"};
     } else if (a == "--quick") {
       quick = true;
     } else {
@@ -130,22 +139,42 @@ int cmdBench(const Args& args) {
               frames);
   const float area = kFloor * kFloor;
   const float density = 24.0f;  // target lights overlapping a floor point in (a)
+  auto counts = [&](std::vector<int> quick_counts) {
+    std::vector<int> v;
+    if (quick) {
+      for (int n : quick_counts) {
+        if (n <= max_lights) v.push_back(n);
+      }
+    } else {
+      for (int n = 64; n <= max_lights; n *= 4) v.push_back(n);
+    }
+    return v;
+  };
+  auto densityRange = [&](int n) { return std::sqrt(density * area / (3.14159265f * float(n))); };
+  if (only > 0) {
+    std::printf("(a) constant density (about %.0f lights per floor point)\n", density);
+    header();
+    Scene s = benchScene(only, densityRange(only), 1);
+    printRow(only, densityRange(only), measure(s, w, h, frames));
+    return 0;
+  }
   std::printf("(a) constant density (about %.0f lights per floor point)\n", density);
   header();
-  for (int n = 64; n <= max_lights; n *= quick ? 16 : 4) {
-    const float range = std::sqrt(density * area / (3.14159265f * float(n)));
-    Scene s = benchScene(n, range, 1);
-    printRow(n, range, measure(s, w, h, frames));
+  std::vector<std::pair<int, Result>> table_a;
+  for (int n : counts({64, 256, 1024, 16384})) {
+    Scene s = benchScene(n, densityRange(n), 1);
+    table_a.emplace_back(n, measure(s, w, h, frames));
+    printRow(n, densityRange(n), table_a.back().second);
   }
   std::printf("\n(b) fixed scene (range 2 m)\n");
   header();
-  for (int n = 64; n <= max_lights; n *= quick ? 16 : 4) {
+  for (int n : counts({64, 1024, 16384})) {
     Scene s = benchScene(n, 2.0f, 1);
     printRow(n, 2.0f, measure(s, w, h, frames));
   }
   std::printf("\ntiled vs brute force, 1024 lights, constant-density range\n");
   header();
-  const float range = std::sqrt(density * area / (3.14159265f * 1024.0f));
+  const float range = densityRange(1024);
   Scene s = benchScene(1024, range, 1);
   const Result tiled = measure(s, w, h, frames);
   printRow(1024, range, tiled);
@@ -153,8 +182,38 @@ int cmdBench(const Args& args) {
   const Result brute = measure(s, w, h, std::min(frames, 2));
   printRow(1024, range, brute);
   const double tiled_total = tiled.cull_ms + tiled.light_ms;
-  std::printf("speedup (brute light ms / tiled cull+light ms): %.1fx\n",
-              brute.light_ms / tiled_total);
+  const double speedup = tiled_total > 0 ? brute.light_ms / tiled_total : 0.0;
+  std::printf("speedup (brute light ms / tiled cull+light ms): %.1fx\n", speedup);
+
+  // The issue's three performance targets, checked on the numbers above.
+  std::printf("\ntargets (issue \"Light pass\", Performance)\n");
+  std::printf("%-52s %10s %10s  %s\n", "check", "target", "measured", "result");
+  auto check = [](const char* what, const char* target, double measured, bool met) {
+    std::printf("%-52s %10s %10.2f  %s\n", what, target, measured, met ? "met" : "MISSED");
+  };
+  double min_rate = 0.0;
+  for (size_t i = 0; i < table_a.size(); ++i) {
+    const Result& r = table_a[i].second;
+    const double rate = r.light_ms > 0 ? double(r.evals) / (r.light_ms * 1e-3) * 1e-6 : 0.0;
+    min_rate = i == 0 ? rate : std::min(min_rate, rate);
+  }
+  if (!table_a.empty()) {
+    check("light-pixel evals/s, M (slowest row of (a))", ">= 300", min_rate, min_rate >= 300.0);
+  }
+  const Result* r256 = nullptr;
+  const Result* r16k = nullptr;
+  for (auto& [n, r] : table_a) {
+    if (n == 256) r256 = &r;
+    if (n == 16384) r16k = &r;
+  }
+  if (r256 && r16k && r256->light_ms > 0) {
+    const double growth = r16k->light_ms / r256->light_ms;
+    check("light pass ms growth 256 -> 16384 lights, (a)", "<= 1.5x", growth, growth <= 1.5);
+  } else {
+    std::printf("%-52s %10s %10s  %s\n", "light pass ms growth 256 -> 16384 lights, (a)", "<= 1.5x",
+                "-", "not run (needs --max-lights >= 16384)");
+  }
+  check("tiled speedup over brute force, 1024 lights", ">= 20x", speedup, speedup >= 20.0);
   return 0;
 }
 
