@@ -88,18 +88,29 @@ void Renderer::cullLightsPass(FrameBlock& frame) {
   glUseProgram(lights_prog);
   glProgramUniform1ui(lights_prog, phase_loc, 1u);
   if (light_groups > 0 && total > 0) glDispatchCompute(light_groups, 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   glBindSampler(3, 0);
   glUseProgram(0);
 }
 
+// The tiled light pass reads the lights and the tile index list through buffer textures
+// (HV_LIGHTS_TEXTURE) when they fit GL_MAX_TEXTURE_BUFFER_SIZE: texelFetch gives the
+// implementation a vector gather, where an SSBO read indexed by loaded data is a per-lane load on a
+// SIMD CPU implementation (llvmpipe: ~3x slower loop, measured). Otherwise it reads the SSBOs.
 void Renderer::lightPass(const FrameBlock& frame) {
   gl::ScopedPass pass(timer_, "light");
   applyState(PipelineState{});
   Targets& t = *targets_;
   if (gpu_->lightCount() == 0) return;
+  const bool tiled = scene_->settings.culling == Culling::Tiled && tile_indices_;
+  GLint max_texels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
+  const bool use_textures = tiled && gpu_->lightCount() * 4 <= size_t(max_texels) &&
+                            kTileHeaderUints + tile_capacity_ <= size_t(max_texels);
+  gl::DefineSet defines = lightingDefines();
+  defines.push_back({"HV_LIGHTS_TEXTURE", use_textures ? "1" : "0"});
   const GLuint prog =
-      programs_.get({"light", {{GL_COMPUTE_SHADER, "passes/light_shade.comp"}}, lightingDefines()});
+      programs_.get({"light", {{GL_COMPUTE_SHADER, "passes/light_shade.comp"}}, defines});
   glUseProgram(prog);
   const GLuint inputs[4] = {t.base_cavity.id(), t.material.id(), t.normal.id(), t.depth.id()};
   for (GLuint u = 0; u < 4; ++u) {
@@ -113,9 +124,26 @@ void Renderer::lightPass(const FrameBlock& frame) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, tile_indices_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, tile_types_.id());
   }
+  if (use_textures) {
+    if (!light_texels_) {
+      GLuint ids[2] = {0, 0};
+      glCreateTextures(GL_TEXTURE_BUFFER, 2, ids);
+      light_texels_ = gl::Texture(ids[0], "lights (buffer texture)");
+      tile_index_texels_ = gl::Texture(ids[1], "tile light indices (buffer texture)");
+    }
+    // Re-pointed every frame: either buffer may have been re-created (scene edit, list growth).
+    glTextureBuffer(light_texels_.id(), GL_RGBA32F, gpu_->lightBuffer());
+    glTextureBuffer(tile_index_texels_.id(), GL_R32UI, tile_indices_.id());
+    glBindTextureUnit(4, light_texels_.id());
+    glBindTextureUnit(5, tile_index_texels_.id());
+  }
   glDispatchCompute(frame.viewport.z, frame.viewport.w, 1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   for (GLuint u = 0; u < 4; ++u) glBindSampler(u, 0);
+  if (use_textures) {
+    glBindTextureUnit(4, 0);
+    glBindTextureUnit(5, 0);
+  }
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
   glUseProgram(0);
 }

@@ -113,6 +113,7 @@ class Renderer {
   size_t tile_capacity_ = 0;       // uints in the tile index list (sized from the exact count)
   size_t tile_buffers_tiles_ = 0;  // tiles the per-tile buffers hold
   size_t tile_entries_ = 0;        // entries the last culling pass produced
+  gl::Texture light_texels_, tile_index_texels_;  // buffer-texture views for the light pass
   gl::VertexArray empty_vao_;
   gl::Sampler nearest_;
   gl::Texture fallback_cube_;

@@ -15,7 +15,7 @@ namespace hv::app {
 
 namespace {
 constexpr const char* kHelp =
-    R"(Usage: halfvec bench [--size WxH] [--frames N] [--max-lights N] [--quick] [--lights N]
+    R"(Usage: halfvec bench [--size WxH] [--frames N] [--max-lights N] [--quick] [--lights N [--range R]]
 
 Light-pass benchmark on a 40 m x 40 m floor seen from above at an angle, lights of mixed types
 (point, sphere, tube) scattered just above it. Prints, per light count from 64 up:
@@ -27,7 +27,7 @@ second (evaluations = sum over lit pixels of the lights in the pixel's tile list
 brute force at 1,024 lights, then the issue's three targets with the measured value and
 met/MISSED. Light counts: 64, 256, 1024, 4096, 16384 (--quick: 64, 256, 1024, 16384 for (a),
 64, 1024, 16384 for (b)), up to --max-lights. --lights N: only the row of table (a) at N lights
-(for profiling one change at a time). Absolute times are noisy on a shared machine: compare
+(for profiling one change at a time), with --range R the lights' range in m instead. Absolute times are noisy on a shared machine: compare
 ratios.
 )";
 
@@ -111,6 +111,7 @@ void header() {
 
 int cmdBench(const Args& args) {
   int w = 1280, h = 720, frames = 5, max_lights = 16384, only = 0;
+  float only_range = 0.0f;
   bool quick = false;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -128,6 +129,9 @@ int cmdBench(const Args& args) {
     } else if (a == "--lights" && i + 1 < args.size()) {
       only = std::atoi(args[++i].c_str());
       if (only <= 0) throw UsageError{"--lights expects a positive count"};
+    } else if (a == "--range" && i + 1 < args.size()) {
+      only_range = static_cast<float>(std::atof(args[++i].c_str()));
+      if (!(only_range > 0.0f)) throw UsageError{"--range expects a positive length in m"};
     } else if (a == "--quick") {
       quick = true;
     } else {
@@ -154,8 +158,9 @@ int cmdBench(const Args& args) {
   if (only > 0) {
     std::printf("(a) constant density (about %.0f lights per floor point)\n", density);
     header();
-    Scene s = benchScene(only, densityRange(only), 1);
-    printRow(only, densityRange(only), measure(s, w, h, frames));
+    const float r = only_range > 0.0f ? only_range : densityRange(only);
+    Scene s = benchScene(only, r, 1);
+    printRow(only, r, measure(s, w, h, frames));
     return 0;
   }
   std::printf("(a) constant density (about %.0f lights per floor point)\n", density);

@@ -29,6 +29,6 @@ layout(std140, binding = 0) uniform FrameBlock {
 #define HV_HDR_MAX 65504.0
 
 // Light culling tile size in pixels (also the shading workgroup size).
-#define HV_TILE_SIZE 16
+#define HV_TILE_SIZE 8
 
 #endif

@@ -19,6 +19,9 @@ layout(binding = 3) uniform sampler2D t_depth;
 layout(rgba16f, binding = 0) uniform image2D i_hdr;
 
 layout(std430, binding = HV_BINDING_LIGHTS) readonly buffer LightBlock { GpuLight lights[]; };
+#ifndef HV_LIGHTS_TEXTURE
+#define HV_LIGHTS_TEXTURE 0
+#endif
 #if !HV_CULLING_BRUTE_FORCE
 layout(std430, binding = HV_BINDING_TILE_RANGES) readonly buffer TileRangeBlock { uvec2 tile_ranges[]; };
 layout(std430, binding = HV_BINDING_TILE_TYPES) readonly buffer TileTypeBlock { uvec2 tile_types[]; };
@@ -27,6 +30,26 @@ layout(std430, binding = HV_BINDING_TILE_INDICES) readonly buffer TileIndexBlock
   uint pad0, pad1, pad2;
   uint tile_indices[];
 };
+#endif
+
+#if !HV_CULLING_BRUTE_FORCE
+#if HV_LIGHTS_TEXTURE
+// The same two buffers as buffer textures (light_pass.cpp): texelFetch is a vector gather on
+// llvmpipe, an SSBO read at a loaded index is one load per lane (about 3x slower loop there).
+layout(binding = 4) uniform samplerBuffer t_lights;        // 4 RGBA32F texels per GpuLight
+layout(binding = 5) uniform usamplerBuffer t_tile_indices;  // header (4 uints), then indices
+GpuLight tileLight(uint i) {
+  int base = int(texelFetch(t_tile_indices, int(i) + 4).r) * 4;
+  GpuLight l;
+  l.position_radius = texelFetch(t_lights, base);
+  l.color_type = texelFetch(t_lights, base + 1);
+  l.axis_length = texelFetch(t_lights, base + 2);
+  l.params = texelFetch(t_lights, base + 3);
+  return l;
+}
+#else
+GpuLight tileLight(uint i) { return lights[tile_indices[i]]; }
+#endif
 #endif
 
 void main() {
@@ -57,17 +80,17 @@ void main() {
   uint end_sphere = min(end_point + split.y, end);
 #if HV_HAS_POINT_LIGHTS
   for (uint i = range.x; i < end_point; ++i) {
-    sum += evaluatePointLight(lights[tile_indices[i]], s, P, V);
+    sum += evaluatePointLight(tileLight(i), s, P, V);
   }
 #endif
 #if HV_HAS_SPHERE_LIGHTS
   for (uint i = end_point; i < end_sphere; ++i) {
-    sum += evaluateSphereLight(lights[tile_indices[i]], s, P, V);
+    sum += evaluateSphereLight(tileLight(i), s, P, V);
   }
 #endif
 #if HV_HAS_TUBE_LIGHTS
   for (uint i = end_sphere; i < end; ++i) {
-    sum += evaluateTubeLight(lights[tile_indices[i]], s, P, V);
+    sum += evaluateTubeLight(tileLight(i), s, P, V);
   }
 #endif
 #endif
