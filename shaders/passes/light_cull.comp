@@ -2,8 +2,8 @@
 // Tiled light culling whose cost follows the (tile, light) pairs that touch, not tiles x lights
 // (docs/lights.md, "Tiled culling"). Three stages, picked by HV_CULL_STAGE, dispatched in order:
 //
-//  0 HV_CULL_BOUNDS  one workgroup per 16x16 tile: the view-space AABB of the tile's visible
-//                    surface points (reconstructed from depth; background pixels excluded). This is
+//  0 HV_CULL_BOUNDS  one workgroup per tile (HV_TILE_SIZE^2 pixels): the view-space AABB of its
+//                    visible surface points (from depth; background pixels excluded). This is
 //                    the depth range of Andersson 2011 ("DirectX 11 Rendering in Battlefield 3")
 //                    tightened in x and y as well: a slanted floor tile is a thin slab, not the
 //                    whole frustum slice between its min and max depth.
