@@ -9,7 +9,7 @@
 
 namespace hv::render {
 
-constexpr int kTileSize = 16;  // HV_TILE_SIZE in frame.glsl
+constexpr int kTileSize = 8;  // HV_TILE_SIZE in frame.glsl
 
 struct alignas(16) FrameBlock {
   glm::mat4 view;

@@ -1,4 +1,5 @@
-// Light culling (compute, per 16x16 tile) and the light pass (compute, per pixel).
+// Light culling (compute: per tile bounds, per light count/fill, one scan) and the light pass
+// (compute, per pixel).
 // In: depth, G-buffer, lights. Out: per-tile light lists; direct light added into the HDR target.
 #include <algorithm>
 
@@ -12,58 +13,104 @@ namespace {
 constexpr size_t kTileHeaderUints = 4;  // counter + padding before the index array
 }
 
+// Tiled culling in four dispatches (shaders/passes/light_cull.comp; docs/lights.md): tile surface
+// bounds, per-light count, prefix sum, per-light fill. The work is tiles + lights + the (tile,
+// light) pairs that touch, instead of tiles x lights. The exact total is read back between the scan
+// and the fill, so the index list is grown before anything is written: no cap, no second pass.
 void Renderer::cullLightsPass(FrameBlock& frame) {
   gl::ScopedPass pass(timer_, "light_cull");
   applyState(PipelineState{});
   Targets& t = *targets_;
-  const uint32_t tiles = frame.viewport.z * frame.viewport.w;
-  if (!tile_ranges_ || tile_ranges_.id() == 0 ||
-      size_t(tiles) * 2 * sizeof(uint32_t) > size_t(tile_ranges_capacity_)) {
-    tile_ranges_capacity_ = size_t(tiles) * 2 * sizeof(uint32_t);
-    tile_ranges_ = gl::createBuffer("tile light ranges", tile_ranges_capacity_);
+  const size_t tiles = size_t(frame.viewport.z) * frame.viewport.w;
+  if (!tile_ranges_ || tiles > tile_buffers_tiles_) {
+    tile_ranges_ = gl::createBuffer("tile light ranges", tiles * 2 * sizeof(uint32_t));
+    tile_types_ = gl::createBuffer("tile light type split", tiles * 2 * sizeof(uint32_t));
+    tile_bounds_ = gl::createBuffer("tile surface bounds", tiles * 2 * 4 * sizeof(float));
+    tile_counters_ = gl::createBuffer("tile light counters", tiles * 3 * sizeof(uint32_t));
+    tile_buffers_tiles_ = tiles;
   }
-  if (tile_capacity_ == 0) tile_capacity_ = std::max<size_t>(size_t(tiles) * 64, 1 << 16);
-  const GLuint prog = programs_.get(
-      {"light_cull", {{GL_COMPUTE_SHADER, "passes/light_cull.comp"}}, lightingDefines()});
-  for (int attempt = 0; attempt < 2; ++attempt) {
-    if (!tile_indices_) {
-      tile_indices_ = gl::createBuffer("tile light indices",
-                                       (kTileHeaderUints + tile_capacity_) * sizeof(uint32_t));
-    }
-    const uint32_t zero = 0;
-    glClearNamedBufferSubData(tile_indices_.id(), GL_R32UI, 0, sizeof(uint32_t), GL_RED_INTEGER,
-                              GL_UNSIGNED_INT, &zero);
-    if (frame.counts.y != tile_capacity_) {  // the list was created or grown: tell the shaders
-      frame.counts.y = static_cast<uint32_t>(tile_capacity_);
-      glNamedBufferSubData(frame_ubo_.id(), 0, sizeof frame, &frame);
-    }
-    glUseProgram(prog);
-    glBindTextureUnit(3, t.depth.id());
-    glBindSampler(3, nearest_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, gpu_->lightBuffer());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, tile_ranges_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, tile_indices_.id());
-    glDispatchCompute(frame.viewport.z, frame.viewport.w, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-    uint32_t total = 0;
-    glGetNamedBufferSubData(tile_indices_.id(), 0, sizeof total, &total);
-    tile_entries_ = total;
-    if (total <= tile_capacity_) break;
-    // The lists did not fit: grow to what this frame needs (plus headroom) and cull again.
+  if (!tile_indices_) {
+    if (tile_capacity_ == 0) tile_capacity_ = std::max<size_t>(tiles * 16, 1 << 16);
+    tile_indices_ = gl::createBuffer("tile light indices",
+                                     (kTileHeaderUints + tile_capacity_) * sizeof(uint32_t));
+  }
+  auto stage = [&](const char* name, const char* value) {
+    return programs_.get(
+        {name, {{GL_COMPUTE_SHADER, "passes/light_cull.comp"}}, {{"HV_CULL_STAGE", value}}});
+  };
+  const GLuint bounds_prog = stage("light_cull_bounds", "0");
+  const GLuint lights_prog = stage("light_cull_lights", "1");
+  const GLuint scan_prog = stage("light_cull_scan", "2");
+  const GLint phase_loc = glGetUniformLocation(lights_prog, "u_cull_phase");
+  const uint32_t lights = frame.counts.x;
+  const GLuint light_groups = (lights + 63) / 64;
+
+  const uint32_t zero = 0;
+  glClearNamedBufferSubData(tile_counters_.id(), GL_R32UI, 0, tiles * 3 * sizeof(uint32_t),
+                            GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, gpu_->lightBuffer());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, tile_counters_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, tile_ranges_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, tile_indices_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, tile_types_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, tile_bounds_.id());
+
+  // 1. Surface bounds per tile.
+  glUseProgram(bounds_prog);
+  glBindTextureUnit(3, t.depth.id());
+  glBindSampler(3, nearest_.id());
+  glDispatchCompute(frame.viewport.z, frame.viewport.w, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  // 2. Count the (tile, light) pairs per tile and light type.
+  glUseProgram(lights_prog);
+  glProgramUniform1ui(lights_prog, phase_loc, 0u);
+  if (light_groups > 0) glDispatchCompute(light_groups, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  // 3. Prefix sum: exact ranges, sorted by type.
+  glUseProgram(scan_prog);
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  uint32_t total = 0;
+  glGetNamedBufferSubData(tile_indices_.id(), 0, sizeof total, &total);
+  tile_entries_ = total;
+  if (total > tile_capacity_) {  // grow to the exact need plus headroom, keep the header
     tile_capacity_ = size_t(total) + total / 4;
-    tile_indices_.reset();
+    tile_indices_ = gl::createBuffer("tile light indices",
+                                     (kTileHeaderUints + tile_capacity_) * sizeof(uint32_t));
+    glNamedBufferSubData(tile_indices_.id(), 0, sizeof total, &total);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, tile_indices_.id());
   }
+  if (frame.counts.y != tile_capacity_) {  // the list was created or grown: tell the shaders
+    frame.counts.y = static_cast<uint32_t>(tile_capacity_);
+    glNamedBufferSubData(frame_ubo_.id(), 0, sizeof frame, &frame);
+  }
+  // 4. Fill: the same program writes each pair into the slot the scan reserved.
+  glUseProgram(lights_prog);
+  glProgramUniform1ui(lights_prog, phase_loc, 1u);
+  if (light_groups > 0 && total > 0) glDispatchCompute(light_groups, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   glBindSampler(3, 0);
   glUseProgram(0);
 }
 
+// The tiled light pass reads the lights and the tile index list through buffer textures
+// (HV_LIGHTS_TEXTURE) when they fit GL_MAX_TEXTURE_BUFFER_SIZE: texelFetch gives the
+// implementation a vector gather, where an SSBO read indexed by loaded data is a per-lane load on a
+// SIMD CPU implementation (llvmpipe: ~3x slower loop, measured). Otherwise it reads the SSBOs.
 void Renderer::lightPass(const FrameBlock& frame) {
   gl::ScopedPass pass(timer_, "light");
   applyState(PipelineState{});
   Targets& t = *targets_;
   if (gpu_->lightCount() == 0) return;
+  const bool tiled = scene_->settings.culling == Culling::Tiled && tile_indices_;
+  GLint max_texels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
+  const bool use_textures = tiled && gpu_->lightCount() * 4 <= size_t(max_texels) &&
+                            kTileHeaderUints + tile_capacity_ <= size_t(max_texels);
+  gl::DefineSet defines = lightingDefines();
+  defines.push_back({"HV_LIGHTS_TEXTURE", use_textures ? "1" : "0"});
   const GLuint prog =
-      programs_.get({"light", {{GL_COMPUTE_SHADER, "passes/light_shade.comp"}}, lightingDefines()});
+      programs_.get({"light", {{GL_COMPUTE_SHADER, "passes/light_shade.comp"}}, defines});
   glUseProgram(prog);
   const GLuint inputs[4] = {t.base_cavity.id(), t.material.id(), t.normal.id(), t.depth.id()};
   for (GLuint u = 0; u < 4; ++u) {
@@ -75,10 +122,28 @@ void Renderer::lightPass(const FrameBlock& frame) {
   if (tile_indices_) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, tile_ranges_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, tile_indices_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, tile_types_.id());
+  }
+  if (use_textures) {
+    if (!light_texels_) {
+      GLuint ids[2] = {0, 0};
+      glCreateTextures(GL_TEXTURE_BUFFER, 2, ids);
+      light_texels_ = gl::Texture(ids[0], "lights (buffer texture)");
+      tile_index_texels_ = gl::Texture(ids[1], "tile light indices (buffer texture)");
+    }
+    // Re-pointed every frame: either buffer may have been re-created (scene edit, list growth).
+    glTextureBuffer(light_texels_.id(), GL_RGBA32F, gpu_->lightBuffer());
+    glTextureBuffer(tile_index_texels_.id(), GL_R32UI, tile_indices_.id());
+    glBindTextureUnit(4, light_texels_.id());
+    glBindTextureUnit(5, tile_index_texels_.id());
   }
   glDispatchCompute(frame.viewport.z, frame.viewport.w, 1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   for (GLuint u = 0; u < 4; ++u) glBindSampler(u, 0);
+  if (use_textures) {
+    glBindTextureUnit(4, 0);
+    glBindTextureUnit(5, 0);
+  }
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
   glUseProgram(0);
 }

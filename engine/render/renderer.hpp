@@ -134,10 +134,13 @@ class Renderer {
   gl::ProgramCache programs_;
   gl::PassTimer timer_;
   gl::Buffer frame_ubo_;
-  gl::Buffer tile_ranges_, tile_indices_;
-  size_t tile_capacity_ = 0;         // uints in the tile index list (grows on overflow)
-  size_t tile_ranges_capacity_ = 0;  // bytes
-  size_t tile_entries_ = 0;          // entries the last culling pass produced
+  // Tiled culling (light_pass.cpp, shaders/passes/light_cull.comp). Per tile: ranges (offset,
+  // count), types (points, spheres), bounds (surface AABB), counters (per light type).
+  gl::Buffer tile_ranges_, tile_types_, tile_bounds_, tile_counters_, tile_indices_;
+  size_t tile_capacity_ = 0;       // uints in the tile index list (sized from the exact count)
+  size_t tile_buffers_tiles_ = 0;  // tiles the per-tile buffers hold
+  size_t tile_entries_ = 0;        // entries the last culling pass produced
+  gl::Texture light_texels_, tile_index_texels_;  // buffer-texture views for the light pass
   gl::VertexArray empty_vao_;
   gl::Sampler nearest_;
   gl::Texture fallback_cube_;

@@ -59,8 +59,10 @@ MaterialFeatures allMaterialFeatures() {
   return f;
 }
 
+// Karis 2013 eq. 4: the Disney (roughness+1)/2 remap is defined for Schlick-GGX's k with
+// analytic lights, and brdf.glsl applies it to that term only.
 bool remapMeaningful(VisibilityTerm v) {
-  return v != VisibilityTerm::CookTorrance && v != VisibilityTerm::Implicit;
+  return v == VisibilityTerm::SchlickGGX;
 }
 
 RenderSettings canonicalSettings(const RenderSettings& s, const VariantKey& key) {
@@ -160,7 +162,7 @@ std::vector<std::string> validateKey(const VariantKey& k) {
     bad.push_back("ambient IBL options without ambient IBL (no environment or no lit material)");
   }
   if (s.remap_roughness && !remapMeaningful(s.v)) {
-    bad.push_back("roughness remap with a visibility term that does not use alpha");
+    bad.push_back("roughness remap with a visibility term other than Schlick-GGX");
   }
   if (!k.sphere_lights &&
       (s.sphere_diffuse != d.sphere_diffuse || s.sphere_normalization != d.sphere_normalization)) {
@@ -281,7 +283,7 @@ std::vector<KeyDefine> lightDefines(const VariantKey& k, const Scene& scene) {
       {"HV_REMAP_ROUGHNESS",
        settingWhy("brdf.remap_roughness", s.remap_roughness ? "true" : "false",
                   in.remap_roughness != s.remap_roughness,
-                  no_lights ? nl : "the visibility term does not use alpha")},
+                  no_lights ? nl : "the remap applies to Schlick-GGX only (Karis eq. 4)")},
       {"HV_FALLOFF_PLUS_ONE", settingWhy("falloff_plus_one", s.falloff_plus_one ? "true" : "false",
                                          in.falloff_plus_one != s.falloff_plus_one, nl)},
       {"HV_SPHERE_DIFFUSE", settingWhy("sphere_diffuse", toString(s.sphere_diffuse),

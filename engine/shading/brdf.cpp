@@ -48,7 +48,9 @@ float evalVForAlpha(const BrdfConfig& c, float alpha, float NoV, float NoL, floa
 
 float evalV(const BrdfConfig& c, float roughness, float alpha, float NoV, float NoL, float NoH,
             float VoH) {
-  float alpha_v = c.remap_roughness ? g::remappedVisibilityAlpha(roughness) : alpha;
+  // Karis 2013 eq. 4: the Disney remap applies to Schlick-GGX only (= glsl visibility()).
+  const bool remap = c.remap_roughness && c.v == VisibilityTerm::SchlickGGX;
+  float alpha_v = remap ? g::remappedVisibilityAlpha(roughness) : alpha;
   return evalVForAlpha(c, alpha_v, NoV, NoL, NoH, VoH);
 }
 

@@ -27,7 +27,8 @@ struct BrdfConfig {
 float evalD(const BrdfConfig& c, float alpha, float NoH);
 // V for a given alpha, no remap (= glsl visibilityForAlpha); used by image-based lighting.
 float evalVForAlpha(const BrdfConfig& c, float alpha, float NoV, float NoL, float NoH, float VoH);
-// V for analytic lights (= glsl visibility): alpha remapped when c.remap_roughness.
+// V for analytic lights (= glsl visibility): alpha remapped when c.remap_roughness and c.v is
+// SchlickGGX (Karis 2013 eq. 4 states the Disney remap for Schlick-GGX only).
 float evalV(const BrdfConfig& c, float roughness, float alpha, float NoV, float NoL, float NoH,
             float VoH);
 // F (= glsl fresnel).

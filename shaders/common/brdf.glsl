@@ -228,8 +228,9 @@ vec3 computeF0(vec3 baseColor, float metallic) { return mix(vec3(0.04f), baseCol
 // Metals have no diffuse lobe.
 vec3 computeDiffuseColor(vec3 baseColor, float metallic) { return baseColor * (1.0f - metallic); }
 
-// Disney roughness remap (Karis 2013 "Specular G"): the alpha used by the visibility term for
-// analytic lights, ((roughness + 1) / 2)^2, which reduces "hotness" at low roughness.
+// Disney roughness remap (Karis 2013 "Specular G", eq. 4): the alpha used by the Schlick-GGX
+// visibility term for analytic lights, ((roughness + 1) / 2)^2, which reduces "hotness" at low
+// roughness. Only Schlick-GGX is remapped (see visibility()).
 float remappedVisibilityAlpha(float roughness) { return sq(0.5f * (roughness + 1.0f)); }
 
 // ---- Surface ----
@@ -289,10 +290,12 @@ float visibilityForAlpha(float alpha, float NoV, float NoL, float NoH, float VoH
 #endif
 }
 
-// Visibility for analytic lights: with HV_REMAP_ROUGHNESS the alpha of the V term is
-// ((roughness+1)/2)^2 (Karis 2013 eq. 4 and "Specular G"), otherwise alpha.
+// Visibility for analytic lights. Karis 2013 eq. 4 ("Specular G") states the Disney remap
+// alpha = ((roughness+1)/2)^2 for Schlick-GGX only: with HV_REMAP_ROUGHNESS and
+// HV_BRDF_V == HV_V_SCHLICK_GGX, k = alpha_remapped / 2. Every other V term (Smith exact, its
+// approximation, Beckmann, Cook-Torrance, implicit) uses alpha = roughness^2 unchanged.
 float visibility(float roughness, float alpha, float NoV, float NoL, float NoH, float VoH) {
-#if HV_REMAP_ROUGHNESS
+#if HV_REMAP_ROUGHNESS && HV_BRDF_V == HV_V_SCHLICK_GGX
   float alpha_v = remappedVisibilityAlpha(roughness);
 #else
   float alpha_v = alpha;

@@ -20,12 +20,15 @@ layout(std140, binding = 0) uniform FrameBlock {
 #define HV_BINDING_LIGHTS 2
 #define HV_BINDING_TILE_RANGES 4
 #define HV_BINDING_TILE_INDICES 5
+#define HV_BINDING_TILE_TYPES 6     // per tile: (points, spheres) of its range, tubes follow
+#define HV_BINDING_TILE_BOUNDS 7    // culling only: per tile view-space AABB of its surface
+#define HV_BINDING_TILE_COUNTERS 3  // culling only: per (tile, light type) count / next slot
 
 // Largest finite half float: the RGBA16F accumulation target turns anything above into Inf, so the
 // passes clamp what they store (a 1e6-intensity light next to a surface must not write Inf).
 #define HV_HDR_MAX 65504.0
 
 // Light culling tile size in pixels (also the shading workgroup size).
-#define HV_TILE_SIZE 16
+#define HV_TILE_SIZE 8
 
 #endif

@@ -1,101 +1,221 @@
 #version 450 core
-// Tiled light culling (Andersson 2011, "DirectX 11 Rendering in Battlefield 3"): one workgroup per
-// 16x16 tile finds the tile's depth range, tests every light's bounding sphere against the tile's
-// view-space frustum and its AABB, and appends the survivors to one global index list.
-// Two passes over the lights (count, then write) so the list is exactly sized per tile; if the
-// global list overflows, the renderer grows it and runs this pass again (no fixed per-tile cap).
+// Tiled light culling whose cost follows the (tile, light) pairs that touch, not tiles x lights
+// (docs/lights.md, "Tiled culling"). Three stages, picked by HV_CULL_STAGE, dispatched in order:
+//
+//  0 HV_CULL_BOUNDS  one workgroup per tile (HV_TILE_SIZE^2 pixels): the view-space AABB of its
+//                    visible surface points (from depth; background pixels excluded). This is
+//                    the depth range of Andersson 2011 ("DirectX 11 Rendering in Battlefield 3")
+//                    tightened in x and y as well: a slanted floor tile is a thin slab, not the
+//                    whole frustum slice between its min and max depth.
+//  1 HV_CULL_LIGHTS  one invocation per light: the light's bounding sphere (lightCullRadius) is
+//                    projected to a conservative rectangle of tiles; for every tile of it the
+//                    sphere is tested against the tile's four side planes and its AABB (exact
+//                    sphere-box distance). u_cull_phase 0 counts hits per (tile, light type);
+//                    phase 1 writes the light index into the slot the scan reserved. Both phases
+//                    run the same program on the same data, so they find the same pairs.
+//  2 HV_CULL_SCAN    one workgroup: exclusive prefix sum over the (tile, type) counts, giving each
+//                    tile an exactly sized range [offset, offset + count) of the global index list,
+//                    sorted by light type (points, spheres, tubes) so the light pass runs one
+//                    branch-free loop per type.
+//
+// Every test is a necessary condition for the sphere to touch a surface point of the tile, so no
+// light that lights a pixel is ever dropped (tested: tiled == brute force, 4,096 lights). No
+// per-tile cap: the renderer reads the total back after the scan and grows the list before the
+// fill (engine/render/light_pass.cpp). Plain GLSL 4.50 (shared memory atomics and barriers only;
+// no subgroup operations).
 #include "../common/frame.glsl"
 #include "../common/lights.glsl"
 
-layout(local_size_x = HV_TILE_SIZE, local_size_y = HV_TILE_SIZE) in;
+#define HV_CULL_BOUNDS 0
+#define HV_CULL_LIGHTS 1
+#define HV_CULL_SCAN 2
+#ifndef HV_CULL_STAGE
+#define HV_CULL_STAGE HV_CULL_BOUNDS
+#endif
 
+// Per tile: view-space AABB of its surface points; min.w = 1 when the tile has any (else 0).
+layout(std430, binding = HV_BINDING_TILE_BOUNDS) buffer TileBoundsBlock { vec4 tile_bounds[]; };
+// Per (tile, type): hit count (stage 1 phase 0), then the next free slot (scan, stage 1 phase 1).
+layout(std430, binding = HV_BINDING_TILE_COUNTERS) buffer TileCounterBlock { uint tile_counters[]; };
+
+// ---------------------------------------------------------------------------------------------
+#if HV_CULL_STAGE == HV_CULL_BOUNDS
 layout(binding = 3) uniform sampler2D t_depth;
+// One invocation per pixel column of the tile: 16 fetches reduced in registers, then one shared
+// atomic per bound (instead of one per pixel).
+layout(local_size_x = HV_TILE_SIZE) in;
+
+shared uint s_bounds[6];  // min xyz, max xyz as order-preserving uints
+
+// Float -> uint with the same order (negative floats flipped), so atomicMin/Max work on signs.
+uint orderedBits(float f) {
+  uint u = floatBitsToUint(f);
+  return (u & 0x80000000u) != 0u ? ~u : u | 0x80000000u;
+}
+float fromOrderedBits(uint u) {
+  return uintBitsToFloat((u & 0x80000000u) != 0u ? u & 0x7FFFFFFFu : ~u);
+}
+
+void main() {
+  uint x = gl_LocalInvocationID.x;
+  if (x < 3u) {
+    s_bounds[x] = 0xFFFFFFFFu;
+    s_bounds[x + 3u] = 0u;
+  }
+  barrier();
+  vec3 lo = vec3(3.0e38), hi = vec3(-3.0e38);
+  int px = int(gl_WorkGroupID.x * HV_TILE_SIZE + x);
+  // A view-space point at view distance z on the ray of NDC (nx, ny) is (nx z / P00, ny z / P11, -z)
+  // (centered projection, frame_data.cpp).
+  vec2 inv_scale = vec2(1.0 / u_proj[0][0], 1.0 / u_proj[1][1]);
+  float ndc_x = (float(px) + 0.5) / float(u_viewport.x) * 2.0 - 1.0;
+  if (px < int(u_viewport.x)) {
+    for (int j = 0; j < HV_TILE_SIZE; ++j) {
+      int py = int(gl_WorkGroupID.y * HV_TILE_SIZE) + j;
+      if (py >= int(u_viewport.y)) break;
+      float d = texelFetch(t_depth, ivec2(px, py), 0).r;
+      if (d > 0.0) {  // 0 = nothing drawn (background needs no lights)
+        float z = u_near_params.x / d;  // reversed-Z infinite: view distance (frame_data.hpp)
+        float ndc_y = (float(py) + 0.5) / float(u_viewport.y) * 2.0 - 1.0;
+        vec3 p = vec3(ndc_x * inv_scale.x * z, ndc_y * inv_scale.y * z, -z);
+        lo = min(lo, p);
+        hi = max(hi, p);
+      }
+    }
+  }
+  if (lo.x <= hi.x) {
+    atomicMin(s_bounds[0], orderedBits(lo.x));
+    atomicMin(s_bounds[1], orderedBits(lo.y));
+    atomicMin(s_bounds[2], orderedBits(lo.z));
+    atomicMax(s_bounds[3], orderedBits(hi.x));
+    atomicMax(s_bounds[4], orderedBits(hi.y));
+    atomicMax(s_bounds[5], orderedBits(hi.z));
+  }
+  barrier();
+  if (x == 0u) {
+    uint tile = gl_WorkGroupID.y * u_viewport.z + gl_WorkGroupID.x;
+    bool has_surface = s_bounds[3] != 0u;
+    vec3 bmin = vec3(fromOrderedBits(s_bounds[0]), fromOrderedBits(s_bounds[1]),
+                     fromOrderedBits(s_bounds[2]));
+    vec3 bmax = vec3(fromOrderedBits(s_bounds[3]), fromOrderedBits(s_bounds[4]),
+                     fromOrderedBits(s_bounds[5]));
+    // Widen by 1e-5 of the distance: the light pass reconstructs positions through
+    // inv_view_proj, which may round differently from the view-space formula above.
+    vec3 pad = vec3(1e-5 * max(-bmin.z, 1.0));
+    tile_bounds[tile * 2u] = vec4(bmin - pad, has_surface ? 1.0 : 0.0);
+    tile_bounds[tile * 2u + 1u] = vec4(bmax + pad, 0.0);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+#elif HV_CULL_STAGE == HV_CULL_LIGHTS
+layout(local_size_x = 64) in;
 
 layout(std430, binding = HV_BINDING_LIGHTS) readonly buffer LightBlock { GpuLight lights[]; };
-layout(std430, binding = HV_BINDING_TILE_RANGES) writeonly buffer TileRangeBlock { uvec2 tile_ranges[]; };
 layout(std430, binding = HV_BINDING_TILE_INDICES) buffer TileIndexBlock {
-  uint tile_index_count;  // total appended (may exceed capacity: the renderer then grows the list)
+  uint tile_index_count;
+  uint pad0, pad1, pad2;
+  uint tile_indices[];
+};
+uniform uint u_cull_phase;  // 0 = count, 1 = fill
+
+// Signed distance-like test of view-space center c against the plane through the eye and the
+// line x = k (-z) (or y = k (-z)): dot of c with the unnormalized normal (1, 0, k), scaled to a
+// distance. side = +1 keeps x > k (-z) (left edge), -1 keeps x < k (-z) (right edge).
+bool insideEdge(float cx, float cz, float k, float side, float r) {
+  return side * (cx + k * cz) * inversesqrt(1.0 + k * k) > -r;
+}
+
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= u_counts.x) return;
+  vec3 c = (u_view * vec4(lights[i].position_radius.xyz, 1.0)).xyz;
+  float r = lightCullRadius(lights[i]);
+  uint type = uint(lights[i].color_type.w + 0.5);  // HV_LIGHT_POINT/SPHERE/TUBE = 0/1/2
+  float near_z = -c.z - r, far_z = -c.z + r;        // view-distance interval of the sphere
+  if (far_z < u_near_params.x || type > 2u) return;  // every visible point is beyond the near plane
+
+  // Conservative NDC rectangle: the sphere lies in the view-space box c +- r. When the box is
+  // entirely in front of the eye, its projection lies within the extremes of x / dist over its
+  // corners (x / dist is monotonic in x and in dist along each edge); otherwise take the screen.
+  vec2 inv_scale = vec2(1.0 / u_proj[0][0], 1.0 / u_proj[1][1]);
+  vec2 ndc_lo = vec2(-1.0), ndc_hi = vec2(1.0);
+  if (near_z > 1e-6 * far_z) {
+    vec2 lo = c.xy - r, hi = c.xy + r;
+    vec2 a = lo / near_z, b = lo / far_z, e = hi / near_z, f = hi / far_z;
+    ndc_lo = max(min(a, b) / inv_scale, vec2(-1.0));
+    ndc_hi = min(max(e, f) / inv_scale, vec2(1.0));
+    if (ndc_lo.x > 1.0 || ndc_lo.y > 1.0 || ndc_hi.x < -1.0 || ndc_hi.y < -1.0) return;
+  }
+  vec2 vp = vec2(u_viewport.xy);
+  ivec2 tmax = ivec2(u_viewport.zw) - 1;
+  ivec2 t0 = clamp(ivec2(floor((ndc_lo * 0.5 + 0.5) * vp / float(HV_TILE_SIZE))), ivec2(0), tmax);
+  ivec2 t1 = clamp(ivec2(floor((ndc_hi * 0.5 + 0.5) * vp / float(HV_TILE_SIZE))), ivec2(0), tmax);
+
+  for (int ty = t0.y; ty <= t1.y; ++ty) {
+    // Tile row edges: y = k (-z) with k = ndc_y / P11 (same formula as stage 0).
+    float ky0 = (float(ty * HV_TILE_SIZE) / vp.y * 2.0 - 1.0) * inv_scale.y;
+    float ky1 = (float((ty + 1) * HV_TILE_SIZE) / vp.y * 2.0 - 1.0) * inv_scale.y;
+    if (!insideEdge(c.y, c.z, ky0, 1.0, r) || !insideEdge(c.y, c.z, ky1, -1.0, r)) continue;
+    for (int tx = t0.x; tx <= t1.x; ++tx) {
+      float kx0 = (float(tx * HV_TILE_SIZE) / vp.x * 2.0 - 1.0) * inv_scale.x;
+      float kx1 = (float((tx + 1) * HV_TILE_SIZE) / vp.x * 2.0 - 1.0) * inv_scale.x;
+      if (!insideEdge(c.x, c.z, kx0, 1.0, r) || !insideEdge(c.x, c.z, kx1, -1.0, r)) continue;
+      uint tile = uint(ty) * u_viewport.z + uint(tx);
+      vec4 bmin = tile_bounds[tile * 2u];
+      if (bmin.w == 0.0) continue;  // no surface in this tile
+      vec3 q = clamp(c, bmin.xyz, tile_bounds[tile * 2u + 1u].xyz);
+      if (dot(q - c, q - c) > r * r) continue;  // sphere misses the tile's surface box
+      uint slot = atomicAdd(tile_counters[tile * 3u + type], 1u);
+      if (u_cull_phase == 1u && slot < u_counts.y) tile_indices[slot] = i;
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+#else  // HV_CULL_STAGE == HV_CULL_SCAN
+#define HV_SCAN_THREADS 256
+layout(local_size_x = HV_SCAN_THREADS) in;
+
+layout(std430, binding = HV_BINDING_TILE_RANGES) writeonly buffer TileRangeBlock { uvec2 tile_ranges[]; };
+layout(std430, binding = HV_BINDING_TILE_TYPES) writeonly buffer TileTypeBlock { uvec2 tile_types[]; };
+layout(std430, binding = HV_BINDING_TILE_INDICES) buffer TileIndexBlock {
+  uint tile_index_count;
   uint pad0, pad1, pad2;
   uint tile_indices[];
 };
 
-shared uint s_min_depth;  // reversed-Z: min = farthest
-shared uint s_max_depth;  // max = nearest
-shared uint s_count;
-shared uint s_offset;
-shared uint s_slot;
+shared uint s_sums[HV_SCAN_THREADS];
 
-// View-space distance along -z of reversed-Z infinite depth d (see frame_data.hpp).
-float viewDistance(float d) { return u_near_params.x / max(d, 1e-30); }
-
+// Each invocation owns a contiguous chunk of tiles: serial sum, a Hillis-Steele scan of the 256
+// chunk sums in shared memory, then a serial pass writing the offsets.
 void main() {
-  uint tid = gl_LocalInvocationIndex;
-  ivec2 px = ivec2(gl_GlobalInvocationID.xy);
-  if (tid == 0u) {
-    s_min_depth = floatBitsToUint(1.0);
-    s_max_depth = 0u;
-    s_count = 0u;
-    s_slot = 0u;
+  uint tid = gl_LocalInvocationID.x;
+  uint tiles = u_viewport.z * u_viewport.w;
+  uint chunk = (tiles + HV_SCAN_THREADS - 1u) / HV_SCAN_THREADS;
+  uint first = min(tid * chunk, tiles), last = min(first + chunk, tiles);
+  uint sum = 0u;
+  for (uint t = first; t < last; ++t) {
+    sum += tile_counters[t * 3u] + tile_counters[t * 3u + 1u] + tile_counters[t * 3u + 2u];
   }
+  s_sums[tid] = sum;
   barrier();
-  if (px.x < int(u_viewport.x) && px.y < int(u_viewport.y)) {
-    float d = texelFetch(t_depth, px, 0).r;
-    if (d > 0.0) {  // 0 = nothing drawn (background needs no lights)
-      atomicMin(s_min_depth, floatBitsToUint(d));  // positive floats order as their bits
-      atomicMax(s_max_depth, floatBitsToUint(d));
-    }
+  for (uint step = 1u; step < HV_SCAN_THREADS; step <<= 1) {
+    uint v = tid >= step ? s_sums[tid - step] : 0u;
+    barrier();
+    s_sums[tid] += v;
+    barrier();
   }
-  barrier();
-  uint tile = gl_WorkGroupID.y * u_viewport.z + gl_WorkGroupID.x;
-  bool empty = s_max_depth == 0u;
-  float z_near = viewDistance(uintBitsToFloat(s_max_depth));
-  float z_far = viewDistance(uintBitsToFloat(s_min_depth));
-
-  // Tile side planes through the eye, in view space, from the projection's NDC bounds.
-  vec2 ndc0 = vec2(gl_WorkGroupID.xy * HV_TILE_SIZE) / vec2(u_viewport.xy) * 2.0 - 1.0;
-  vec2 ndc1 = vec2((gl_WorkGroupID.xy + 1u) * HV_TILE_SIZE) / vec2(u_viewport.xy) * 2.0 - 1.0;
-  // A view-space point at distance 1 projects to ndc = (P00 x, P11 y); invert for the corners.
-  vec2 inv_scale = vec2(1.0 / u_proj[0][0], 1.0 / u_proj[1][1]);
-  vec3 c00 = vec3(ndc0 * inv_scale, -1.0);
-  vec3 c11 = vec3(ndc1 * inv_scale, -1.0);
-  vec3 c01 = vec3(ndc0.x * inv_scale.x, ndc1.y * inv_scale.y, -1.0);
-  vec3 c10 = vec3(ndc1.x * inv_scale.x, ndc0.y * inv_scale.y, -1.0);
-  vec3 planes[4];
-  planes[0] = normalize(cross(c00, c01));  // left: (1, 0, x0), normals point into the tile
-  planes[1] = normalize(cross(c11, c10));  // right: (-1, 0, -x1)
-  planes[2] = normalize(cross(c10, c00));  // bottom: (0, 1, y0)
-  planes[3] = normalize(cross(c01, c11));  // top: (0, -1, -y1)
-  // AABB of the tile frustum between z_near and z_far (tightens the corners the planes miss).
-  vec3 bmin = min(min(c00 * z_near, c11 * z_near), min(c00 * z_far, c11 * z_far));
-  vec3 bmax = max(max(c00 * z_near, c11 * z_near), max(c00 * z_far, c11 * z_far));
-
-  uint n = u_counts.x;
-  for (int phase = 0; phase < 2; ++phase) {
-    uint local = 0u;
-    for (uint i = tid; i < n && !empty; i += HV_TILE_SIZE * HV_TILE_SIZE) {
-      vec3 c = (u_view * vec4(lights[i].position_radius.xyz, 1.0)).xyz;
-      float r = lightCullRadius(lights[i]);
-      bool hit = -c.z + r >= z_near && -c.z - r <= z_far;
-      for (int p = 0; p < 4; ++p) hit = hit && dot(planes[p], c) > -r;
-      vec3 q = clamp(c, bmin, bmax);
-      hit = hit && dot(q - c, q - c) <= r * r;
-      if (hit) {
-        if (phase == 0) {
-          ++local;
-        } else {
-          uint slot = s_offset + atomicAdd(s_slot, 1u);
-          if (slot < u_counts.y) tile_indices[slot] = i;
-        }
-      }
-    }
-    if (phase == 0) {
-      if (local > 0u) atomicAdd(s_count, local);
-      barrier();
-      if (tid == 0u) {
-        s_offset = atomicAdd(tile_index_count, s_count);
-        tile_ranges[tile] = uvec2(s_offset, s_count);
-      }
-      barrier();
-    }
+  uint offset = s_sums[tid] - sum;  // exclusive
+  for (uint t = first; t < last; ++t) {
+    uint n0 = tile_counters[t * 3u], n1 = tile_counters[t * 3u + 1u], n2 = tile_counters[t * 3u + 2u];
+    tile_ranges[t] = uvec2(offset, n0 + n1 + n2);
+    tile_types[t] = uvec2(n0, n1);
+    tile_counters[t * 3u] = offset;
+    tile_counters[t * 3u + 1u] = offset + n0;
+    tile_counters[t * 3u + 2u] = offset + n0 + n1;
+    offset += n0 + n1 + n2;
   }
+  if (tid == HV_SCAN_THREADS - 1u) tile_index_count = s_sums[tid];
 }
+#endif

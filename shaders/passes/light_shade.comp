@@ -1,6 +1,11 @@
 #version 450 core
 // Light pass: for each lit pixel, sums the direct light of its tile's lights (or of every light in
 // the brute-force baseline) into the HDR target, on top of the emissive the G-buffer pass wrote.
+// A tile's list is sorted by light type (light_cull.comp), so the tiled path runs one loop per
+// type calling that type's evaluation directly: no per-light branch on the type, whose three
+// arms a SIMD CPU implementation (llvmpipe) would otherwise all execute under a mask. (A per-pixel
+// range test does not pay there either: an `if` costs its body even when no lane takes it; only
+// loop exits are real jumps. The tile lists are the early-out.)
 #include "../common/frame.glsl"
 #include "../common/gbuffer.glsl"
 #include "../common/lights.glsl"
@@ -14,13 +19,37 @@ layout(binding = 3) uniform sampler2D t_depth;
 layout(rgba16f, binding = 0) uniform image2D i_hdr;
 
 layout(std430, binding = HV_BINDING_LIGHTS) readonly buffer LightBlock { GpuLight lights[]; };
+#ifndef HV_LIGHTS_TEXTURE
+#define HV_LIGHTS_TEXTURE 0
+#endif
 #if !HV_CULLING_BRUTE_FORCE
 layout(std430, binding = HV_BINDING_TILE_RANGES) readonly buffer TileRangeBlock { uvec2 tile_ranges[]; };
+layout(std430, binding = HV_BINDING_TILE_TYPES) readonly buffer TileTypeBlock { uvec2 tile_types[]; };
 layout(std430, binding = HV_BINDING_TILE_INDICES) readonly buffer TileIndexBlock {
   uint tile_index_count;
   uint pad0, pad1, pad2;
   uint tile_indices[];
 };
+#endif
+
+#if !HV_CULLING_BRUTE_FORCE
+#if HV_LIGHTS_TEXTURE
+// The same two buffers as buffer textures (light_pass.cpp): texelFetch is a vector gather on
+// llvmpipe, an SSBO read at a loaded index is one load per lane (about 3x slower loop there).
+layout(binding = 4) uniform samplerBuffer t_lights;        // 4 RGBA32F texels per GpuLight
+layout(binding = 5) uniform usamplerBuffer t_tile_indices;  // header (4 uints), then indices
+GpuLight tileLight(uint i) {
+  int base = int(texelFetch(t_tile_indices, int(i) + 4).r) * 4;
+  GpuLight l;
+  l.position_radius = texelFetch(t_lights, base);
+  l.color_type = texelFetch(t_lights, base + 1);
+  l.axis_length = texelFetch(t_lights, base + 2);
+  l.params = texelFetch(t_lights, base + 3);
+  return l;
+}
+#else
+GpuLight tileLight(uint i) { return lights[tile_indices[i]]; }
+#endif
 #endif
 
 void main() {
@@ -43,9 +72,27 @@ void main() {
   uint n = u_counts.x;
   for (uint i = 0u; i < n; ++i) sum += evaluateLight(lights[i], s, P, V);
 #else
-  uvec2 range = tile_ranges[gl_WorkGroupID.y * u_viewport.z + gl_WorkGroupID.x];
+  uint tile = gl_WorkGroupID.y * u_viewport.z + gl_WorkGroupID.x;
+  uvec2 range = tile_ranges[tile];
+  uvec2 split = tile_types[tile];  // points, then spheres, then tubes
   uint end = min(range.x + range.y, u_counts.y);
-  for (uint i = range.x; i < end; ++i) sum += evaluateLight(lights[tile_indices[i]], s, P, V);
+  uint end_point = min(range.x + split.x, end);
+  uint end_sphere = min(end_point + split.y, end);
+#if HV_HAS_POINT_LIGHTS
+  for (uint i = range.x; i < end_point; ++i) {
+    sum += evaluatePointLight(tileLight(i), s, P, V);
+  }
+#endif
+#if HV_HAS_SPHERE_LIGHTS
+  for (uint i = end_point; i < end_sphere; ++i) {
+    sum += evaluateSphereLight(tileLight(i), s, P, V);
+  }
+#endif
+#if HV_HAS_TUBE_LIGHTS
+  for (uint i = end_sphere; i < end; ++i) {
+    sum += evaluateTubeLight(tileLight(i), s, P, V);
+  }
+#endif
 #endif
   vec4 hdr = imageLoad(i_hdr, px);
   imageStore(i_hdr, px, vec4(min(hdr.rgb + sum, vec3(HV_HDR_MAX)), hdr.a));

@@ -114,3 +114,63 @@ TEST(LightPass, TiledEqualsBruteForceWith4096Lights) {
   }
   EXPECT_GT(mean / tiled.px.size(), 0.01) << "lights should light the plane";
 }
+
+// 65,536 lights (the "no small fixed cap" case): the culled tile lists outgrow the
+// initial index list (grown exactly, no cap), and the tiled image still equals the sum of every
+// light evaluated on the CPU (hv::glsl::evaluateLight over all 65,536 lights) at sampled pixels.
+// Tolerance: 3e-3 relative + 1e-5 (RGBA16F target: 2^-11 relative, plus float summation order).
+TEST(LightPass, Tiled65536LightsMatchCpuSumOverAllLights) {
+  testContext();
+  Material m;
+  m.base_color = glm::vec3(0.6f);
+  m.roughness = 0.6f;
+  Scene s = planeScene(m, 8.0f);
+  s.camera.position = {0.0f, 3.0f, 4.0f};
+  s.camera.up = {0.0f, 1.0f, 0.0f};
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(-4.0f, 4.0f), h(0.05f, 0.5f), c(0.2f, 1.0f);
+  for (int i = 0; i < 65536; ++i) {
+    Light l;
+    l.type = static_cast<LightType>(i % 3);
+    l.position = {u(rng), h(rng), u(rng)};
+    l.color = {c(rng), c(rng), c(rng)};
+    l.intensity = 0.002f;
+    l.range = 0.3f + 0.3f * c(rng);
+    l.radius = l.type == LightType::Point ? 0.0f : 0.02f;
+    l.length = l.type == LightType::Tube ? 0.1f : 0.0f;
+    s.lights.push_back(l);
+  }
+  const int w = 96, h2 = 64;
+  render::Renderer r;
+  r.setScene(s);
+  const auto stats = r.render(w, h2);
+  EXPECT_GT(stats.tile_light_entries, size_t(65536)) << "lists should outgrow the initial list";
+  const auto g = r.readGBuffer();
+  const auto hdr = r.readHdr();
+  const auto frame = render::makeFrameBlock(s, w, h2);
+  std::vector<glsl::GpuLight> packed;
+  for (const Light& l : s.lights) packed.push_back(toGlsl(packLight(l)));
+  int checked = 0;
+  double mean = 0.0;
+  for (int y = 3; y < h2; y += 9) {
+    for (int x = 5; x < w; x += 13) {
+      const size_t i = size_t(y) * w + x;
+      if (g.model[i] != static_cast<uint32_t>(ShadingModel::DefaultLit)) continue;
+      const glm::vec2 uv((x + 0.5f) / w, 1.0f - (y + 0.5f) / h2);
+      const glm::vec3 P = glsl::reconstructWorldPosition(uv, g.depth[i], frame.inv_view_proj);
+      const glm::vec3 V = glm::normalize(s.camera.position - P);
+      const glsl::Surface surf = glsl::makeSurface(g.normal[i], g.base_color[i], g.metallic[i],
+                                                   g.roughness[i], g.cavity[i]);
+      glm::vec3 cpu(0.0f);
+      for (const auto& l : packed) cpu += glsl::evaluateLight(l, surf, P, V);
+      mean += cpu.x;
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(hdr.px[i][k], cpu[k], 3e-3f * cpu[k] + 1e-5f)
+            << "pixel " << x << "," << y << " channel " << k;
+      }
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 30);
+  EXPECT_GT(mean / checked, 0.01) << "the lights should light the plane";
+}

@@ -140,6 +140,36 @@ TEST(Brdf, HandComputedValues) {
   EXPECT_NEAR(g::remappedVisibilityAlpha(0.0f), 0.25f, 1e-7f);
 }
 
+// Karis 2013 eq. 4 ("Specular G"): the Disney remap alpha = ((roughness+1)/2)^2 is stated for
+// Schlick-GGX with analytic lights only. With remap_roughness on, Schlick-GGX uses the remapped
+// k = alpha_r / 2 and every other V term is exactly its un-remapped value (tolerance 1e-7
+// relative; the same function is called, so equality is expected to the bit).
+TEST(Brdf, DisneyRemapOnlyForSchlickGGX) {
+  const float roughness = 0.3f, alpha = roughness * roughness;
+  const float NoV = 0.6f, NoL = 0.4f, NoH = 0.9f, VoH = 0.7f;
+  for (VisibilityTerm v : kAllV) {
+    BrdfConfig on, off;
+    on.v = off.v = v;
+    on.remap_roughness = true;
+    off.remap_roughness = false;
+    const float remapped = evalV(on, roughness, alpha, NoV, NoL, NoH, VoH);
+    const float plain = evalV(off, roughness, alpha, NoV, NoL, NoH, VoH);
+    EXPECT_EQ(plain, evalVForAlpha(off, alpha, NoV, NoL, NoH, VoH)) << static_cast<int>(v);
+    if (v == VisibilityTerm::SchlickGGX) {
+      // ((0.3 + 1) / 2)^2 = 0.4225, k = 0.21125; by hand: 0.25 / ((0.6 (1-k) + k)(0.4 (1-k) + k)).
+      const float k = 0.21125f;
+      const float expected = 0.25f / ((0.6f * (1 - k) + k) * (0.4f * (1 - k) + k));
+      EXPECT_NEAR(remapped, expected, 1e-6f * expected);
+      EXPECT_LT(remapped, plain);  // the remap only lowers G at roughness < 1 ("less hot")
+    } else {
+      EXPECT_EQ(remapped, plain) << "remap applied to V term " << static_cast<int>(v);
+    }
+  }
+  // The GLSL dispatcher of the default compilation (Schlick-GGX, remap on) agrees.
+  EXPECT_NEAR(g::visibility(roughness, alpha, NoV, NoL, NoH, VoH),
+              g::V_SchlickGGX(0.21125f, NoV, NoL), 1e-6f);
+}
+
 glm::vec3 dirFromAngles(float cos_theta, float phi) {
   float s = std::sqrt(std::max(0.0f, 1.0f - cos_theta * cos_theta));
   return glm::vec3(s * std::cos(phi), s * std::sin(phi), cos_theta);

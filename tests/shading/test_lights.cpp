@@ -56,6 +56,50 @@ TEST(Lights, PackLayoutAndValues) {
   EXPECT_EQ(defs[2], std::make_pair(std::string("HV_HAS_TUBE_LIGHTS"), std::string("1")));
 }
 
+// Karis 2013 eq. 20 and the tube's energy normalization, by hand. A metallic white surface at the
+// origin (N = +z) looked at straight down: R = N passes through the center of a tube (axis x,
+// len 1, r 0.1) at height 2, so the segment point (eq. 19) is the center, the sphere
+// representative point (eq. 11) is the center too, and H = N: NoH = NoL = NoV = VoH = 1, F = 1,
+// Vis = 1/4, D = 1/(pi alpha^2). The specular is then I W/(d^2+1) D Vis times the normalization,
+// which must be the product of
+//   line:   alpha / alpha_l, alpha_l = saturate(alpha + 0.5 saturate(len / d))  (eq. 20, UE4 form)
+//   sphere: (alpha / alpha_s)^2, alpha_s = saturate(alpha + r / (3 d))           (eqs. 10, 14)
+// with d = 2 (center and segment point coincide). Tolerance 2e-4 relative: D_GGX's
+// (NoH^2 (a^2 - 1) + 1) at NoH = 1 rounds to ~6e-8 / a^2 relative (7e-5 at roughness 0.2). The
+// sphere light of the same radius gives the sphere factor alone, so tube / sphere is the line
+// factor (the D rounding cancels: 1e-5).
+TEST(Lights, TubeNormalizationIsLineTimesSphere) {
+  for (float roughness : {0.2f, 0.5f, 0.9f}) {
+    const g::Surface s = g::makeSurface({0, 0, 1}, glm::vec3(1.0f), 1.0f, roughness, 1.0f);
+    const float a = roughness * roughness;
+    hv::Light l;
+    l.type = hv::LightType::Tube;
+    l.position = {0, 0, 2};
+    l.axis = {1, 0, 0};
+    l.length = 1.0f;
+    l.radius = 0.1f;
+    l.intensity = 3.0f;
+    l.range = 10.0f;
+    const glm::vec3 V(0, 0, 1), P(0.0f);
+    const float d = 2.0f, len = 1.0f, r = 0.1f;
+    const float window = std::pow(1.0f - std::pow(d / l.range, 4.0f), 2.0f);
+    const float base = 3.0f * window / (d * d + 1.0f) / (float(kPi) * a * a) * 0.25f;
+    const float line = a / std::min(a + 0.5f * std::min(len / d, 1.0f), 1.0f);
+    const float sphere = std::pow(a / std::min(a + r / (3.0f * d), 1.0f), 2.0f);
+    const glm::vec3 tube = shade(l, s, P, V);
+    EXPECT_NEAR(tube.x, base * line * sphere, 2e-4f * base * line * sphere) << roughness;
+    l.type = hv::LightType::Sphere;
+    l.length = 0.0f;
+    const glm::vec3 sph = shade(l, s, P, V);
+    EXPECT_NEAR(sph.x, base * sphere, 2e-4f * base * sphere) << "roughness " << roughness;
+    EXPECT_NEAR(tube.x / sph.x, line, 1e-5f) << "roughness " << roughness;
+  }
+  // The helpers by hand: alpha 0.25, len 1, d 2: 0.25 / 0.5; len / d = 5 saturates: 0.25 / 0.75.
+  EXPECT_NEAR(g::lineNormalization(0.25f, 1.0f, 4.0f), 0.5f, 1e-6f);
+  EXPECT_NEAR(g::lineNormalization(0.25f, 10.0f, 4.0f), 0.25f / 0.75f, 1e-6f);
+  EXPECT_NEAR(g::sphereNormalization(0.25f, 0.75f, 1.0f), 0.25f, 1e-6f);  // (0.25 / 0.5)^2
+}
+
 // Karis eq. 9 by hand, exact zeros at and beyond the culling radius for every light type, and a
 // point light straight above a surface evaluated by hand from the terms (tolerance 1e-5).
 TEST(Lights, FalloffByHand) {

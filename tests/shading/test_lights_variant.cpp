@@ -1,7 +1,8 @@
 // The same light code compiled with every non-default option (its own compilation of the shared
 // headers, in its own namespace; this file does not include shading.hpp): physical 1/d^2 falloff,
 // horizon-correct sphere diffuse, eq. 18 tube specular, no normalizations, Heitz V, exact Fresnel,
-// Burley diffuse, no roughness remap.
+// Burley diffuse. HV_REMAP_ROUGHNESS stays 1 here: with Heitz V it must have no effect (the Disney
+// remap is for Schlick-GGX only, Karis 2013 eq. 4), which RemapIgnoredForSmithV checks.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -32,7 +33,7 @@
 #define HV_BRDF_V 1
 #define HV_BRDF_F 2
 #define HV_BRDF_FD 1
-#define HV_REMAP_ROUGHNESS 0
+#define HV_REMAP_ROUGHNESS 1
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-function"
@@ -57,6 +58,17 @@ constexpr double kPi = 3.14159265358979323846;
 
 TEST(LightsVariant, StabilitySweepAllOptions) {
   EXPECT_GT(variant::runStabilitySweep(), 100000);
+}
+
+// HV_REMAP_ROUGHNESS = 1 with HV_BRDF_V = Heitz correlated Smith: visibility() uses alpha itself,
+// not the Disney-remapped alpha (Karis 2013 eq. 4 remaps Schlick-GGX only). Exact equality: the
+// dispatcher must call the term with the same argument.
+TEST(LightsVariant, RemapIgnoredForSmithV) {
+  const float roughness = 0.3f, alpha = roughness * roughness;
+  EXPECT_EQ(variant::visibility(roughness, alpha, 0.6f, 0.4f, 0.9f, 0.7f),
+            variant::V_SmithGGXCorrelated(alpha, 0.6f, 0.4f));
+  EXPECT_NE(variant::visibility(roughness, alpha, 0.6f, 0.4f, 0.9f, 0.7f),
+            variant::V_SmithGGXCorrelated(variant::remappedVisibilityAlpha(roughness), 0.6f, 0.4f));
 }
 
 variant::GpuLight toVariant(const hv::GpuLight& p) {
