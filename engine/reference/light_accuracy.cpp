@@ -5,6 +5,7 @@
 
 #include "ibl/parallel.hpp"
 #include "reference/emitters.hpp"
+#include "reference/moments.hpp"
 #include "reference/lobes.hpp"
 #include "shading/brdf.hpp"
 #include "shading/shading.hpp"
@@ -15,20 +16,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-struct Moments {
-  glm::dvec3 sum{0.0}, sum2{0.0};
-  void add(const glm::dvec3& x) {
-    sum += x;
-    sum2 += x * x;
-  }
-  glm::dvec3 mean(int n) const { return n > 0 ? sum / double(n) : glm::dvec3(0.0); }
-  glm::dvec3 stdError(int n) const {
-    if (n < 2) return glm::dvec3(0.0);
-    const glm::dvec3 m = sum / double(n);
-    const glm::dvec3 var = glm::max((sum2 - double(n) * m * m) / double(n - 1), glm::dvec3(0.0));
-    return glm::sqrt(var / double(n));
-  }
-};
+using reference_detail::Moments;
 
 RenderSettings physicalSettings() {
   RenderSettings s;

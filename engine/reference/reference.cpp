@@ -15,6 +15,7 @@
 #include "ibl/ibl_math.hpp"
 #include "ibl/parallel.hpp"
 #include "reference/emitters.hpp"
+#include "reference/moments.hpp"
 #include "reference/env_sampling.hpp"
 #include "reference/lobes.hpp"
 #include "shading/brdf.hpp"
@@ -62,22 +63,7 @@ double luminance(const glm::dvec3& c) {
   return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
 }
 
-// Running sums of one estimator, per channel, for the mean and its standard error.
-struct Moments {
-  glm::dvec3 sum{0.0}, sum2{0.0};
-  void add(const glm::dvec3& x) {
-    sum += x;
-    sum2 += x * x;
-  }
-  glm::dvec3 mean(int n) const { return n > 0 ? sum / double(n) : glm::dvec3(0.0); }
-  // Standard error of the mean: sqrt(s^2 / n), s^2 the unbiased sample variance.
-  glm::dvec3 stdError(int n) const {
-    if (n < 2) return glm::dvec3(0.0);
-    glm::dvec3 m = sum / double(n);
-    glm::dvec3 var = glm::max((sum2 - double(n) * m * m) / double(n - 1), glm::dvec3(0.0));
-    return glm::sqrt(var / double(n));
-  }
-};
+using reference_detail::Moments;
 
 struct ScalarMoments {
   double sum = 0.0, sum2 = 0.0;

@@ -14,17 +14,8 @@ std::span<const std::string_view> settingsPresetNames() {
 
 bool applySettingsPreset(std::string_view name, RenderSettings& s) {
   // The rationale of each choice, with the measurements behind it: docs/trade.md ("Presets").
-  if (name == "fast") {
-    s.v = VisibilityTerm::SchlickGGX;
-    s.remap_roughness = true;
-    s.falloff_plus_one = true;
-    s.sphere_diffuse = SphereDiffuse::KarisPoint;
-    s.sphere_normalization = true;
-    s.tube_specular = TubeSpecular::ClosestPointEq19;
-    s.tube_normalization = true;
-    s.env_brdf = EnvBrdf::Analytic;
-    s.irradiance = Irradiance::SH9;
-  } else if (name == "balanced") {
+  // Every preset starts from Karis 2013's choices for the approximations it governs.
+  auto karis = [&s] {
     s.v = VisibilityTerm::SchlickGGX;
     s.remap_roughness = true;
     s.falloff_plus_one = true;
@@ -33,17 +24,19 @@ bool applySettingsPreset(std::string_view name, RenderSettings& s) {
     s.tube_specular = TubeSpecular::ClosestPointEq19;
     s.tube_normalization = true;
     s.env_brdf = EnvBrdf::Table;
+    s.irradiance = Irradiance::SH9;
+  };
+  if (name == "fast") {
+    karis();
+    s.env_brdf = EnvBrdf::Analytic;
+  } else if (name == "balanced") {
+    karis();
     s.irradiance = Irradiance::Cubemap;
   } else if (name == "accurate") {
-    s.v = VisibilityTerm::SchlickGGX;
-    s.remap_roughness = true;
+    karis();
+    s.irradiance = Irradiance::Cubemap;
     s.falloff_plus_one = false;
     s.sphere_diffuse = SphereDiffuse::HorizonCorrect;
-    s.sphere_normalization = true;
-    s.tube_specular = TubeSpecular::ClosestPointEq19;
-    s.tube_normalization = true;
-    s.env_brdf = EnvBrdf::Table;
-    s.irradiance = Irradiance::Cubemap;
   } else {
     return false;
   }
