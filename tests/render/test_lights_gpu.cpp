@@ -102,6 +102,9 @@ TEST(LightPass, TiledEqualsBruteForceWith4096Lights) {
   r.setScene(s);
   r.render(w, h2);
   const auto tiled = r.readHdr();
+  r.setLightTexelLimit(1);  // the SSBO path of the light pass (no buffer textures)
+  r.render(w, h2);
+  const auto tiled_ssbo = r.readHdr();
   s.settings.culling = Culling::BruteForce;
   r.render(w, h2);
   const auto brute = r.readHdr();
@@ -110,6 +113,7 @@ TEST(LightPass, TiledEqualsBruteForceWith4096Lights) {
     for (int k = 0; k < 3; ++k) {
       const float a = tiled.px[i][k], b = brute.px[i][k];
       ASSERT_NEAR(a, b, 1e-3f * b + 1e-5f) << "pixel " << i;
+      ASSERT_NEAR(tiled_ssbo.px[i][k], b, 1e-3f * b + 1e-5f) << "SSBO path, pixel " << i;
       max_rel = std::max(max_rel, double(std::abs(a - b) / (b + 1e-6f)));
       mean += b;
     }
