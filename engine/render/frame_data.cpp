@@ -45,7 +45,7 @@ FrameBlock makeFrameBlock(const Scene& scene, int width, int height) {
   f.inv_view_proj = glm::inverse(f.view_proj);
   f.camera_pos = glm::vec4(c.position, 1.0f);
   const uint32_t tx = (width + kTileSize - 1) / kTileSize;
-  const uint32_t ty = (height + kTileSize - 1) / kTileSize;
+  const uint32_t ty = (height + kTileHeight - 1) / kTileHeight;
   f.viewport = glm::uvec4(width, height, tx, ty);
   f.counts = glm::uvec4(static_cast<uint32_t>(scene.lights.size()), 0, 0, 0);
   f.output = glm::vec4(scene.settings.exposure, scene.settings.dither ? 1.0f : 0.0f,

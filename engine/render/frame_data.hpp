@@ -9,7 +9,8 @@
 
 namespace hv::render {
 
-constexpr int kTileSize = 8;  // HV_TILE_SIZE in frame.glsl
+constexpr int kTileSize = 8;    // HV_TILE_SIZE in frame.glsl (culling tile width)
+constexpr int kTileHeight = 4;  // HV_TILE_HEIGHT in frame.glsl (culling tile height)
 
 struct alignas(16) FrameBlock {
   glm::mat4 view;

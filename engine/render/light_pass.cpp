@@ -103,10 +103,12 @@ void Renderer::lightPass(const FrameBlock& frame) {
   Targets& t = *targets_;
   if (gpu_->lightCount() == 0) return;
   const bool tiled = scene_->settings.culling == Culling::Tiled && tile_indices_;
-  GLint max_texels = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
-  const bool use_textures = tiled && gpu_->lightCount() * 4 <= size_t(max_texels) &&
-                            kTileHeaderUints + tile_capacity_ <= size_t(max_texels);
+  GLint gl_max_texels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &gl_max_texels);
+  size_t max_texels = size_t(std::max(gl_max_texels, 0));
+  if (light_texel_limit_ > 0) max_texels = std::min(max_texels, light_texel_limit_);
+  const bool use_textures = tiled && gpu_->lightCount() * 4 <= max_texels &&
+                            kTileHeaderUints + tile_capacity_ <= max_texels;
   gl::DefineSet defines = lightingDefines();
   defines.push_back({"HV_LIGHTS_TEXTURE", use_textures ? "1" : "0"});
   const GLuint prog =

@@ -217,7 +217,7 @@ Renderer::LightWork Renderer::lightWork() const {
   glGetTextureImage(t.material.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(mat.size()), mat.data());
   const bool brute = scene_->settings.culling == Culling::BruteForce;
   const int tiles_x = (t.width + kTileSize - 1) / kTileSize;
-  const int tiles_y = (t.height + kTileSize - 1) / kTileSize;
+  const int tiles_y = (t.height + kTileHeight - 1) / kTileHeight;
   std::vector<uint32_t> ranges(size_t(tiles_x) * tiles_y * 2);
   if (!brute && tile_ranges_) {
     glGetNamedBufferSubData(tile_ranges_.id(), 0, GLsizeiptr(ranges.size() * sizeof(uint32_t)),
@@ -229,7 +229,7 @@ Renderer::LightWork Renderer::lightWork() const {
       const uint8_t model = mat[(size_t(y) * t.width + x) * 4 + 2];
       if (model != static_cast<uint8_t>(ShadingModel::DefaultLit)) continue;
       ++w.lit_pixels;
-      const size_t tile = size_t(y / kTileSize) * tiles_x + x / kTileSize;
+      const size_t tile = size_t(y / kTileHeight) * tiles_x + x / kTileSize;
       w.light_pixel_evaluations += brute ? gpu_->lightCount() : ranges[tile * 2 + 1];
     }
   }

@@ -93,6 +93,11 @@ class Renderer {
   // Counts the light pass's work of the last frame (reads back; for benchmarks and tests).
   LightWork lightWork() const;
 
+  // The tiled light pass reads lights and tile lists through buffer textures when they fit in
+  // min(GL_MAX_TEXTURE_BUFFER_SIZE, this many texels; 0 = no extra cap), else through the SSBOs.
+  // Tests set a small cap to run the SSBO path.
+  void setLightTexelLimit(size_t texels) { light_texel_limit_ = texels; }
+
   // Timings of the environment bake of the current scene (nullptr without an environment).
   const BakeTimings* environmentTimings() const;
 
@@ -141,6 +146,7 @@ class Renderer {
   size_t tile_buffers_tiles_ = 0;  // tiles the per-tile buffers hold
   size_t tile_entries_ = 0;        // entries the last culling pass produced
   gl::Texture light_texels_, tile_index_texels_;  // buffer-texture views for the light pass
+  size_t light_texel_limit_ = 0;                  // see setLightTexelLimit
   gl::VertexArray empty_vao_;
   gl::Sampler nearest_;
   gl::Texture fallback_cube_;

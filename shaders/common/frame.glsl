@@ -28,7 +28,9 @@ layout(std140, binding = 0) uniform FrameBlock {
 // passes clamp what they store (a 1e6-intensity light next to a surface must not write Inf).
 #define HV_HDR_MAX 65504.0
 
-// Light culling tile size in pixels (also the shading workgroup size).
+// Light culling tile: HV_TILE_SIZE x HV_TILE_HEIGHT pixels (also the light pass's workgroup;
+// the ambient pass uses HV_TILE_SIZE square groups). Why 8 x 4: docs/lights.md "Tiled culling".
 #define HV_TILE_SIZE 8
+#define HV_TILE_HEIGHT 4
 
 #endif

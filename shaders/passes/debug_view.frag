@@ -39,7 +39,7 @@ void main() {
     case 7u: c = model == HV_MODEL_BACKGROUND ? vec3(0.0)
                : model == HV_MODEL_UNLIT ? vec3(1.0, 0.8, 0.2) : vec3(0.2, 0.6, 1.0); break;
     case 8u: {
-      uvec2 tile = uvec2(px) / uint(HV_TILE_SIZE);
+      uvec2 tile = uvec2(px) / uvec2(HV_TILE_SIZE, HV_TILE_HEIGHT);
       uint n = tile_ranges[tile.y * u_viewport.z + tile.x].y;
       c = n == 0u ? vec3(0.0) : heat(log2(float(n) + 1.0) / 10.0);  // 1 .. 1023 lights
       break;

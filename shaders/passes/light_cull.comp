@@ -2,8 +2,8 @@
 // Tiled light culling whose cost follows the (tile, light) pairs that touch, not tiles x lights
 // (docs/lights.md, "Tiled culling"). Three stages, picked by HV_CULL_STAGE, dispatched in order:
 //
-//  0 HV_CULL_BOUNDS  one workgroup per tile (HV_TILE_SIZE^2 pixels): the view-space AABB of its
-//                    visible surface points (from depth; background pixels excluded). This is
+//  0 HV_CULL_BOUNDS  one workgroup per tile (HV_TILE_SIZE x HV_TILE_HEIGHT pixels): the view-space
+//                    AABB of its visible surface points (from depth; background pixels excluded):
 //                    the depth range of Andersson 2011 ("DirectX 11 Rendering in Battlefield 3")
 //                    tightened in x and y as well: a slanted floor tile is a thin slab, not the
 //                    whole frustum slice between its min and max depth.
@@ -41,8 +41,8 @@ layout(std430, binding = HV_BINDING_TILE_COUNTERS) buffer TileCounterBlock { uin
 // ---------------------------------------------------------------------------------------------
 #if HV_CULL_STAGE == HV_CULL_BOUNDS
 layout(binding = 3) uniform sampler2D t_depth;
-// One invocation per pixel column of the tile: 16 fetches reduced in registers, then one shared
-// atomic per bound (instead of one per pixel).
+// One invocation per pixel column of the tile: its HV_TILE_HEIGHT fetches reduced in registers,
+// then one shared atomic per bound (instead of one per pixel).
 layout(local_size_x = HV_TILE_SIZE) in;
 
 shared uint s_bounds[6];  // min xyz, max xyz as order-preserving uints
@@ -65,13 +65,14 @@ void main() {
   barrier();
   vec3 lo = vec3(3.0e38), hi = vec3(-3.0e38);
   int px = int(gl_WorkGroupID.x * HV_TILE_SIZE + x);
-  // A view-space point at view distance z on the ray of NDC (nx, ny) is (nx z / P00, ny z / P11, -z)
+  // A view-space point at view distance z on the ray of NDC (nx, ny) is
+  // (nx z / P00, ny z / P11, -z)
   // (centered projection, frame_data.cpp).
   vec2 inv_scale = vec2(1.0 / u_proj[0][0], 1.0 / u_proj[1][1]);
   float ndc_x = (float(px) + 0.5) / float(u_viewport.x) * 2.0 - 1.0;
   if (px < int(u_viewport.x)) {
-    for (int j = 0; j < HV_TILE_SIZE; ++j) {
-      int py = int(gl_WorkGroupID.y * HV_TILE_SIZE) + j;
+    for (int j = 0; j < HV_TILE_HEIGHT; ++j) {
+      int py = int(gl_WorkGroupID.y * HV_TILE_HEIGHT) + j;
       if (py >= int(u_viewport.y)) break;
       float d = texelFetch(t_depth, ivec2(px, py), 0).r;
       if (d > 0.0) {  // 0 = nothing drawn (background needs no lights)
@@ -149,13 +150,14 @@ void main() {
   }
   vec2 vp = vec2(u_viewport.xy);
   ivec2 tmax = ivec2(u_viewport.zw) - 1;
-  ivec2 t0 = clamp(ivec2(floor((ndc_lo * 0.5 + 0.5) * vp / float(HV_TILE_SIZE))), ivec2(0), tmax);
-  ivec2 t1 = clamp(ivec2(floor((ndc_hi * 0.5 + 0.5) * vp / float(HV_TILE_SIZE))), ivec2(0), tmax);
+  vec2 tile_px = vec2(HV_TILE_SIZE, HV_TILE_HEIGHT);
+  ivec2 t0 = clamp(ivec2(floor((ndc_lo * 0.5 + 0.5) * vp / tile_px)), ivec2(0), tmax);
+  ivec2 t1 = clamp(ivec2(floor((ndc_hi * 0.5 + 0.5) * vp / tile_px)), ivec2(0), tmax);
 
   for (int ty = t0.y; ty <= t1.y; ++ty) {
     // Tile row edges: y = k (-z) with k = ndc_y / P11 (same formula as stage 0).
-    float ky0 = (float(ty * HV_TILE_SIZE) / vp.y * 2.0 - 1.0) * inv_scale.y;
-    float ky1 = (float((ty + 1) * HV_TILE_SIZE) / vp.y * 2.0 - 1.0) * inv_scale.y;
+    float ky0 = (float(ty * HV_TILE_HEIGHT) / vp.y * 2.0 - 1.0) * inv_scale.y;
+    float ky1 = (float((ty + 1) * HV_TILE_HEIGHT) / vp.y * 2.0 - 1.0) * inv_scale.y;
     if (!insideEdge(c.y, c.z, ky0, 1.0, r) || !insideEdge(c.y, c.z, ky1, -1.0, r)) continue;
     for (int tx = t0.x; tx <= t1.x; ++tx) {
       float kx0 = (float(tx * HV_TILE_SIZE) / vp.x * 2.0 - 1.0) * inv_scale.x;
@@ -208,7 +210,8 @@ void main() {
   }
   uint offset = s_sums[tid] - sum;  // exclusive
   for (uint t = first; t < last; ++t) {
-    uint n0 = tile_counters[t * 3u], n1 = tile_counters[t * 3u + 1u], n2 = tile_counters[t * 3u + 2u];
+    uint n0 = tile_counters[t * 3u], n1 = tile_counters[t * 3u + 1u];
+    uint n2 = tile_counters[t * 3u + 2u];
     tile_ranges[t] = uvec2(offset, n0 + n1 + n2);
     tile_types[t] = uvec2(n0, n1);
     tile_counters[t * 3u] = offset;

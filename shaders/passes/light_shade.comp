@@ -10,7 +10,7 @@
 #include "../common/gbuffer.glsl"
 #include "../common/lights.glsl"
 
-layout(local_size_x = HV_TILE_SIZE, local_size_y = HV_TILE_SIZE) in;
+layout(local_size_x = HV_TILE_SIZE, local_size_y = HV_TILE_HEIGHT) in;
 
 layout(binding = 0) uniform sampler2D t_base_cavity;
 layout(binding = 1) uniform sampler2D t_material;

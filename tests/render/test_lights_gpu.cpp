@@ -3,6 +3,8 @@
 #include <cmath>
 #include <random>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "render_fixture.hpp"
 #include "scene/enums.hpp"
 #include "shading/light_gpu.hpp"
@@ -100,6 +102,9 @@ TEST(LightPass, TiledEqualsBruteForceWith4096Lights) {
   r.setScene(s);
   r.render(w, h2);
   const auto tiled = r.readHdr();
+  r.setLightTexelLimit(1);  // the SSBO path of the light pass (no buffer textures)
+  r.render(w, h2);
+  const auto tiled_ssbo = r.readHdr();
   s.settings.culling = Culling::BruteForce;
   r.render(w, h2);
   const auto brute = r.readHdr();
@@ -108,6 +113,7 @@ TEST(LightPass, TiledEqualsBruteForceWith4096Lights) {
     for (int k = 0; k < 3; ++k) {
       const float a = tiled.px[i][k], b = brute.px[i][k];
       ASSERT_NEAR(a, b, 1e-3f * b + 1e-5f) << "pixel " << i;
+      ASSERT_NEAR(tiled_ssbo.px[i][k], b, 1e-3f * b + 1e-5f) << "SSBO path, pixel " << i;
       max_rel = std::max(max_rel, double(std::abs(a - b) / (b + 1e-6f)));
       mean += b;
     }
@@ -173,4 +179,72 @@ TEST(LightPass, Tiled65536LightsMatchCpuSumOverAllLights) {
   }
   EXPECT_GT(checked, 30);
   EXPECT_GT(mean / checked, 0.01) << "the lights should light the plane";
+}
+
+// The culling's harder cases, tiled vs brute force (tolerance as above): spheres and boxes at
+// several depths in front of a floor (tiles straddling depth discontinuities), lights around and
+// behind the camera, one whose sphere contains the camera, and lights crossing the near plane.
+TEST(LightPass, TiledEqualsBruteForceDepthEdgesAndCameraInsideLights) {
+  testContext();
+  Material m;
+  m.base_color = glm::vec3(0.8f);
+  m.roughness = 0.4f;
+  Scene s = planeScene(m, 12.0f);
+  s.camera.position = {0.0f, 1.5f, 5.0f};
+  s.camera.target = {0.0f, 0.5f, 0.0f};
+  s.camera.up = {0.0f, 1.0f, 0.0f};
+  s.camera.near_plane = 0.1f;
+  s.meshes.push_back(makeSphere(0.5f, 24, 12));
+  s.meshes.back().material = 0;
+  s.meshes.push_back(makeBox(glm::vec3(0.3f, 0.6f, 0.3f)));
+  s.meshes.back().material = 0;
+  for (int i = 0; i < 6; ++i) {
+    Object o;
+    o.meshes = {1 + i % 2};
+    o.transform =
+        glm::translate(glm::mat4(1.0f), glm::vec3(-2.5f + float(i), 0.6f, 2.5f - 1.2f * float(i)));
+    s.objects.push_back(o);
+  }
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> u(-6.0f, 6.0f), h(0.05f, 2.5f), c(0.2f, 1.0f);
+  for (int i = 0; i < 600; ++i) {
+    Light l;
+    l.type = static_cast<LightType>(i % 3);
+    l.position = {u(rng), h(rng), u(rng) + 1.0f};  // some behind the camera (z > 5)
+    l.color = {c(rng), c(rng), c(rng)};
+    l.intensity = 0.05f;
+    l.range = 0.3f + 1.5f * c(rng);
+    l.radius = l.type == LightType::Point ? 0.0f : 0.03f;
+    l.length = l.type == LightType::Tube ? 0.3f : 0.0f;
+    s.lights.push_back(l);
+  }
+  Light inside;  // the camera is inside this one's culling sphere
+  inside.position = s.camera.position + glm::vec3(0.2f, -0.1f, -0.05f);
+  inside.range = 3.0f;
+  inside.intensity = 0.5f;
+  s.lights.push_back(inside);
+  Light near_plane = inside;  // just in front of the camera, crossing the near plane
+  near_plane.type = LightType::Sphere;
+  near_plane.radius = 0.05f;
+  near_plane.position = s.camera.position + glm::vec3(0.0f, 0.0f, -0.12f);
+  near_plane.range = 1.0f;
+  s.lights.push_back(near_plane);
+
+  const int w = 128, h2 = 72;
+  render::Renderer r;
+  r.setScene(s);
+  r.render(w, h2);
+  const auto tiled = r.readHdr();
+  s.settings.culling = Culling::BruteForce;
+  r.render(w, h2);
+  const auto brute = r.readHdr();
+  double mean = 0.0;
+  for (size_t i = 0; i < tiled.px.size(); ++i) {
+    for (int k = 0; k < 3; ++k) {
+      const float a = tiled.px[i][k], b = brute.px[i][k];
+      ASSERT_NEAR(a, b, 1e-3f * b + 1e-5f) << "pixel " << i % w << "," << i / w;
+      mean += b;
+    }
+  }
+  EXPECT_GT(mean / tiled.px.size(), 0.01) << "lights should light the scene";
 }
