@@ -6,11 +6,7 @@
 #include <limits>
 #include <string>
 
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wsign-compare"
-#include <stb/stb_easy_font.h>  // header-only, static functions: no implementation macro
-#pragma GCC diagnostic pop
+#include "image/plot.hpp"  // text and rectangle primitives for the legend
 
 namespace hv {
 namespace {
@@ -27,41 +23,6 @@ void checkSameSize(const ImageRGBf& test, const ImageRGBf& ref, const char* what
                      std::to_string(test.width) + "x" + std::to_string(test.height) + ", ref " +
                      std::to_string(ref.width) + "x" + std::to_string(ref.height) + ")");
 }
-
-void fillRect(ImageRGBA8& img, int x0, int y0, int x1, int y1, const uint8_t rgb[3]) {
-  x0 = std::max(x0, 0), y0 = std::max(y0, 0);
-  x1 = std::min(x1, img.width), y1 = std::min(y1, img.height);
-  for (int y = y0; y < y1; ++y)
-    for (int x = x0; x < x1; ++x) {
-      uint8_t* p = img.at(x, y);
-      p[0] = rgb[0], p[1] = rgb[1], p[2] = rgb[2], p[3] = 255;
-    }
-}
-
-// stb_easy_font emits axis-aligned quads (4 vertices of x, y, z floats + 4 color bytes); we fill
-// each quad's bounding box, scaled by an integer factor.
-void drawText(ImageRGBA8& img, int x, int y, const std::string& text, int scale) {
-  static char buf[64 * 1024];
-  std::string t = text;
-  unsigned char color[4] = {255, 255, 255, 255};
-  int quads = stb_easy_font_print(0.0f, 0.0f, t.data(), color, buf, sizeof(buf));
-  const uint8_t white[3] = {255, 255, 255};
-  for (int q = 0; q < quads; ++q) {
-    float lo[2] = {1e9f, 1e9f}, hi[2] = {-1e9f, -1e9f};
-    for (int v = 0; v < 4; ++v) {
-      const float* f = reinterpret_cast<const float*>(buf + (q * 4 + v) * 16);
-      for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], f[k]), hi[k] = std::max(hi[k], f[k]);
-    }
-    fillRect(img, x + int(lo[0] * scale), y + int(lo[1] * scale), x + int(hi[0] * scale),
-             y + int(hi[1] * scale), white);
-  }
-}
-
-int textWidth(const std::string& text, int scale) {
-  std::string t = text;
-  return stb_easy_font_width(t.data()) * scale;
-}
-
 }  // namespace
 
 double relativeError(glm::vec3 test, glm::vec3 ref) {
@@ -167,16 +128,15 @@ ImageRGBA8 relativeErrorHeatMap(const ImageRGBf& test, const ImageRGBf& ref, flo
   const int bar_y = test.height + kMargin;
   for (int x = x0; x < x1; ++x) {
     const glm::vec3 c = viridis(float(x - x0) / float(x1 - 1 - x0));
-    const uint8_t rgb[3] = {toByte(c.x), toByte(c.y), toByte(c.z)};
-    fillRect(out, x, bar_y, x + 1, bar_y + kBarHeight, rgb);
+    fillRect(out, x, bar_y, x + 1, bar_y + kBarHeight, Rgb8{toByte(c.x), toByte(c.y), toByte(c.z)});
   }
-  const uint8_t white[3] = {255, 255, 255};
+  const Rgb8 white{255, 255, 255};
   for (int i = 0; i <= 4; ++i) {
     const int tx = x0 + (x1 - 1 - x0) * i / 4;
     fillRect(out, tx, bar_y + kBarHeight, tx + 1, bar_y + kBarHeight + kTickHeight, white);
     const int w = textWidth(labels[i], scale);
     const int lx = std::clamp(tx - w / 2, 0, W - w);
-    drawText(out, lx, bar_y + kBarHeight + kTickHeight + 2, labels[i], scale);
+    drawText(out, lx, bar_y + kBarHeight + kTickHeight + 2, labels[i], scale, white);
   }
   return out;
 }
