@@ -18,6 +18,13 @@ constexpr double kPi = 3.14159265358979323846;
 
 using reference_detail::Moments;
 
+// The GGX alpha the engine shades with (roughness clamped as makeSurface does), for sizing the
+// view rings around the lobe.
+float lobeAlpha(float roughness) {
+  const float r = std::max(roughness, glsl::HV_MIN_ROUGHNESS);
+  return r * r;
+}
+
 RenderSettings physicalSettings() {
   RenderSettings s;
   s.falloff_plus_one = false;
@@ -195,7 +202,7 @@ std::vector<SphereSweepRow> sweepSphere(const SphereSweepGrid& g) {
     const glm::vec3 dir = dirFromElevation(float(row.elevation_deg * kPi / 180.0), 0.0f);
     light.position = dir;  // distance 1
     light.radius = row.radius;
-    const float alpha = std::max(row.roughness, 0.045f) * std::max(row.roughness, 0.045f);
+    const float alpha = lobeAlpha(row.roughness);
     const auto views = sweepViews(dir, 2.0f * alpha + std::asin(std::min(row.radius, 1.0f)));
     const ViewValues ref =
         referenceAtViews(light, views, row.roughness, g.samples, g.seed + uint64_t(i) * 1000003ull);
@@ -230,7 +237,7 @@ std::vector<TubeSweepRow> sweepTube(const TubeSweepGrid& g) {
   detail::parallelFor(int(rows.size()), g.threads, [&](int i) {
     TubeSweepRow& row = rows[size_t(i)];
     const glm::vec3 dir = dirFromElevation(float(g.elevation_deg * kPi / 180.0), 0.0f);
-    const float alpha = std::max(row.roughness, 0.045f) * std::max(row.roughness, 0.045f);
+    const float alpha = lobeAlpha(row.roughness);
     // Two orientations of the horizontal axis: across (y) and along (x) the plane of incidence.
     const glm::vec3 axes[2] = {glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(1.0f, 0.0f, 0.0f)};
     std::vector<double> ref_d, ref_d_se, ref_s, ref_s_se;

@@ -10,6 +10,7 @@
 
 #include "ibl/ibl.hpp"
 #include "ibl/ibl_math.hpp"
+#include "shared_assets.hpp"
 
 namespace fs = std::filesystem;
 namespace g = hv::glsl;
@@ -79,11 +80,6 @@ std::string tinyHdr(const std::string& format = "32-bit_rle_rgbe",
   std::string s = "#?RADIANCE\n# test\nFORMAT=" + format + "\n\n" + res + "\n";
   for (int i = 0; i < 8 * 4; ++i) s += std::string{char(128), char(64), char(32), char(129)};
   return s;
-}
-
-std::string assetsDir() {
-  if (const char* e = std::getenv("HV_ASSETS_DIR"); e && *e) return e;
-  return HV_ASSETS_DIR;
 }
 
 }  // namespace
@@ -315,7 +311,7 @@ TEST(Ibl, RotationAboutY) {
 }
 
 TEST(Ibl, SharedHdrAssetsBake) {
-  const std::string dir = assetsDir();
+  const std::string dir = hv::test::assetsDir().string();
   if (dir.empty()) GTEST_SKIP() << "HV_ASSETS_DIR not set (configure with -DHV_ASSETS_DIR=...)";
   for (const char* name :
        {"studio_small_03_1k.hdr", "venice_sunset_1k.hdr", "empty_warehouse_01_1k.hdr"}) {
@@ -337,7 +333,7 @@ TEST(Ibl, SharedHdrAssetsBake) {
 // Not part of the suite (run with --gtest_also_run_disabled_tests): bake times for a 256 cube
 // with the default settings of a shared HDR, then the same bake again from the cache.
 TEST(IblTiming, DISABLED_Bake256Default) {
-  const std::string dir = assetsDir();
+  const std::string dir = hv::test::assetsDir().string();
   if (dir.empty()) GTEST_SKIP() << "HV_ASSETS_DIR not set";
   hv::Environment env;
   env.kind = hv::EnvironmentKind::HdrFile;

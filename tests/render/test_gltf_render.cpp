@@ -11,26 +11,14 @@
 
 #include "render_fixture.hpp"
 #include "scene/gltf_loader.hpp"
+#include "shared_assets.hpp"
 
 namespace fs = std::filesystem;
 using namespace hv;
+using hv::test::assetsDir;
+using hv::test::gltfFiles;
 
 namespace {
-
-fs::path assetsDir() {
-  if (const char* e = std::getenv("HV_ASSETS_DIR"); e && *e) return e;
-  return HV_ASSETS_DIR;
-}
-
-std::vector<fs::path> gltfFiles(const fs::path& dir) {
-  std::vector<fs::path> out;
-  for (const auto& e : fs::recursive_directory_iterator(dir)) {
-    const auto ext = e.path().extension();
-    if (ext == ".gltf" || ext == ".glb") out.push_back(e.path());
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
 
 // World-space bounds of everything in the scene.
 void sceneBounds(const Scene& s, glm::vec3& lo, glm::vec3& hi) {

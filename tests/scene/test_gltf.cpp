@@ -9,16 +9,14 @@
 #include <nlohmann/json.hpp>
 
 #include "scene/gltf_loader.hpp"
+#include "shared_assets.hpp"
 
 namespace fs = std::filesystem;
+using hv::test::assetsDir;
+using hv::test::gltfFiles;
 using nlohmann::json;
 
 namespace {
-
-fs::path assetsDir() {
-  if (const char* e = std::getenv("HV_ASSETS_DIR"); e && *e) return e;
-  return HV_ASSETS_DIR;
-}
 
 fs::path tempDir() {
   fs::path d = fs::temp_directory_path() / ("hv_test_gltf_" + std::to_string(::getpid()));
@@ -228,20 +226,6 @@ TEST(Gltf, BlendWarnsOnce) {
 }
 
 // ---- shared assets ----------------------------------------------------------------------------
-
-namespace {
-
-std::vector<fs::path> gltfFiles(const fs::path& dir) {
-  std::vector<fs::path> out;
-  for (const auto& e : fs::recursive_directory_iterator(dir)) {
-    const auto ext = e.path().extension();
-    if (ext == ".gltf" || ext == ".glb") out.push_back(e.path());
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
-}  // namespace
 
 TEST(GltfAssets, SampleModelsLoad) {
   const fs::path dir = assetsDir() / "gltf";
