@@ -17,7 +17,6 @@
 #include "gl/shader_source.hpp"
 #include "platform/context.hpp"
 #include "render/renderer.hpp"
-#include "scene/scene_loader.hpp"
 #include "ui/imgui_layer.hpp"
 #include "ui/panels.hpp"
 
@@ -189,14 +188,14 @@ int cmdView(const Args& args) {
   }
   const ViewArgs va = parse(args);
   // Load before opening a window: a bad scene file fails without one.
-  (void)loadScene(va.scene);
+  SceneReloader reloader(va.scene);
 
   auto ctx = createWindowContext(va.width, va.height, "halfvec view - " + va.scene);
   GLFWwindow* win = ctx->window();
   glfwSetScrollCallback(win, [](GLFWwindow*, double, double y) { g_scroll += y; });
   if (va.frames > 0) glfwSwapInterval(0);  // scripted runs: no vsync wait
   render::Renderer renderer;
-  SceneReloader reloader(va.scene, renderer);
+  reloader.attach(renderer);
   Scene* scene = &reloader.scene();
   ui::ImGuiLayer imgui(win);  // after our callbacks: the backend chains to them
 

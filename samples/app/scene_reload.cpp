@@ -1,6 +1,7 @@
 #include "app/scene_reload.hpp"
 
 #include <cstdio>
+#include <stdexcept>
 
 #include "scene/scene_loader.hpp"
 
@@ -21,12 +22,15 @@ bool sameCamera(const Camera& a, const Camera& b) {
 
 }  // namespace
 
-SceneReloader::SceneReloader(std::string path, render::Renderer& renderer)
-    : path_(std::move(path)), renderer_(renderer) {
+SceneReloader::SceneReloader(std::string path) : path_(std::move(path)) {
   file_time_ = mtimeOf(path_);
   scene_ = std::make_unique<Scene>(loadScene(path_));
   loaded_camera_ = scene_->camera;
-  renderer_.setScene(*scene_);
+}
+
+void SceneReloader::attach(render::Renderer& renderer) {
+  renderer.setScene(*scene_);
+  renderer_ = &renderer;
 }
 
 bool SceneReloader::poll() {
@@ -37,14 +41,15 @@ bool SceneReloader::poll() {
 }
 
 bool SceneReloader::reload() {
+  if (!renderer_) throw std::logic_error("SceneReloader::reload before attach");
   try {
     auto fresh = std::make_unique<Scene>(loadScene(path_));
     const bool camera_edited = !sameCamera(fresh->camera, loaded_camera_);
     if (!camera_edited) fresh->camera = scene_->camera;  // keep the user's view
     try {
-      renderer_.setScene(*fresh);
+      renderer_->setScene(*fresh);
     } catch (...) {
-      renderer_.setScene(*scene_);  // the old scene was uploaded before: this cannot half-fail
+      renderer_->setScene(*scene_);  // the old scene was uploaded before: this cannot half-fail
       throw;
     }
     loaded_camera_ = fresh->camera;

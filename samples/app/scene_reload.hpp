@@ -14,9 +14,12 @@ namespace hv::app {
 
 class SceneReloader {
  public:
-  // Loads `path` (throws SceneError/IblError like loadScene/setScene on a bad first load) and
-  // uploads it to `renderer`, which must outlive this object.
-  SceneReloader(std::string path, render::Renderer& renderer);
+  // Loads `path` (throws SceneError like loadScene on a bad first load); needs no GL context, so
+  // a bad file fails before any window opens.
+  explicit SceneReloader(std::string path);
+  // Uploads the scene to `renderer` (throws like setScene), which then receives every reload and
+  // must outlive this object.
+  void attach(render::Renderer& renderer);
 
   // Reloads when the file's modification time changed since the last attempt. Returns true when
   // a new scene was loaded; on failure returns false, keeps the last good scene and sets error().
@@ -31,7 +34,7 @@ class SceneReloader {
 
  private:
   std::string path_;
-  render::Renderer& renderer_;
+  render::Renderer* renderer_ = nullptr;
   std::unique_ptr<Scene> scene_;
   Camera loaded_camera_;
   std::filesystem::file_time_type file_time_{};

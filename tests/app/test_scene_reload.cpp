@@ -40,7 +40,8 @@ TEST(SceneReload, BadEditsKeepTheLastGoodScene) {
   write(file, kGood);
 
   render::Renderer renderer;
-  app::SceneReloader reloader(file.string(), renderer);
+  app::SceneReloader reloader(file.string());
+  reloader.attach(renderer);
   const ImageRGBf before = renderOnce(renderer);
   EXPECT_FALSE(reloader.poll()) << "unchanged file: nothing to do";
 
