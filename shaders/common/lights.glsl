@@ -151,24 +151,46 @@ float lineNormalization(float alpha, float len, float d2) {
 #endif
 }
 
+// What every light shading a pixel shares, computed once per pixel before the light loop (as
+// UE4's BxDFContext): the view direction, N.V and the reflection ray of Karis eq. 11 and 19.
+struct ShadingPoint {
+  vec3 P;         // world position
+  vec3 V;         // unit, from P toward the eye
+  vec3 R;         // reflect(-V, N): the reflection ray of the representative-point methods
+  float NoV;      // max(dot(N, V), HV_MIN_NOV): the BRDF's N.V
+};
+
+ShadingPoint makeShadingPoint(Surface s, vec3 P, vec3 V) {
+  ShadingPoint sp;
+  sp.P = P;
+  sp.V = V;
+  sp.R = reflect(-V, s.N);
+  sp.NoV = max(dot(s.N, V), HV_MIN_NOV);
+  return sp;
+}
+
 // Karis 2013 "Lighting" / "Material Model": the shading of one light, shared by all light types.
 // Radiance leaving the surface toward V for light arriving from direction L (representative
 // direction for specular, Ld for diffuse), already scaled by the light's irradiance factors:
 // diffuse_irr = I * falloff * cos for the diffuse lobe, spec_irr = I * falloff for specular
 // (NoL of the representative direction is applied here), spec_norm = D normalization.
-vec3 shadeLight(Surface s, vec3 V, float NoV, vec3 Ld, vec3 Ls, vec3 radiant, float diffuse_irr,
+vec3 shadeLight(Surface s, ShadingPoint sp, vec3 Ld, vec3 Ls, vec3 radiant, float diffuse_irr,
                 float spec_irr, float spec_norm) {
   // Diffuse lobe (Lambert or Burley) evaluated for the diffuse direction Ld.
-  vec3 Hd = safeNormalize(V + Ld);
+  vec3 Hd = safeNormalize(sp.V + Ld);
   float NoLd = saturate(dot(s.N, Ld));
   float LoHd = saturate(dot(Ld, Hd));
-  vec3 diffuse = s.diffuse_color * (diffuseLobe(s.roughness, NoV, NoLd, LoHd) * diffuse_irr);
-  // Specular lobe for the representative direction Ls.
-  vec3 H = safeNormalize(V + Ls);
+  vec3 diffuse = s.diffuse_color * (diffuseLobe(s.roughness, sp.NoV, NoLd, LoHd) * diffuse_irr);
+  // Specular lobe for the representative direction Ls. H is normalized explicitly: the identity
+  // N.H = (N.V + N.L) / sqrt(2 + 2 V.L) (UE4's BxDFContext) saves two dot products but loses
+  // precision where V and L are nearly opposite (grazing mirror views: 1 + V.L cancels), which
+  // at roughness 0.05 raised the sphere light's worst error against the reference from 9.7 to
+  // 14.8 (tests/reference/test_accuracy.cpp, AccuracyFindings.SphereErrorBounds).
+  vec3 H = safeNormalize(sp.V + Ls);
   float NoL = saturate(dot(s.N, Ls));
   float NoH = saturate(dot(s.N, H));
-  float VoH = saturate(dot(V, H));
-  vec3 specular = specularLobe(s, NoV, NoL, NoH, VoH, spec_norm) * (spec_irr * NoL);
+  float VoH = saturate(dot(sp.V, H));
+  vec3 specular = specularLobe(s, sp.NoV, NoL, NoH, VoH, spec_norm) * (spec_irr * NoL);
   // Term mask (HV_DIRECT_TERMS): a term left out is 0; the compiler drops its code.
 #if (HV_DIRECT_TERMS & 1) == 0
   diffuse = vec3(0.0f);
@@ -183,14 +205,16 @@ vec3 shadeLight(Surface s, vec3 V, float NoV, vec3 Ld, vec3 Ls, vec3 radiant, fl
 
 #if HV_HAS_POINT_LIGHTS
 // Point light (Karis 2013 "Lighting", eq. 9 falloff): radiance toward V at P.
-vec3 evaluatePointLight(GpuLight light, Surface s, vec3 P, vec3 V) {
-  vec3 Lc = vec3(light.position_radius) - P;
+vec3 evaluatePointLightAt(GpuLight light, Surface s, ShadingPoint sp) {
+  vec3 Lc = vec3(light.position_radius) - sp.P;
   float d2 = dot(Lc, Lc);
-  vec3 L = safeNormalize(Lc);  // 0 at the light itself: no light, not NaN
-  float NoV = max(dot(s.N, V), HV_MIN_NOV);
+  vec3 L = Lc * inversesqrt(max(d2, 1e-30f));  // safeNormalize reusing d2: 0 at the light itself
   float falloff = distanceFalloff(d2, 0.0f, light.params.y);
-  return shadeLight(s, V, NoV, L, L, vec3(light.color_type), falloff * saturate(dot(s.N, L)),
-                    falloff, 1.0f);
+  return shadeLight(s, sp, L, L, vec3(light.color_type), falloff * saturate(dot(s.N, L)), falloff,
+                    1.0f);
+}
+vec3 evaluatePointLight(GpuLight light, Surface s, vec3 P, vec3 V) {
+  return evaluatePointLightAt(light, s, makeShadingPoint(s, P, V));
 }
 #endif
 
@@ -198,12 +222,11 @@ vec3 evaluatePointLight(GpuLight light, Surface s, vec3 P, vec3 V) {
 // Sphere light: diffuse from the center (Karis point approximation) or the horizon-correct sphere
 // irradiance (Lagarde & de Rousiers 2014 section 4.7.2); specular from the representative point
 // closest to the reflection ray (Karis 2013 eq. 11) with the energy normalization of eq. 14.
-vec3 evaluateSphereLight(GpuLight light, Surface s, vec3 P, vec3 V) {
+vec3 evaluateSphereLightAt(GpuLight light, Surface s, ShadingPoint sp) {
   float radius = light.position_radius.w;
-  vec3 Lc = vec3(light.position_radius) - P;
+  vec3 Lc = vec3(light.position_radius) - sp.P;
   float d2 = dot(Lc, Lc);
-  vec3 L = safeNormalize(Lc);
-  float NoV = max(dot(s.N, V), HV_MIN_NOV);
+  vec3 L = Lc * inversesqrt(max(d2, 1e-30f));
   float falloff = distanceFalloff(d2, radius, light.params.y);
 #if HV_SPHERE_DIFFUSE == HV_SPHERE_DIFFUSE_HORIZON
   // sin^2(sigma) = r^2 / d^2, with d^2 >= HV_MIN_LIGHT_DIST2 (the factor clamps it to <= 1).
@@ -212,10 +235,12 @@ vec3 evaluateSphereLight(GpuLight light, Surface s, vec3 P, vec3 V) {
 #else
   float cos_factor = saturate(dot(s.N, L));
 #endif
-  vec3 R = reflect(-V, s.N);
-  vec3 Ls = safeNormalize(closestPointOnSphereToRay(Lc, radius, R));
+  vec3 Ls = safeNormalize(closestPointOnSphereToRay(Lc, radius, sp.R));
   float norm = sphereNormalization(s.alpha, radius, d2);
-  return shadeLight(s, V, NoV, L, Ls, vec3(light.color_type), falloff * cos_factor, falloff, norm);
+  return shadeLight(s, sp, L, Ls, vec3(light.color_type), falloff * cos_factor, falloff, norm);
+}
+vec3 evaluateSphereLight(GpuLight light, Surface s, vec3 P, vec3 V) {
+  return evaluateSphereLightAt(light, s, makeShadingPoint(s, P, V));
 }
 #endif
 
@@ -225,14 +250,13 @@ vec3 evaluateSphereLight(GpuLight light, Surface s, vec3 P, vec3 V) {
 // closest to the reflection ray (eq. 19; eq. 18 with HV_TUBE_SPECULAR = 1), then the sphere
 // representative point around it (eq. 11), normalized by alpha/alpha' (eq. 20) times the
 // sphere's (alpha/alpha'')^2 (eq. 14).
-vec3 evaluateTubeLight(GpuLight light, Surface s, vec3 P, vec3 V) {
+vec3 evaluateTubeLightAt(GpuLight light, Surface s, ShadingPoint sp) {
   float radius = light.position_radius.w;
   float len = light.axis_length.w;
-  vec3 Lc = vec3(light.position_radius) - P;
+  vec3 Lc = vec3(light.position_radius) - sp.P;
   vec3 Ld = vec3(light.axis_length) * len;  // segment vector L1 - L0
   vec3 L0 = Lc - 0.5f * Ld;
   vec3 L1 = Lc + 0.5f * Ld;
-  float NoV = max(dot(s.N, V), HV_MIN_NOV);
   float ld2 = dot(Ld, Ld);
   // Closest point of the segment to P: the window distance and the diffuse direction. 1e-30
   // guards 0/0 for len = 0 (then t = 0 and L0 = Lc: the sphere light).
@@ -257,7 +281,7 @@ vec3 evaluateTubeLight(GpuLight light, Surface s, vec3 P, vec3 V) {
       (saturate(dot(s.N, L0) * inv_l0) + saturate(dot(s.N, L1) * inv_l1)) / den * window;
 
   // Specular: the point of the segment chosen for the reflection ray R.
-  vec3 R = reflect(-V, s.N);
+  vec3 R = sp.R;
   float rl0 = dot(R, L0);
   float rld = dot(R, Ld);
   float l0ld = dot(L0, Ld);
@@ -280,8 +304,11 @@ vec3 evaluateTubeLight(GpuLight light, Surface s, vec3 P, vec3 V) {
   // sphere's falloff when len = 0), windowed like the diffuse.
   float spec_irr = window / (max(dt2, max(radius * radius, HV_MIN_LIGHT_DIST2)) +
                              float(HV_FALLOFF_PLUS_ONE));
-  vec3 Ldiff = safeNormalize(Lp);
-  return shadeLight(s, V, NoV, Ldiff, Ls, vec3(light.color_type), irradiance, spec_irr, norm);
+  vec3 Ldiff = Lp * inversesqrt(max(dp2, 1e-30f));  // safeNormalize(Lp) reusing dp2
+  return shadeLight(s, sp, Ldiff, Ls, vec3(light.color_type), irradiance, spec_irr, norm);
+}
+vec3 evaluateTubeLight(GpuLight light, Surface s, vec3 P, vec3 V) {
+  return evaluateTubeLightAt(light, s, makeShadingPoint(s, P, V));
 }
 #endif
 
@@ -289,19 +316,22 @@ vec3 evaluateTubeLight(GpuLight light, Surface s, vec3 P, vec3 V) {
 // for surface s (docs/lights.md).
 // Cavity is applied to all of it (see shadeLight). Only the compiled light types are handled;
 // a light of a type compiled out contributes 0.
-vec3 evaluateLight(GpuLight light, Surface s, vec3 P, vec3 V) {
+vec3 evaluateLightAt(GpuLight light, Surface s, ShadingPoint sp) {
   int type = int(light.color_type.w + 0.5f);  // stored as float; +0.5 rounds
   vec3 result = vec3(0.0f);
 #if HV_HAS_POINT_LIGHTS
-  if (type == HV_LIGHT_POINT) result = evaluatePointLight(light, s, P, V);
+  if (type == HV_LIGHT_POINT) result = evaluatePointLightAt(light, s, sp);
 #endif
 #if HV_HAS_SPHERE_LIGHTS
-  if (type == HV_LIGHT_SPHERE) result = evaluateSphereLight(light, s, P, V);
+  if (type == HV_LIGHT_SPHERE) result = evaluateSphereLightAt(light, s, sp);
 #endif
 #if HV_HAS_TUBE_LIGHTS
-  if (type == HV_LIGHT_TUBE) result = evaluateTubeLight(light, s, P, V);
+  if (type == HV_LIGHT_TUBE) result = evaluateTubeLightAt(light, s, sp);
 #endif
   return result;
+}
+vec3 evaluateLight(GpuLight light, Surface s, vec3 P, vec3 V) {
+  return evaluateLightAt(light, s, makeShadingPoint(s, P, V));
 }
 
 // Karis 2013 eq. 9 (the window bounds the light): world-space radius, around the light
