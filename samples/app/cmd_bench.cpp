@@ -2,6 +2,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+#include <string>
 #include <memory>
 #include <random>
 #include <utility>
@@ -16,7 +20,8 @@ namespace hv::app {
 
 namespace {
 constexpr const char* kHelp =
-    R"(Usage: halfvec bench [--size WxH] [--frames N] [--max-lights N] [--quick] [--lights N [--range R]]
+    R"(Usage: halfvec bench [--size WxH] [--frames N] [--max-lights N] [--quick] [--types T]
+                    [--lights N [--range R] [--shaders DIR,DIR...]]
 
 Light-pass benchmark on a 40 m x 40 m floor seen from above at an angle, lights of mixed types
 (point, sphere, tube) scattered just above it. Prints, per light count from 64 up:
@@ -32,11 +37,21 @@ from other processes hits both alike). Light counts: 64, 256, 1024, 4096, 16384 
 (for profiling one change at a time), with --range R the lights' range in m instead. Absolute times are noisy on a shared machine: compare
 ratios.
 
+  --types T    the lights' types: mixed (default: point, sphere, tube in turn), point, sphere
+               or tube; evaluations per second depend on the type (a tube costs most)
+  --shaders D1,D2,...  with --lights: the same scene rendered by one renderer per shader tree
+               (HV_SHADER_DIR, a copy of shaders/ with a change), frames interleaved D1 D2 D1 D2
+               so that load from other processes hits them alike; prints the median and the
+               fastest frame of each. For A/B tests of shader changes.
+
   --variants   instead: programs specialized to the scene vs the uber build, GPU ms per pass on
                every scene of samples/scenes, as a markdown table (--quick: at most 640x360)
 )";
 
 constexpr float kFloor = 40.0f;
+
+// -1: mixed (point, sphere, tube in turn), else that LightType.
+int g_bench_type = -1;
 
 Scene benchScene(int lights, float range, uint32_t seed) {
   Scene s;
@@ -56,7 +71,7 @@ Scene benchScene(int lights, float range, uint32_t seed) {
   std::uniform_real_distribution<float> u(-kFloor / 2, kFloor / 2), h(0.1f, 0.6f), c(0.3f, 1.0f);
   for (int i = 0; i < lights; ++i) {
     Light l;
-    l.type = static_cast<LightType>(i % 3);
+    l.type = static_cast<LightType>(g_bench_type < 0 ? i % 3 : g_bench_type);
     l.position = {u(rng), h(rng), u(rng)};
     l.color = {c(rng), c(rng), c(rng)};
     l.intensity = 1.0f;
@@ -89,9 +104,10 @@ struct Runner {
       if (name == "light") light.push_back(ms);
     }
   }
-  Result result() const {
-    auto median = [](std::vector<double> v) {
+  Result result(bool fastest = false) const {
+    auto median = [fastest](std::vector<double> v) {
       if (v.empty()) return 0.0;
+      if (fastest) return *std::min_element(v.begin(), v.end());
       std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
       return v[v.size() / 2];
     };
@@ -132,6 +148,34 @@ void printRow(int n, float range, const Result& r) {
   std::fflush(stdout);
 }
 
+// --shaders: one renderer per shader tree, frames interleaved; median and fastest light ms.
+int compareShaderTrees(const Scene& scene, const std::vector<std::string>& dirs, int w, int h,
+                       int frames) {
+  std::vector<std::unique_ptr<Runner>> runs;
+  const char* old = std::getenv("HV_SHADER_DIR");
+  const std::string saved = old ? old : "";
+  for (const std::string& d : dirs) {
+    if (!std::filesystem::is_directory(d)) throw UsageError{"--shaders: no directory '" + d + "'"};
+    ::setenv("HV_SHADER_DIR", d.c_str(), 1);
+    runs.push_back(std::make_unique<Runner>(scene, w, h));  // compiles from d
+  }
+  if (old) {
+    ::setenv("HV_SHADER_DIR", saved.c_str(), 1);
+  } else {
+    ::unsetenv("HV_SHADER_DIR");
+  }
+  for (int f = 0; f < frames; ++f) {
+    for (auto& run : runs) run->frame(w, h);
+  }
+  std::printf("%-40s %12s %12s %14s\n", "shader tree", "light ms", "fastest ms", "Mevals/s (fast)");
+  for (size_t i = 0; i < runs.size(); ++i) {
+    const Result med = runs[i]->result(), fast = runs[i]->result(true);
+    std::printf("%-40s %12.3f %12.3f %14.1f\n", dirs[i].c_str(), med.light_ms, fast.light_ms,
+                fast.light_ms > 0 ? double(fast.evals) / (fast.light_ms * 1e-3) * 1e-6 : 0.0);
+  }
+  return 0;
+}
+
 void header() {
   std::printf("%8s %8s %10s %10s %12s %14s\n", "lights", "range m", "cull ms", "light ms",
               "lights/px", "Mevals/s");
@@ -144,6 +188,7 @@ int cmdBench(const Args& args) {
   float only_range = 0.0f;
   bool quick = false;
   bool variants = false;
+  std::vector<std::string> shader_dirs;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a == "--help" || a == "-h") {
@@ -165,6 +210,20 @@ int cmdBench(const Args& args) {
       if (!(only_range > 0.0f)) throw UsageError{"--range expects a positive length in m"};
     } else if (a == "--quick") {
       quick = true;
+    } else if (a == "--types" && i + 1 < args.size()) {
+      const std::string t = args[++i];
+      if (t == "mixed") {
+        g_bench_type = -1;
+      } else if (t == "point" || t == "sphere" || t == "tube") {
+        g_bench_type = t == "point" ? 0 : t == "sphere" ? 1 : 2;  // hv::LightType
+      } else {
+        throw UsageError{"--types expects mixed, point, sphere or tube, got '" + t + "'"};
+      }
+    } else if (a == "--shaders" && i + 1 < args.size()) {
+      std::stringstream list(args[++i]);
+      for (std::string d; std::getline(list, d, ',');) {
+        if (!d.empty()) shader_dirs.push_back(d);
+      }
     } else if (a == "--variants") {
       variants = true;
     } else {
@@ -196,6 +255,7 @@ int cmdBench(const Args& args) {
     header();
     const float r = only_range > 0.0f ? only_range : densityRange(only);
     Scene s = benchScene(only, r, 1);
+    if (!shader_dirs.empty()) return compareShaderTrees(s, shader_dirs, w, h, frames);
     printRow(only, r, measure(s, w, h, frames));
     return 0;
   }
