@@ -11,6 +11,8 @@ namespace hv::render {
 
 constexpr int kTileSize = 8;    // HV_TILE_SIZE in frame.glsl (culling tile width)
 constexpr int kTileHeight = 4;  // HV_TILE_HEIGHT in frame.glsl (culling tile height)
+// HV_LIGHT_GROUP_TILES in frame.glsl: tiles per workgroup (a column) of the light pass.
+constexpr int kLightGroupTiles = 8;
 
 struct alignas(16) FrameBlock {
   glm::mat4 view;

@@ -139,7 +139,8 @@ void Renderer::lightPass(const FrameBlock& frame) {
     glBindTextureUnit(4, light_texels_.id());
     glBindTextureUnit(5, tile_index_texels_.id());
   }
-  glDispatchCompute(frame.viewport.z, frame.viewport.w, 1);
+  glDispatchCompute(frame.viewport.z, (frame.viewport.w + kLightGroupTiles - 1) / kLightGroupTiles,
+                    1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   for (GLuint u = 0; u < 4; ++u) glBindSampler(u, 0);
   if (use_textures) {

@@ -15,11 +15,12 @@ GpuLight packLight(const Light& light) {
   // 1e-4 m: a smaller (or zero/negative) range would make 1/R infinite; such a light is dark.
   float range = std::max(light.range, 1e-4f);
   g.position_radius = glm::vec4(light.position, radius);
-  g.color_type = glm::vec4(light.color * light.intensity, float(static_cast<int>(light.type)));
+  // 1/R shares the color's texel: what a point or sphere light reads is 2 of the 4 texels.
+  g.color_inv_range = glm::vec4(light.color * light.intensity, 1.0f / range);
   g.axis_length = glm::vec4(axis, len);
   // The eq. 9 window is 0 at distance R from the nearest point of the segment (tubes) or from
   // the center (points, spheres); a tube's segment reaches len/2 from its center.
-  g.params = glm::vec4(range, 1.0f / range, range + 0.5f * len, 0.0f);
+  g.params = glm::vec4(range, float(static_cast<int>(light.type)), range + 0.5f * len, 0.0f);
   return g;
 }
 

@@ -16,14 +16,14 @@ namespace hv {
 // std430 layout: four vec4, 64 bytes, 16-byte aligned (identical in std140).
 struct alignas(16) GpuLight {
   glm::vec4 position_radius;  // xyz world position (tube: segment center), w radius (m)
-  glm::vec4 color_type;       // rgb color * intensity (W/sr), w type as float (hv::LightType)
+  glm::vec4 color_inv_range;  // rgb color * intensity (W/sr), w 1/R (Karis eq. 9 window)
   glm::vec4 axis_length;      // xyz unit tube axis, w tube length (m); 0 for point/sphere
-  glm::vec4 params;           // x range R, y 1/R, z culling radius, w 0 (reserved)
+  glm::vec4 params;           // x range R, y type as float (hv::LightType), z culling radius, w 0
 };
 static_assert(sizeof(GpuLight) == 64, "GpuLight must match the std430 GLSL struct (64 bytes)");
 static_assert(alignof(GpuLight) == 16, "GpuLight array stride must be 16-byte aligned");
 static_assert(offsetof(GpuLight, position_radius) == 0);
-static_assert(offsetof(GpuLight, color_type) == 16);
+static_assert(offsetof(GpuLight, color_inv_range) == 16);
 static_assert(offsetof(GpuLight, axis_length) == 32);
 static_assert(offsetof(GpuLight, params) == 48);
 static_assert(sizeof(glsl::GpuLight) == sizeof(GpuLight), "GLSL struct compiled as C++ differs");
@@ -38,7 +38,7 @@ GpuLight packLight(const Light& light);
 inline glsl::GpuLight toGlsl(const GpuLight& g) {
   glsl::GpuLight r;
   r.position_radius = g.position_radius;
-  r.color_type = g.color_type;
+  r.color_inv_range = g.color_inv_range;
   r.axis_length = g.axis_length;
   r.params = g.params;
   return r;

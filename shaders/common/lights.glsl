@@ -52,19 +52,20 @@
 #define HV_DIRECT_TERMS 3
 #endif
 
-// Light type codes stored (as float) in GpuLight.color_type.w; = hv::LightType.
+// Light type codes stored (as float) in GpuLight.params.y; = hv::LightType.
 #define HV_LIGHT_POINT 0
 #define HV_LIGHT_SPHERE 1
 #define HV_LIGHT_TUBE 2
 
 // One light as the GPU reads it: std430, 4 x vec4 = 64 bytes (C++ mirror: hv::GpuLight).
 //  position_radius: x,y,z world position (tube: segment center), w sphere/capsule radius (m)
-//  color_type:      rgb linear color premultiplied by intensity I (W/sr), w type (0/1/2)
+//  color_inv_range: rgb linear color premultiplied by intensity I (W/sr), w 1/R (eq. 9 window)
 //  axis_length:     x,y,z unit tube axis, w tube segment length (m); 0 for point and sphere
-//  params:          x range R (Karis eq. 9 window), y 1/R, z culling radius, w 0 (reserved)
+//  params:          x range R (Karis eq. 9 window), y type (0/1/2), z culling radius, w 0
+// Points and spheres read only the first two vec4 in the light pass, tubes three.
 struct GpuLight {
   vec4 position_radius;
-  vec4 color_type;
+  vec4 color_inv_range;
   vec4 axis_length;
   vec4 params;
 };
@@ -209,8 +210,8 @@ vec3 evaluatePointLightAt(GpuLight light, Surface s, ShadingPoint sp) {
   vec3 Lc = vec3(light.position_radius) - sp.P;
   float d2 = dot(Lc, Lc);
   vec3 L = Lc * inversesqrt(max(d2, 1e-30f));  // safeNormalize reusing d2: 0 at the light itself
-  float falloff = distanceFalloff(d2, 0.0f, light.params.y);
-  return shadeLight(s, sp, L, L, vec3(light.color_type), falloff * saturate(dot(s.N, L)), falloff,
+  float falloff = distanceFalloff(d2, 0.0f, light.color_inv_range.w);
+  return shadeLight(s, sp, L, L, vec3(light.color_inv_range), falloff * saturate(dot(s.N, L)), falloff,
                     1.0f);
 }
 vec3 evaluatePointLight(GpuLight light, Surface s, vec3 P, vec3 V) {
@@ -227,7 +228,7 @@ vec3 evaluateSphereLightAt(GpuLight light, Surface s, ShadingPoint sp) {
   vec3 Lc = vec3(light.position_radius) - sp.P;
   float d2 = dot(Lc, Lc);
   vec3 L = Lc * inversesqrt(max(d2, 1e-30f));
-  float falloff = distanceFalloff(d2, radius, light.params.y);
+  float falloff = distanceFalloff(d2, radius, light.color_inv_range.w);
 #if HV_SPHERE_DIFFUSE == HV_SPHERE_DIFFUSE_HORIZON
   // sin^2(sigma) = r^2 / d^2, with d^2 >= HV_MIN_LIGHT_DIST2 (the factor clamps it to <= 1).
   float cos_factor =
@@ -237,7 +238,7 @@ vec3 evaluateSphereLightAt(GpuLight light, Surface s, ShadingPoint sp) {
 #endif
   vec3 Ls = safeNormalize(closestPointOnSphereToRay(Lc, radius, sp.R));
   float norm = sphereNormalization(s.alpha, radius, d2);
-  return shadeLight(s, sp, L, Ls, vec3(light.color_type), falloff * cos_factor, falloff, norm);
+  return shadeLight(s, sp, L, Ls, vec3(light.color_inv_range), falloff * cos_factor, falloff, norm);
 }
 vec3 evaluateSphereLight(GpuLight light, Surface s, vec3 P, vec3 V) {
   return evaluateSphereLightAt(light, s, makeShadingPoint(s, P, V));
@@ -263,7 +264,7 @@ vec3 evaluateTubeLightAt(GpuLight light, Surface s, ShadingPoint sp) {
   float tp = saturate(-dot(L0, Ld) / max(ld2, 1e-30f));
   vec3 Lp = L0 + tp * Ld;
   float dp2 = dot(Lp, Lp);
-  float window = falloffWindow(dp2, light.params.y);
+  float window = falloffWindow(dp2, light.color_inv_range.w);
 
   // Diffuse, Karis eq. 16: E = I (saturate(n.L0/|L0|) + saturate(n.L1/|L1|)) /
   // (|L0||L1| + L0.L1 + 2), the exact irradiance of a line of total intensity I (n.L clipped at
@@ -305,7 +306,7 @@ vec3 evaluateTubeLightAt(GpuLight light, Surface s, ShadingPoint sp) {
   float spec_irr = window / (max(dt2, max(radius * radius, HV_MIN_LIGHT_DIST2)) +
                              float(HV_FALLOFF_PLUS_ONE));
   vec3 Ldiff = Lp * inversesqrt(max(dp2, 1e-30f));  // safeNormalize(Lp) reusing dp2
-  return shadeLight(s, sp, Ldiff, Ls, vec3(light.color_type), irradiance, spec_irr, norm);
+  return shadeLight(s, sp, Ldiff, Ls, vec3(light.color_inv_range), irradiance, spec_irr, norm);
 }
 vec3 evaluateTubeLight(GpuLight light, Surface s, vec3 P, vec3 V) {
   return evaluateTubeLightAt(light, s, makeShadingPoint(s, P, V));
@@ -317,7 +318,7 @@ vec3 evaluateTubeLight(GpuLight light, Surface s, vec3 P, vec3 V) {
 // Cavity is applied to all of it (see shadeLight). Only the compiled light types are handled;
 // a light of a type compiled out contributes 0.
 vec3 evaluateLightAt(GpuLight light, Surface s, ShadingPoint sp) {
-  int type = int(light.color_type.w + 0.5f);  // stored as float; +0.5 rounds
+  int type = int(light.params.y + 0.5f);  // stored as float; +0.5 rounds
   vec3 result = vec3(0.0f);
 #if HV_HAS_POINT_LIGHTS
   if (type == HV_LIGHT_POINT) result = evaluatePointLightAt(light, s, sp);

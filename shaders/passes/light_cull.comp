@@ -132,7 +132,7 @@ void main() {
   if (i >= u_counts.x) return;
   vec3 c = (u_view * vec4(lights[i].position_radius.xyz, 1.0)).xyz;
   float r = lightCullRadius(lights[i]);
-  uint type = uint(lights[i].color_type.w + 0.5);  // HV_LIGHT_POINT/SPHERE/TUBE = 0/1/2
+  uint type = uint(lights[i].params.y + 0.5);  // HV_LIGHT_POINT/SPHERE/TUBE = 0/1/2
   float near_z = -c.z - r, far_z = -c.z + r;        // view-distance interval of the sphere
   if (far_z < u_near_params.x || type > 2u) return;  // every visible point is beyond the near plane
 

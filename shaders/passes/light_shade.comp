@@ -12,13 +12,16 @@
 
 // Each invocation shades HV_LIGHT_PIXELS pixels of a tile column (HV_TILE_HEIGHT must be a
 // multiple): a light's data is fetched once and evaluated for all of them, so the fetch (a gather
-// per lane on llvmpipe, a load on a GPU) is paid once per HV_LIGHT_PIXELS evaluations. With the
-// default 4, an 8 x 4 tile is 8 invocations, one SIMD row on llvmpipe (docs/lights.md, "Light
-// pass": measured 1.6x faster than one pixel per invocation at 1,024 lights).
+// per lane on llvmpipe, a load on a GPU) is paid once per HV_LIGHT_PIXELS evaluations. A
+// workgroup covers HV_LIGHT_GROUP_TILES tiles stacked vertically (frame.glsl), one tile per
+// HV_TILE_HEIGHT / HV_LIGHT_PIXELS invocation rows, each tile with its own light list. With the
+// defaults, an 8 x 4 tile is one row of 8 invocations (one SIMD row on llvmpipe) and a workgroup
+// 8 x 8 invocations (docs/lights.md, "Light pass").
 #ifndef HV_LIGHT_PIXELS
 #define HV_LIGHT_PIXELS 4
 #endif
-layout(local_size_x = HV_TILE_SIZE, local_size_y = HV_TILE_HEIGHT / HV_LIGHT_PIXELS) in;
+#define HV_LIGHT_ROWS_PER_TILE (HV_TILE_HEIGHT / HV_LIGHT_PIXELS)
+layout(local_size_x = HV_TILE_SIZE, local_size_y = HV_LIGHT_ROWS_PER_TILE * HV_LIGHT_GROUP_TILES) in;
 
 layout(binding = 0) uniform sampler2D t_base_cavity;
 layout(binding = 1) uniform sampler2D t_material;
@@ -50,7 +53,7 @@ GpuLight tileLight(uint i) {
   int base = int(texelFetch(t_tile_indices, int(i) + 4).r) * 4;
   GpuLight l;
   l.position_radius = texelFetch(t_lights, base);
-  l.color_type = texelFetch(t_lights, base + 1);
+  l.color_inv_range = texelFetch(t_lights, base + 1);
   l.axis_length = texelFetch(t_lights, base + 2);
   l.params = texelFetch(t_lights, base + 3);
   return l;
@@ -60,9 +63,14 @@ GpuLight tileLight(uint i) { return lights[tile_indices[i]]; }
 #endif
 #endif
 
+// This invocation's tile row (may lie below the viewport in the last row of workgroups).
+uint tileRow() {
+  return gl_WorkGroupID.y * HV_LIGHT_GROUP_TILES + gl_LocalInvocationID.y / HV_LIGHT_ROWS_PER_TILE;
+}
 ivec2 pixelOf(int j) {
   return ivec2(gl_WorkGroupID.x * HV_TILE_SIZE + gl_LocalInvocationID.x,
-               gl_WorkGroupID.y * HV_TILE_HEIGHT + gl_LocalInvocationID.y * HV_LIGHT_PIXELS + j);
+               tileRow() * HV_TILE_HEIGHT +
+                   (gl_LocalInvocationID.y % HV_LIGHT_ROWS_PER_TILE) * HV_LIGHT_PIXELS + j);
 }
 
 void main() {
@@ -97,7 +105,7 @@ void main() {
     for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += evaluateLightAt(l, s[j], sp[j]);
   }
 #else
-  uint tile = gl_WorkGroupID.y * u_viewport.z + gl_WorkGroupID.x;
+  uint tile = tileRow() * u_viewport.z + gl_WorkGroupID.x;  // tileRow() < tiles y: a pixel is lit
   uvec2 range = tile_ranges[tile];
   uvec2 split = tile_types[tile];  // points, then spheres, then tubes
   uint end = min(range.x + range.y, u_counts.y);

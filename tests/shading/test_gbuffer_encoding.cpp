@@ -34,7 +34,8 @@ Err measure(int n, Quant q) {
   for (int i = 0; i < n; ++i) {
     double y = 1.0 - 2.0 * (i + 0.5) / n;
     double r = std::sqrt(1.0 - y * y);
-    one(normalize(vec3(float(std::cos(golden * i) * r), float(y), float(std::sin(golden * i) * r))));
+    one(normalize(
+        vec3(float(std::cos(golden * i) * r), float(y), float(std::sin(golden * i) * r))));
   }
   for (vec3 d : {vec3(1, 0, 0), vec3(-1, 0, 0), vec3(0, 1, 0), vec3(0, -1, 0), vec3(0, 0, 1),
                  vec3(0, 0, -1), normalize(vec3(1, 1, 1)), normalize(vec3(-1, -1, -1))}) {
@@ -50,7 +51,8 @@ TEST(GBufferEncoding, OctahedralRoundTripIsExactWithoutQuantization) {
   EXPECT_LT(e.max_deg, 0.01);
 }
 
-// Budget (docs/gbuffer.md): RG16 snorm, max error < 0.005 deg, mean < 0.002 deg (measured 0.0037 and 0.0013).
+// Budget (docs/gbuffer.md): RG16 snorm, max error < 0.005 deg, mean < 0.002 deg (measured 0.0037
+// and 0.0013).
 TEST(GBufferEncoding, Rg16SnormMeetsBudget) {
   Err e = measure(1000000, [](float x) { return quantizeSnorm16(x); });
   std::printf("oct RG16_SNORM: max %.5f deg, mean %.5f deg\n", e.max_deg, e.mean_deg);

@@ -32,10 +32,10 @@ TEST(Lights, PackLayoutAndValues) {
   l.range = 5.0f;
   hv::GpuLight gl = hv::packLight(l);
   EXPECT_EQ(gl.position_radius, glm::vec4(1, 2, 3, 0.1f));
-  EXPECT_EQ(gl.color_type, glm::vec4(8.0f, 4.0f, 2.0f, 2.0f));
+  EXPECT_EQ(gl.color_inv_range, glm::vec4(8.0f, 4.0f, 2.0f, 0.2f));
   EXPECT_EQ(gl.axis_length, glm::vec4(0, 0, 1, 2.0f));
   EXPECT_FLOAT_EQ(gl.params.x, 5.0f);
-  EXPECT_FLOAT_EQ(gl.params.y, 0.2f);
+  EXPECT_FLOAT_EQ(gl.params.y, 2.0f);  // tube
   EXPECT_FLOAT_EQ(gl.params.z, 6.0f);  // range + len/2
   EXPECT_FLOAT_EQ(g::lightCullRadius(hv::toGlsl(gl)), 6.0f);
   // Points ignore radius/length; degenerate axis and range are sanitized.
@@ -45,8 +45,8 @@ TEST(Lights, PackLayoutAndValues) {
   gl = hv::packLight(l);
   EXPECT_EQ(gl.position_radius.w, 0.0f);
   EXPECT_EQ(gl.axis_length, glm::vec4(1, 0, 0, 0));
-  EXPECT_TRUE(std::isfinite(gl.params.y));
-  EXPECT_EQ(gl.color_type.w, 0.0f);
+  EXPECT_TRUE(std::isfinite(gl.color_inv_range.w));
+  EXPECT_EQ(gl.params.y, 0.0f);  // point
   std::vector<hv::Light> lights(2);
   lights[1].type = hv::LightType::Tube;
   auto defs = hv::lightTypeDefines(lights);

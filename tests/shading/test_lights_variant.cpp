@@ -74,7 +74,7 @@ TEST(LightsVariant, RemapIgnoredForSmithV) {
 variant::GpuLight toVariant(const hv::GpuLight& p) {
   variant::GpuLight gl;
   gl.position_radius = p.position_radius;
-  gl.color_type = p.color_type;
+  gl.color_inv_range = p.color_inv_range;
   gl.axis_length = p.axis_length;
   gl.params = p.params;
   return gl;
