@@ -2,6 +2,7 @@
 #include "ui/panels.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <random>
@@ -436,15 +437,11 @@ bool RenderSettingsModel::setEnvironmentRotation(float deg) {
 }
 
 std::span<const char* const> RenderSettingsModel::debugViewNames() {
-  static const char* const names[] = {render::toString(render::DebugView::None),
-                                      render::toString(render::DebugView::BaseColor),
-                                      render::toString(render::DebugView::Metallic),
-                                      render::toString(render::DebugView::Roughness),
-                                      render::toString(render::DebugView::Cavity),
-                                      render::toString(render::DebugView::Normal),
-                                      render::toString(render::DebugView::Depth),
-                                      render::toString(render::DebugView::ShadingModel),
-                                      render::toString(render::DebugView::LightsPerTile)};
+  static const std::array<const char*, render::kDebugViewCount> names = [] {
+    std::array<const char*, render::kDebugViewCount> n{};
+    for (size_t i = 0; i < n.size(); ++i) n[i] = render::toString(render::DebugView(i));
+    return n;
+  }();
   return names;
 }
 

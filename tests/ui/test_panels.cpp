@@ -230,8 +230,10 @@ TEST(RenderingPanel, EveryEnumFieldUsesEnumNames) {
   EXPECT_FALSE(model.takeNeedsSetScene());
   EXPECT_TRUE(model.setExposure(1000.0f));
   EXPECT_EQ(scene.settings.exposure, 64.0f);
-  EXPECT_EQ(hv::ui::RenderSettingsModel::debugViewNames().size(),
-            size_t(hv::render::DebugView::LightsPerTile) + 1);
+  const auto views = hv::ui::RenderSettingsModel::debugViewNames();
+  ASSERT_EQ(views.size(), hv::render::kDebugViewCount);
+  EXPECT_STREQ(views[size_t(hv::render::DebugView::DirectSpecular)], "direct_specular");
+  EXPECT_STREQ(views.back(), "emissive");
 }
 
 }  // namespace
