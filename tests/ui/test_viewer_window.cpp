@@ -1,5 +1,5 @@
 // `halfvec view` in a real GLFW window under Xvfb: runs a few frames, saves a screenshot that
-// must show a lit scene and the ImGui panels.
+// must show a lit scene and the ImGui panels; a scripted click picks the material under it.
 #include <gtest/gtest.h>
 
 #include <signal.h>
@@ -10,6 +10,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -92,15 +94,24 @@ TEST(Viewer, WindowShowsSceneAndPanelsUnderXvfb) {
 
   const auto shot =
       std::filesystem::temp_directory_path() / numbered("hv_view_", int(getpid()), ".png");
+  const auto log =
+      std::filesystem::temp_directory_path() / numbered("hv_view_", int(getpid()), ".log");
   // (ostringstream: GCC 12's -Wrestrict misfires on long std::string + chains)
+  // --click 359,186: a scripted left click where the red sphere's center (0.6, 0.5, 0) lands in
+  // the 640x360 window, through the same path as a mouse click.
   std::ostringstream os;
   os << "DISPLAY=" << server.display() << " '" << exe << "' view '" << HV_SOURCE_DIR
-     << "/samples/scenes/default.json' --size 640x360 --frames 5 --screenshot '" << shot.string()
-     << "' > /dev/null 2>&1";
+     << "/samples/scenes/default.json' --size 640x360 --frames 5 --click 359,186 --screenshot '"
+     << shot.string() << "' > '" << log.string() << "' 2>&1";
   const std::string cmd = os.str();
   const int rc = std::system(cmd.c_str());
   ASSERT_TRUE(WIFEXITED(rc)) << cmd;
   ASSERT_EQ(WEXITSTATUS(rc), 0) << cmd;
+  std::ifstream log_in(log);
+  const std::string out((std::istreambuf_iterator<char>(log_in)), std::istreambuf_iterator<char>());
+  std::filesystem::remove(log);
+  EXPECT_NE(out.find("picked material 4 'plastic_red' on object 'red_sphere'"), std::string::npos)
+      << out;
   ASSERT_TRUE(std::filesystem::exists(shot));
   hv::ImageRGBA8 img = hv::readPng(shot.string());
   std::filesystem::remove(shot);
