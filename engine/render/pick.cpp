@@ -99,4 +99,22 @@ std::optional<PickHit> pick(const Scene& scene, int width, int height, glm::vec2
   return best;
 }
 
+size_t countLightsInView(const Scene& scene, int width, int height) {
+  if (width <= 0 || height <= 0) return 0;
+  const glm::mat4 m = glm::transpose(makeFrameBlock(scene, width, height).view_proj);  // rows
+  // Gribb & Hartmann 2001 planes (inside: dot >= 0): left, right, bottom, top, and the near plane
+  // of reversed Z (depth <= 1); the infinite projection has no far plane.
+  glm::vec4 planes[5] = {m[3] + m[0], m[3] - m[0], m[3] + m[1], m[3] - m[1], m[3] - m[2]};
+  for (glm::vec4& p : planes) p /= glm::length(glm::vec3(p));
+  size_t n = 0;
+  for (const Light& l : scene.lights) {
+    const float r = l.range + (l.type == LightType::Tube ? 0.5f * l.length : 0.0f);
+    bool inside = true;
+    for (const glm::vec4& p : planes)
+      inside = inside && glm::dot(glm::vec3(p), l.position) + p.w >= -r;
+    n += inside;
+  }
+  return n;
+}
+
 }  // namespace hv::render

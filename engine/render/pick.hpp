@@ -34,4 +34,11 @@ struct PickHit {
 // corner, as window cursor coordinates; the pixel's center is at +0.5); nullopt on background.
 std::optional<PickHit> pick(const Scene& scene, int width, int height, glm::vec2 pixel);
 
+// Lights whose bound (the range sphere, around the whole segment for a tube) meets the view
+// frustum of a width x height frame: the lights that can light something on screen (the viewer's
+// stats "lights in view"). On the CPU from the scene, so it does not depend on the culling
+// pass's buffers; the tiled culling then keeps, per tile, the subset that reaches the tile's
+// surfaces (FrameStats::tile_light_entries).
+size_t countLightsInView(const Scene& scene, int width, int height);
+
 }  // namespace hv::render

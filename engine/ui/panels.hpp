@@ -206,8 +206,9 @@ bool drawLightsPanel(LightsPanelModel& model);
 bool drawRenderingPanel(RenderSettingsModel& model);
 // With a manifest: a "Programs" section listing the last frame's programs, their keys, why each
 // define is on and their compile times (docs/variants.md).
-void drawStatsPanel(const StatsModel& stats, size_t light_count, const std::string& gpu_name,
-                    const render::Manifest* manifest = nullptr);
+// `lights_in_view`: render::countLightsInView of the frame.
+void drawStatsPanel(const StatsModel& stats, size_t light_count, size_t lights_in_view,
+                    const std::string& gpu_name, const render::Manifest* manifest = nullptr);
 // A red error box; nothing when `message` is empty.
 void drawErrorPanel(const std::string& title, const std::string& message);
 

@@ -221,8 +221,8 @@ bool drawRenderingPanel(RenderSettingsModel& model) {
   return changed;
 }
 
-void drawStatsPanel(const StatsModel& stats, size_t light_count, const std::string& gpu_name,
-                    const render::Manifest* manifest) {
+void drawStatsPanel(const StatsModel& stats, size_t light_count, size_t lights_in_view,
+                    const std::string& gpu_name, const render::Manifest* manifest) {
   placeNext(1, 1);
   if (!ImGui::Begin("Stats")) {
     ImGui::End();
@@ -230,8 +230,17 @@ void drawStatsPanel(const StatsModel& stats, size_t light_count, const std::stri
   }
   const auto& last = stats.last();
   if (!gpu_name.empty()) ImGui::TextWrapped("%s", gpu_name.c_str());
-  ImGui::Text("%dx%d  %zu lights  G-buffer %d B/px", last.width, last.height, light_count,
-              render::kGBufferBytesPerPixel);
+  const double gbuffer_mib =
+      double(last.width) * last.height * render::kGBufferBytesPerPixel / (1024.0 * 1024.0);
+  ImGui::Text("%dx%d  G-buffer %d B/px = %.2f MiB", last.width, last.height,
+              render::kGBufferBytesPerPixel, gbuffer_mib);
+  const size_t tiles = size_t((last.width + render::kTileSize - 1) / render::kTileSize) *
+                       size_t((last.height + render::kTileHeight - 1) / render::kTileHeight);
+  ImGui::Text("lights %zu, in view %zu", light_count, lights_in_view);
+  if (tiles > 0 && last.tile_light_entries > 0) {
+    ImGui::Text("tile lists: %zu entries, %.1f lights/tile", last.tile_light_entries,
+                double(last.tile_light_entries) / double(tiles));
+  }
   ImGui::Text("frame %.2f ms (%.0f fps)  GPU %.3f ms", stats.averageFrameMs(),
               stats.averageFrameMs() > 0 ? 1000.0 / stats.averageFrameMs() : 0.0,
               stats.averageGpuMs());

@@ -337,7 +337,8 @@ int cmdView(const Args& args) {
     materials.takeDirty();
     lights.takeDirty();
     const render::Manifest manifest = renderer.manifest();
-    ui::drawStatsPanel(stats, scene->lights.size(), gpu, &manifest);
+    ui::drawStatsPanel(stats, scene->lights.size(), render::countLightsInView(*scene, fb.x, fb.y),
+                       gpu, &manifest);
     ui::drawErrorPanel("Scene error (showing the last good scene)", scene_error);
     ui::drawErrorPanel("Shader error (last good programs still running; fix and press R)",
                        shader_error);

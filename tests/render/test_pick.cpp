@@ -130,3 +130,31 @@ TEST(Pick, AgreesWithTheGBufferOverAFrame) {
   ASSERT_TRUE(hit);
   EXPECT_EQ(hit->material, 3);
 }
+
+TEST(Pick, LightsInView) {
+  Scene s;
+  s.camera.position = {0.0f, 0.0f, 0.0f};
+  s.camera.target = {0.0f, 0.0f, -1.0f};
+  s.camera.fov_y_deg = 60.0f;
+  auto light = [](glm::vec3 p, float range, LightType type = LightType::Point, float len = 0.0f) {
+    Light l;
+    l.type = type;
+    l.position = p;
+    l.range = range;
+    l.length = len;
+    return l;
+  };
+  s.lights = {
+      light({0.0f, 0.0f, -5.0f}, 1.0f),     // in front: in
+      light({0.0f, 0.0f, 5.0f}, 1.0f),      // behind: out
+      light({0.0f, 0.0f, 0.5f}, 1.0f),      // behind, but its range reaches the near plane: in
+      light({0.0f, 0.0f, -1000.0f}, 1.0f),  // far ahead (no far plane): in
+      light({20.0f, 0.0f, -5.0f}, 1.0f),    // far right: out
+      light({20.0f, 0.0f, -5.0f}, 18.0f),   // far right, range reaches the frustum: in
+      light({0.0f, 10.0f, -5.0f}, 1.0f),    // above: out
+      light({0.0f, 10.0f, -5.0f}, 1.0f, LightType::Tube, 20.0f),  // vertical tube down into view
+  };
+  s.lights.back().axis = {0.0f, 1.0f, 0.0f};
+  EXPECT_EQ(render::countLightsInView(s, 160, 90), 5u);
+  EXPECT_EQ(render::countLightsInView(s, 0, 90), 0u);
+}
