@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <random>
 #include <stdexcept>
@@ -432,6 +433,35 @@ bool RenderSettingsModel::setEnvironmentRotation(float deg) {
   deg = std::fmod(deg, 360.0f);
   if (scene_->environment.rotation_deg == deg) return false;
   scene_->environment.rotation_deg = deg;
+  needs_set_scene_ = true;
+  return true;
+}
+
+bool RenderSettingsModel::setEnvironmentKind(EnvironmentKind k) {
+  if (!scene_ || scene_->environment.kind == k) return false;
+  if (k == EnvironmentKind::HdrFile && scene_->environment.path.empty()) return false;
+  scene_->environment.kind = k;
+  needs_set_scene_ = true;
+  return true;
+}
+
+bool RenderSettingsModel::setEnvironmentColor(glm::vec3 c) {
+  if (!scene_) return false;
+  for (int i = 0; i < 3; ++i) c[i] = std::isfinite(c[i]) ? std::clamp(c[i], 0.0f, 1000.0f) : 0.0f;
+  if (scene_->environment.color == c) return false;
+  scene_->environment.color = c;
+  needs_set_scene_ = needs_set_scene_ || scene_->environment.kind == EnvironmentKind::Uniform;
+  return true;
+}
+
+bool RenderSettingsModel::setEnvironmentHdr(const std::string& path) {
+  if (!scene_ || path.empty()) return false;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return false;
+  Environment& e = scene_->environment;
+  if (e.kind == EnvironmentKind::HdrFile && e.path == path) return false;
+  e.kind = EnvironmentKind::HdrFile;
+  e.path = path;
   needs_set_scene_ = true;
   return true;
 }

@@ -161,6 +161,16 @@ class RenderSettingsModel {
   bool setExposure(float v);  // clamped to [1/64, 64]
   bool setEnvironmentIntensity(float v);
   bool setEnvironmentRotation(float deg);
+  // Environment choice: none, uniform (with setEnvironmentColor), sky, or an HDR file. Each
+  // change needs a rebake (takeNeedsSetScene). setEnvironmentHdr switches to that file; it
+  // returns false, changing nothing, when the file does not exist (a file that exists but fails
+  // to load throws from Renderer::setScene: the viewer restores the previous environment).
+  bool setEnvironmentKind(EnvironmentKind k);
+  bool setEnvironmentColor(glm::vec3 c);  // clamped to [0, 1000]
+  bool setEnvironmentHdr(const std::string& path);
+  const Environment& environment() const { return scene_->environment; }
+  // HDR files offered by the panel (the viewer lists the shared assets' env folder).
+  std::vector<std::string> hdr_choices;
 
   render::DebugView view = render::DebugView::None;
   static std::span<const char* const> debugViewNames();

@@ -1,6 +1,7 @@
 // ImGui drawing of the panel models (no backend here: imgui.h only).
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 #include "imgui.h"
@@ -209,6 +210,40 @@ bool drawRenderingPanel(RenderSettingsModel& model) {
   if (ImGui::SliderFloat("exposure", &exposure, 1.0f / 64.0f, 64.0f, "%.3f",
                          ImGuiSliderFlags_Logarithmic)) {
     changed |= model.setExposure(exposure);
+  }
+  if (ImGui::CollapsingHeader("Environment", ImGuiTreeNodeFlags_DefaultOpen)) {
+    const Environment& env = model.environment();
+    int kind = int(env.kind);
+    if (nameCombo("environment", &kind, enumNames<EnvironmentKind>())) {
+      changed |= model.setEnvironmentKind(EnvironmentKind(kind));
+    }
+    if (env.kind == EnvironmentKind::Uniform) {
+      glm::vec3 c = env.color;
+      if (ImGui::ColorEdit3("radiance", &c.x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR))
+        changed |= model.setEnvironmentColor(c);
+    }
+    if (!model.hdr_choices.empty()) {
+      const std::string current = std::filesystem::path(env.path).filename().string();
+      if (ImGui::BeginCombo("HDR file", current.empty() ? "(none)" : current.c_str())) {
+        for (const std::string& f : model.hdr_choices) {
+          const std::string name = std::filesystem::path(f).filename().string();
+          if (ImGui::Selectable(name.c_str(), f == env.path)) changed |= model.setEnvironmentHdr(f);
+        }
+        ImGui::EndCombo();
+      }
+    }
+    // Intensity and rotation rebake the environment: applied on Enter or the step buttons, not
+    // on every step of a drag.
+    float intensity = env.intensity;
+    if (ImGui::InputFloat("intensity##env", &intensity, 0.1f, 1.0f, "%.2f",
+                          ImGuiInputTextFlags_EnterReturnsTrue)) {
+      changed |= model.setEnvironmentIntensity(intensity);
+    }
+    float rotation = env.rotation_deg;
+    if (ImGui::InputFloat("rotation (deg)", &rotation, 15.0f, 90.0f, "%.1f",
+                          ImGuiInputTextFlags_EnterReturnsTrue)) {
+      changed |= model.setEnvironmentRotation(rotation);
+    }
   }
   const auto views = RenderSettingsModel::debugViewNames();
   int view = int(model.view);

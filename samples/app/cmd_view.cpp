@@ -4,6 +4,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "app/commands.hpp"
 #include "app/scene_reload.hpp"
@@ -20,6 +22,7 @@
 #include "platform/context.hpp"
 #include "render/pick.hpp"
 #include "render/renderer.hpp"
+#include "scene/scene_loader.hpp"
 #include "ui/imgui_layer.hpp"
 #include "ui/panels.hpp"
 
@@ -223,6 +226,23 @@ std::string pickMaterial(GLFWwindow* win, const Scene& scene, glm::ivec2 fb, glm
          o.name + "'";
 }
 
+// The HDR environments the rendering panel offers: *.hdr in ${HV_ASSETS_DIR}/env, sorted.
+std::vector<std::string> hdrChoices() {
+  std::vector<std::string> out;
+  try {
+    const std::filesystem::path dir =
+        std::filesystem::path(expandEnvVars("${HV_ASSETS_DIR}")) / "env";
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
+      if (e.path().extension() == ".hdr")
+        out.push_back(std::filesystem::absolute(e.path()).string());
+    }
+  } catch (const std::exception&) {  // no assets: the panel offers none
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 // A key's press edge.
 struct KeyEdge {
   int key;
@@ -261,6 +281,8 @@ int cmdView(const Args& args) {
   ui::LightsPanelModel lights(*scene);
   ui::RenderSettingsModel settings(*scene);
   ui::StatsModel stats;
+  settings.hdr_choices = hdrChoices();
+  Environment good_environment = scene->environment;  // the last one that baked
   std::string panel_status;  // the material panel's status line: picks, saves
   std::string scene_error, shader_error;
   bool shaders_ok = true;
@@ -293,6 +315,7 @@ int cmdView(const Args& args) {
         materials.attach(*scene);
         lights.attach(*scene);
         settings.attach(*scene);
+        good_environment = scene->environment;
       }
       scene_error = reloader.error();
     }
@@ -330,8 +353,15 @@ int cmdView(const Args& args) {
     if (settings.takeNeedsSetScene()) {
       try {
         renderer.setScene(*scene);
+        good_environment = scene->environment;
       } catch (const std::exception& e) {
+        // A bad HDR: back to the environment that worked, the error in the panel.
         scene_error = e.what();
+        scene->environment = good_environment;
+        try {
+          renderer.setScene(*scene);
+        } catch (const std::exception&) {
+        }
       }
     }
     materials.takeDirty();
