@@ -99,6 +99,7 @@ class LightsPanelModel {
   int selected() const { return selected_; }
   void select(int index);
   const Light* current() const;
+  const std::vector<Light>& lights() const { return scene_->lights; }
 
   int add(LightType type);  // at the camera target; returns its index (selected)
   bool remove(int index);

@@ -107,6 +107,52 @@ bool drawMaterialPanel(MaterialPanelModel& model, const std::string& scene_path,
   return changed;
 }
 
+namespace {
+// The lights as a scrolling table (clipped: only the visible rows are drawn, so thousands of
+// lights cost nothing); a click selects the light for editing below.
+void drawLightTable(LightsPanelModel& model) {
+  const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
+                                ImGuiTableFlags_ScrollX | ImGuiTableFlags_ScrollY |
+                                ImGuiTableFlags_SizingFixedFit;
+  const float height = ImGui::GetTextLineHeightWithSpacing() * 7.5f;
+  if (!ImGui::BeginTable("lights", 7, flags, ImVec2(0.0f, height))) return;
+  ImGui::TableSetupScrollFreeze(0, 1);
+  for (const char* h : {"#", "type", "color", "intensity", "radius", "length", "position"}) {
+    ImGui::TableSetupColumn(h);
+  }
+  ImGui::TableHeadersRow();
+  const auto& lights = model.lights();
+  ImGuiListClipper clipper;
+  clipper.Begin(int(lights.size()));
+  while (clipper.Step()) {
+    for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
+      const Light& l = lights[size_t(i)];
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      const std::string label = std::to_string(i);
+      if (ImGui::Selectable(label.c_str(), i == model.selected(),
+                            ImGuiSelectableFlags_SpanAllColumns)) {
+        model.select(i);
+      }
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(toString(l.type).data());
+      ImGui::TableNextColumn();
+      ImGui::ColorButton("##c", ImVec4(l.color.x, l.color.y, l.color.z, 1.0f),
+                         ImGuiColorEditFlags_NoTooltip);
+      ImGui::TableNextColumn();
+      ImGui::Text("%.2f", l.intensity);
+      ImGui::TableNextColumn();
+      ImGui::Text("%.3f", l.radius);
+      ImGui::TableNextColumn();
+      ImGui::Text("%.2f", l.length);
+      ImGui::TableNextColumn();
+      ImGui::Text("%.2f %.2f %.2f", l.position.x, l.position.y, l.position.z);
+    }
+  }
+  ImGui::EndTable();
+}
+}  // namespace
+
 bool drawLightsPanel(LightsPanelModel& model) {
   bool changed = false;
   placeNext(0, 1);
@@ -124,8 +170,7 @@ bool drawLightsPanel(LightsPanelModel& model) {
     }
   }
   if (model.count() > 0) {
-    int sel = model.selected();
-    if (ImGui::SliderInt("light", &sel, 0, int(model.count()) - 1)) model.select(sel);
+    drawLightTable(model);
     if (const Light* cur = model.current()) {
       Light l = *cur;
       int type = int(l.type);
