@@ -18,6 +18,11 @@
 
 #include "image/image.hpp"
 
+#if HV_HAVE_XLIB
+#include <X11/Xlib.h>
+#include <X11/keysym.h>
+#endif
+
 namespace {
 
 // prefix + n + suffix (appending: GCC 12's -Wrestrict misfires on "literal" + std::string&&).
@@ -148,6 +153,82 @@ TEST(Viewer, WindowShowsSceneAndPanelsUnderXvfb) {
   }
   EXPECT_GT(title_px, 1000) << "no ImGui title bar found";
 }
+
+#if HV_HAVE_XLIB
+// The viewer's top-level window (no window manager under Xvfb: a child of the root), or 0.
+Window findViewerWindow(Display* d) {
+  Window root = DefaultRootWindow(d), parent = 0, *children = nullptr;
+  unsigned int n = 0;
+  Window found = 0;
+  if (!XQueryTree(d, root, &root, &parent, &children, &n)) return 0;
+  for (unsigned int i = 0; i < n && !found; ++i) {
+    char* name = nullptr;
+    if (XFetchName(d, children[i], &name) && name) {
+      if (std::string(name).rfind("halfvec view", 0) == 0) found = children[i];
+      XFree(name);
+    }
+  }
+  if (children) XFree(children);
+  return found;
+}
+
+// Esc pressed (a key event sent by the X server to the window, as a keyboard would) quits the
+// viewer with status 0; --frames is only a backstop so a failure cannot hang the suite.
+TEST(Viewer, ExitsCleanlyOnEsc) {
+  const std::string xvfb = findXvfb();
+  if (xvfb.empty()) GTEST_SKIP() << "Xvfb not installed (apt-get install xvfb)";
+  const std::string exe = std::string(HV_BINARY_DIR) + "/halfvec";
+  if (access(exe.c_str(), X_OK) != 0) GTEST_SKIP() << exe << " not built";
+  Xvfb server(xvfb);
+  ASSERT_FALSE(server.display().empty()) << "could not start Xvfb";
+  const std::string scene = std::string(HV_SOURCE_DIR) + "/samples/scenes/default.json";
+  const pid_t pid = fork();
+  if (pid == 0) {
+    setenv("DISPLAY", server.display().c_str(), 1);
+    std::freopen("/dev/null", "w", stdout);
+    std::freopen("/dev/null", "w", stderr);
+    execl(exe.c_str(), exe.c_str(), "view", scene.c_str(), "--size", "320x180", "--frames",
+          "100000", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  ASSERT_GT(pid, 0);
+  Display* d = XOpenDisplay(server.display().c_str());
+  ASSERT_NE(d, nullptr);
+  Window win = 0;
+  for (int i = 0; i < 600 && !win; ++i) {  // up to 60 s for the window
+    win = findViewerWindow(d);
+    if (!win) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  int status = -1;
+  bool exited = false;
+  if (win) {
+    XKeyEvent ev{};
+    ev.type = KeyPress;
+    ev.display = d;
+    ev.window = win;
+    ev.root = DefaultRootWindow(d);
+    ev.time = CurrentTime;
+    ev.same_screen = True;
+    ev.keycode = XKeysymToKeycode(d, XK_Escape);
+    // Held down (no release): the viewer reads the key state once per frame.
+    XSendEvent(d, win, True, KeyPressMask, reinterpret_cast<XEvent*>(&ev));
+    XFlush(d);
+    for (int i = 0; i < 600 && !exited; ++i) {  // up to 60 s to quit
+      exited = waitpid(pid, &status, WNOHANG) == pid;
+      if (!exited) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+  }
+  XCloseDisplay(d);
+  if (!exited) {
+    kill(pid, SIGKILL);
+    waitpid(pid, &status, 0);
+  }
+  ASSERT_NE(win, Window(0)) << "the viewer's window never appeared";
+  ASSERT_TRUE(exited) << "Esc did not quit the viewer";
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+}
+#endif
 
 TEST(Viewer, BadSceneFileFailsCleanly) {
   const std::string exe = std::string(HV_BINARY_DIR) + "/halfvec";
