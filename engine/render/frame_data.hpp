@@ -14,6 +14,12 @@ constexpr int kTileHeight = 4;  // HV_TILE_HEIGHT in frame.glsl (culling tile he
 // HV_LIGHT_GROUP_TILES in frame.glsl: tiles per workgroup (a column) of the light pass.
 constexpr int kLightGroupTiles = 8;
 
+// FrameBlock::counts.w bits (HV_FRAME_* in frame.glsl), set for the per-term debug views.
+enum FrameFlag : uint32_t {
+  kFrameNoBackground = 1,  // the ambient pass writes 0 on background pixels
+  kFrameNoEmissive = 2,    // the G-buffer pass leaves the HDR target at 0 (no emissive)
+};
+
 struct alignas(16) FrameBlock {
   glm::mat4 view;
   glm::mat4 proj;
@@ -21,7 +27,7 @@ struct alignas(16) FrameBlock {
   glm::mat4 inv_view_proj;
   glm::vec4 camera_pos;
   glm::uvec4 viewport;    // width, height, tiles x, tiles y
-  glm::uvec4 counts;      // lights, tile-index capacity, debug view, unused
+  glm::uvec4 counts;      // lights, tile-index capacity, debug view, FrameFlag bits
   glm::vec4 output;       // exposure, dither, environment intensity, environment rotation (rad)
   glm::vec4 near_params;  // near plane
 };

@@ -9,7 +9,7 @@
 
 namespace hv::render {
 
-void Renderer::gbufferPass(const FrameBlock&) {
+void Renderer::gbufferPass(const FrameBlock& frame) {
   gl::ScopedPass pass(timer_, "gbuffer");
   Targets& t = *targets_;
   PipelineState st;
@@ -27,6 +27,10 @@ void Renderer::gbufferPass(const FrameBlock&) {
   for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(t.gbuffer.id(), GL_COLOR, i, zero);
   const float far_depth = 0.0f;  // reversed Z clears to 0 (infinity)
   glClearNamedFramebufferfv(t.gbuffer.id(), GL_DEPTH, 0, &far_depth);
+  // Per-term debug views: the HDR target (attachment 3) keeps its clear value, 0, instead of the
+  // emissive (after the clear: the color mask also masks clears).
+  const bool no_emissive = (frame.counts.w & kFrameNoEmissive) != 0;
+  if (no_emissive) glColorMaski(3, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
 
   glBindVertexArray(gpu_->vertexArray());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, gpu_->materialBuffer());
@@ -72,6 +76,7 @@ void Renderer::gbufferPass(const FrameBlock&) {
   glUseProgram(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glFrontFace(GL_CCW);
+  if (no_emissive) glColorMaski(3, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
 }  // namespace hv::render

@@ -14,10 +14,22 @@
 namespace hv::render {
 
 namespace {
-constexpr const char* kDebugViewNames[] = {"none",      "basecolor",     "metallic",
-                                           "roughness", "cavity",        "normal",
-                                           "depth",     "shading_model", "lights_per_tile"};
-}
+constexpr const char* kDebugViewNames[] = {"none",
+                                           "basecolor",
+                                           "metallic",
+                                           "roughness",
+                                           "cavity",
+                                           "normal",
+                                           "depth",
+                                           "shading_model",
+                                           "lights_per_tile",
+                                           "direct_diffuse",
+                                           "direct_specular",
+                                           "ambient_diffuse",
+                                           "ambient_specular",
+                                           "emissive"};
+static_assert(std::size(kDebugViewNames) == kDebugViewCount, "one name per DebugView");
+}  // namespace
 
 std::optional<DebugView> debugViewFromString(const std::string& s) {
   for (size_t i = 0; i < std::size(kDebugViewNames); ++i) {
@@ -28,6 +40,29 @@ std::optional<DebugView> debugViewFromString(const std::string& s) {
 
 const char* toString(DebugView v) {
   return kDebugViewNames[static_cast<size_t>(v)];
+}
+
+std::optional<TermView> termView(DebugView v) {
+  switch (v) {
+    case DebugView::DirectDiffuse:
+      return TermView{1, 0, false};
+    case DebugView::DirectSpecular:
+      return TermView{2, 0, false};
+    case DebugView::AmbientDiffuse:
+      return TermView{0, 1, false};
+    case DebugView::AmbientSpecular:
+      return TermView{0, 2, false};
+    case DebugView::Emissive:
+      return TermView{0, 0, true};
+    default:
+      return std::nullopt;
+  }
+}
+
+void Renderer::applyTermView(VariantKey& key) const {
+  if (!term_view_) return;
+  key.settings.direct_terms = term_view_->direct_terms;
+  key.settings.ambient_terms = term_view_->ambient_terms;
 }
 
 Renderer::Renderer() : targets_(std::make_unique<Targets>()) {
@@ -78,6 +113,7 @@ gl::DefineSet toDefineSet(const std::vector<KeyDefine>& defs,
 
 void Renderer::refreshVariants() {
   key_ = deriveVariantKey(*scene_);
+  applyTermView(key_);
   key_settings_ = scene_->settings;
   gbuffer_descs_.clear();
   for (size_t v = 0; v < key_.material_variants.size(); ++v) {
@@ -148,12 +184,20 @@ FrameStats Renderer::render(int width, int height, DebugView view,
   if (!scene_) throw gl::GlError("Renderer::render called before setScene");
   if (width <= 0 || height <= 0) return {};
   ensureTargets(width, height);
-  if (!(scene_->settings == key_settings_)) refreshVariants();  // edited in place (viewer)
+  const std::optional<TermView> terms = termView(view);
+  const bool terms_changed = terms != term_view_;
+  term_view_ = terms;
+  // Settings edited in place (viewer), or another term view: other term masks.
+  if (!(scene_->settings == key_settings_) || terms_changed) refreshVariants();
   programs_.beginFrame();
   FrameBlock frame = makeFrameBlock(*scene_, width, height);
   frame.counts.x = static_cast<uint32_t>(gpu_->lightCount());
   frame.counts.y = static_cast<uint32_t>(tile_capacity_);
   frame.counts.z = static_cast<uint32_t>(view);
+  // Term views: no background (ambient.comp), no emissive (masked out in gbufferPass).
+  frame.counts.w = !terms            ? 0u
+                   : terms->emissive ? kFrameNoBackground
+                                     : kFrameNoBackground | kFrameNoEmissive;
   glNamedBufferSubData(frame_ubo_.id(), 0, sizeof frame, &frame);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, frame_ubo_.id());
 

@@ -31,10 +31,31 @@ enum class DebugView : uint32_t {
   Normal,
   Depth,
   ShadingModel,
-  LightsPerTile
+  LightsPerTile,
+  // Per-term outputs, tone-mapped like the normal image (see TermView).
+  DirectDiffuse,
+  DirectSpecular,
+  AmbientDiffuse,
+  AmbientSpecular,
+  Emissive
 };
+constexpr size_t kDebugViewCount = size_t(DebugView::Emissive) + 1;
 std::optional<DebugView> debugViewFromString(const std::string& s);
 const char* toString(DebugView v);
+
+// What a per-term debug view renders: the frame with the term masks of RenderSettings
+// (HV_DIRECT_TERMS / HV_AMBIENT_TERMS; bit 1 diffuse, bit 2 specular) set to that one term, the
+// background left black and the G-buffer's emissive left out, so the HDR target holds exactly
+// the term as defined for the engine's AOVs (samples/app/engine_aov.hpp). The Emissive view is
+// the other way round: no light term, only the emissive. Over the pixels of lit surfaces, the
+// four light terms plus Emissive sum to the normal frame (up to half-float rounding).
+struct TermView {
+  uint8_t direct_terms = 3, ambient_terms = 3;
+  bool emissive = true;
+  bool operator==(const TermView&) const = default;
+};
+// The masks of a per-term view; nullopt for the other views.
+std::optional<TermView> termView(DebugView v);
 
 struct FrameStats {
   std::vector<std::pair<std::string, double>> passes;  // GPU ms per pass, in order
@@ -125,6 +146,10 @@ class Renderer {
   void ambientPass();
   void tonemapPass(DebugView view, std::optional<GLuint> present_fbo, int width, int height);
   void refreshVariants();  // key, program descriptions, draw order
+  // Overrides the key's term masks with those of the per-term view being rendered (none: the
+  // scene's own). refreshVariants applies it; render sets it from its view.
+  void applyTermView(VariantKey& key) const;
+  std::optional<TermView> term_view_;
 
   VariantKey key_;
   RenderSettings key_settings_;                 // the scene settings key_ was derived from

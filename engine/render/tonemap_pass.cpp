@@ -1,5 +1,6 @@
 // Tone-map pass. In: the HDR target. Out: RGBA8 (internal target or the window's framebuffer).
-// With a debug view selected it shows that G-buffer channel or the lights per tile instead.
+// With a G-buffer or culling debug view selected it shows that channel or the lights per tile
+// instead; the per-term views (termView) are tone-mapped like the normal image.
 #include "render/pipeline_state.hpp"
 #include "render/renderer.hpp"
 #include "render/targets.hpp"
@@ -13,7 +14,7 @@ void Renderer::tonemapPass(DebugView view, std::optional<GLuint> present_fbo, in
   Targets& t = *targets_;
   const RenderSettings& s = scene_->settings;
   GLuint prog;
-  if (view == DebugView::None) {
+  if (view == DebugView::None || termView(view)) {
     prog = programs_.get({"tonemap",
                           {{GL_VERTEX_SHADER, "passes/fullscreen.vert"},
                            {GL_FRAGMENT_SHADER, "passes/tonemap.frag"}},

@@ -298,7 +298,7 @@ std::vector<KeyDefine> lightDefines(const VariantKey& k, const Scene& scene) {
                   in.tube_normalization != s.tube_normalization, "no tube lights")},
       {"HV_DIRECT_TERMS", s.direct_terms == 3 ? "diffuse and specular (all terms)"
                                               : "term mask " + std::to_string(int(s.direct_terms)) +
-                                                    " (render --aov)"},
+                                                    " (render --aov, per-term debug view)"},
   };
   for (auto& [name, value] : brdfDefines(s)) out.push_back({name, value, why[name]});
   const struct {
@@ -351,9 +351,9 @@ std::vector<KeyDefine> ambientDefines(const VariantKey& k, const Scene& scene) {
                  settingWhy("specular_occlusion", s.specular_occlusion ? "true" : "false",
                             in.specular_occlusion != s.specular_occlusion, no_ibl)});
   out.push_back({"HV_AMBIENT_TERMS", std::to_string(int(s.ambient_terms)),
-                 s.ambient_terms == 3
-                     ? "diffuse and specular (all terms)"
-                     : "term mask " + std::to_string(int(s.ambient_terms)) + " (render --aov)"});
+                 s.ambient_terms == 3 ? "diffuse and specular (all terms)"
+                                      : "term mask " + std::to_string(int(s.ambient_terms)) +
+                                            " (render --aov, per-term debug view)"});
   return out;
 }
 

@@ -2,7 +2,9 @@
 #include "ui/panels.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <random>
 #include <stdexcept>
@@ -435,16 +437,41 @@ bool RenderSettingsModel::setEnvironmentRotation(float deg) {
   return true;
 }
 
+bool RenderSettingsModel::setEnvironmentKind(EnvironmentKind k) {
+  if (!scene_ || scene_->environment.kind == k) return false;
+  if (k == EnvironmentKind::HdrFile && scene_->environment.path.empty()) return false;
+  scene_->environment.kind = k;
+  needs_set_scene_ = true;
+  return true;
+}
+
+bool RenderSettingsModel::setEnvironmentColor(glm::vec3 c) {
+  if (!scene_) return false;
+  for (int i = 0; i < 3; ++i) c[i] = std::isfinite(c[i]) ? std::clamp(c[i], 0.0f, 1000.0f) : 0.0f;
+  if (scene_->environment.color == c) return false;
+  scene_->environment.color = c;
+  needs_set_scene_ = needs_set_scene_ || scene_->environment.kind == EnvironmentKind::Uniform;
+  return true;
+}
+
+bool RenderSettingsModel::setEnvironmentHdr(const std::string& path) {
+  if (!scene_ || path.empty()) return false;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return false;
+  Environment& e = scene_->environment;
+  if (e.kind == EnvironmentKind::HdrFile && e.path == path) return false;
+  e.kind = EnvironmentKind::HdrFile;
+  e.path = path;
+  needs_set_scene_ = true;
+  return true;
+}
+
 std::span<const char* const> RenderSettingsModel::debugViewNames() {
-  static const char* const names[] = {render::toString(render::DebugView::None),
-                                      render::toString(render::DebugView::BaseColor),
-                                      render::toString(render::DebugView::Metallic),
-                                      render::toString(render::DebugView::Roughness),
-                                      render::toString(render::DebugView::Cavity),
-                                      render::toString(render::DebugView::Normal),
-                                      render::toString(render::DebugView::Depth),
-                                      render::toString(render::DebugView::ShadingModel),
-                                      render::toString(render::DebugView::LightsPerTile)};
+  static const std::array<const char*, render::kDebugViewCount> names = [] {
+    std::array<const char*, render::kDebugViewCount> n{};
+    for (size_t i = 0; i < n.size(); ++i) n[i] = render::toString(render::DebugView(i));
+    return n;
+  }();
   return names;
 }
 

@@ -99,6 +99,7 @@ class LightsPanelModel {
   int selected() const { return selected_; }
   void select(int index);
   const Light* current() const;
+  const std::vector<Light>& lights() const { return scene_->lights; }
 
   int add(LightType type);  // at the camera target; returns its index (selected)
   bool remove(int index);
@@ -161,6 +162,16 @@ class RenderSettingsModel {
   bool setExposure(float v);  // clamped to [1/64, 64]
   bool setEnvironmentIntensity(float v);
   bool setEnvironmentRotation(float deg);
+  // Environment choice: none, uniform (with setEnvironmentColor), sky, or an HDR file. Each
+  // change needs a rebake (takeNeedsSetScene). setEnvironmentHdr switches to that file; it
+  // returns false, changing nothing, when the file does not exist (a file that exists but fails
+  // to load throws from Renderer::setScene: the viewer restores the previous environment).
+  bool setEnvironmentKind(EnvironmentKind k);
+  bool setEnvironmentColor(glm::vec3 c);  // clamped to [0, 1000]
+  bool setEnvironmentHdr(const std::string& path);
+  const Environment& environment() const { return scene_->environment; }
+  // HDR files offered by the panel (the viewer lists the shared assets' env folder).
+  std::vector<std::string> hdr_choices;
 
   render::DebugView view = render::DebugView::None;
   static std::span<const char* const> debugViewNames();
@@ -206,8 +217,9 @@ bool drawLightsPanel(LightsPanelModel& model);
 bool drawRenderingPanel(RenderSettingsModel& model);
 // With a manifest: a "Programs" section listing the last frame's programs, their keys, why each
 // define is on and their compile times (docs/variants.md).
-void drawStatsPanel(const StatsModel& stats, size_t light_count, const std::string& gpu_name,
-                    const render::Manifest* manifest = nullptr);
+// `lights_in_view`: render::countLightsInView of the frame.
+void drawStatsPanel(const StatsModel& stats, size_t light_count, size_t lights_in_view,
+                    const std::string& gpu_name, const render::Manifest* manifest = nullptr);
 // A red error box; nothing when `message` is empty.
 void drawErrorPanel(const std::string& title, const std::string& message);
 

@@ -1,6 +1,7 @@
 // ImGui drawing of the panel models (no backend here: imgui.h only).
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 #include "imgui.h"
@@ -106,6 +107,52 @@ bool drawMaterialPanel(MaterialPanelModel& model, const std::string& scene_path,
   return changed;
 }
 
+namespace {
+// The lights as a scrolling table (clipped: only the visible rows are drawn, so thousands of
+// lights cost nothing); a click selects the light for editing below.
+void drawLightTable(LightsPanelModel& model) {
+  const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
+                                ImGuiTableFlags_ScrollX | ImGuiTableFlags_ScrollY |
+                                ImGuiTableFlags_SizingFixedFit;
+  const float height = ImGui::GetTextLineHeightWithSpacing() * 7.5f;
+  if (!ImGui::BeginTable("lights", 7, flags, ImVec2(0.0f, height))) return;
+  ImGui::TableSetupScrollFreeze(0, 1);
+  for (const char* h : {"#", "type", "color", "intensity", "radius", "length", "position"}) {
+    ImGui::TableSetupColumn(h);
+  }
+  ImGui::TableHeadersRow();
+  const auto& lights = model.lights();
+  ImGuiListClipper clipper;
+  clipper.Begin(int(lights.size()));
+  while (clipper.Step()) {
+    for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
+      const Light& l = lights[size_t(i)];
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      const std::string label = std::to_string(i);
+      if (ImGui::Selectable(label.c_str(), i == model.selected(),
+                            ImGuiSelectableFlags_SpanAllColumns)) {
+        model.select(i);
+      }
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(toString(l.type).data());
+      ImGui::TableNextColumn();
+      ImGui::ColorButton("##c", ImVec4(l.color.x, l.color.y, l.color.z, 1.0f),
+                         ImGuiColorEditFlags_NoTooltip);
+      ImGui::TableNextColumn();
+      ImGui::Text("%.2f", l.intensity);
+      ImGui::TableNextColumn();
+      ImGui::Text("%.3f", l.radius);
+      ImGui::TableNextColumn();
+      ImGui::Text("%.2f", l.length);
+      ImGui::TableNextColumn();
+      ImGui::Text("%.2f %.2f %.2f", l.position.x, l.position.y, l.position.z);
+    }
+  }
+  ImGui::EndTable();
+}
+}  // namespace
+
 bool drawLightsPanel(LightsPanelModel& model) {
   bool changed = false;
   placeNext(0, 1);
@@ -123,8 +170,7 @@ bool drawLightsPanel(LightsPanelModel& model) {
     }
   }
   if (model.count() > 0) {
-    int sel = model.selected();
-    if (ImGui::SliderInt("light", &sel, 0, int(model.count()) - 1)) model.select(sel);
+    drawLightTable(model);
     if (const Light* cur = model.current()) {
       Light l = *cur;
       int type = int(l.type);
@@ -210,6 +256,40 @@ bool drawRenderingPanel(RenderSettingsModel& model) {
                          ImGuiSliderFlags_Logarithmic)) {
     changed |= model.setExposure(exposure);
   }
+  if (ImGui::CollapsingHeader("Environment", ImGuiTreeNodeFlags_DefaultOpen)) {
+    const Environment& env = model.environment();
+    int kind = int(env.kind);
+    if (nameCombo("environment", &kind, enumNames<EnvironmentKind>())) {
+      changed |= model.setEnvironmentKind(EnvironmentKind(kind));
+    }
+    if (env.kind == EnvironmentKind::Uniform) {
+      glm::vec3 c = env.color;
+      if (ImGui::ColorEdit3("radiance", &c.x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR))
+        changed |= model.setEnvironmentColor(c);
+    }
+    if (!model.hdr_choices.empty()) {
+      const std::string current = std::filesystem::path(env.path).filename().string();
+      if (ImGui::BeginCombo("HDR file", current.empty() ? "(none)" : current.c_str())) {
+        for (const std::string& f : model.hdr_choices) {
+          const std::string name = std::filesystem::path(f).filename().string();
+          if (ImGui::Selectable(name.c_str(), f == env.path)) changed |= model.setEnvironmentHdr(f);
+        }
+        ImGui::EndCombo();
+      }
+    }
+    // Intensity and rotation rebake the environment: applied on Enter or the step buttons, not
+    // on every step of a drag.
+    float intensity = env.intensity;
+    if (ImGui::InputFloat("intensity##env", &intensity, 0.1f, 1.0f, "%.2f",
+                          ImGuiInputTextFlags_EnterReturnsTrue)) {
+      changed |= model.setEnvironmentIntensity(intensity);
+    }
+    float rotation = env.rotation_deg;
+    if (ImGui::InputFloat("rotation (deg)", &rotation, 15.0f, 90.0f, "%.1f",
+                          ImGuiInputTextFlags_EnterReturnsTrue)) {
+      changed |= model.setEnvironmentRotation(rotation);
+    }
+  }
   const auto views = RenderSettingsModel::debugViewNames();
   int view = int(model.view);
   if (ImGui::Combo("debug view", &view, views.data(), int(views.size()))) {
@@ -221,8 +301,8 @@ bool drawRenderingPanel(RenderSettingsModel& model) {
   return changed;
 }
 
-void drawStatsPanel(const StatsModel& stats, size_t light_count, const std::string& gpu_name,
-                    const render::Manifest* manifest) {
+void drawStatsPanel(const StatsModel& stats, size_t light_count, size_t lights_in_view,
+                    const std::string& gpu_name, const render::Manifest* manifest) {
   placeNext(1, 1);
   if (!ImGui::Begin("Stats")) {
     ImGui::End();
@@ -230,8 +310,17 @@ void drawStatsPanel(const StatsModel& stats, size_t light_count, const std::stri
   }
   const auto& last = stats.last();
   if (!gpu_name.empty()) ImGui::TextWrapped("%s", gpu_name.c_str());
-  ImGui::Text("%dx%d  %zu lights  G-buffer %d B/px", last.width, last.height, light_count,
-              render::kGBufferBytesPerPixel);
+  const double gbuffer_mib =
+      double(last.width) * last.height * render::kGBufferBytesPerPixel / (1024.0 * 1024.0);
+  ImGui::Text("%dx%d  G-buffer %d B/px = %.2f MiB", last.width, last.height,
+              render::kGBufferBytesPerPixel, gbuffer_mib);
+  const size_t tiles = size_t((last.width + render::kTileSize - 1) / render::kTileSize) *
+                       size_t((last.height + render::kTileHeight - 1) / render::kTileHeight);
+  ImGui::Text("lights %zu, in view %zu", light_count, lights_in_view);
+  if (tiles > 0 && last.tile_light_entries > 0) {
+    ImGui::Text("tile lists: %zu entries, %.1f lights/tile", last.tile_light_entries,
+                double(last.tile_light_entries) / double(tiles));
+  }
   ImGui::Text("frame %.2f ms (%.0f fps)  GPU %.3f ms", stats.averageFrameMs(),
               stats.averageFrameMs() > 0 ? 1000.0 / stats.averageFrameMs() : 0.0,
               stats.averageGpuMs());

@@ -29,7 +29,9 @@ Options:
   --set PATH=VALUE      override a scene field before validation, e.g. --set settings.exposure=2
                         or --set lights.0.intensity=50 (repeatable; VALUE is JSON)
   --view NAME           debug view: basecolor|metallic|roughness|cavity|normal|depth|
-                        shading_model|lights_per_tile
+                        shading_model|lights_per_tile (G-buffer and culling, shown as stored),
+                        or one term, tone-mapped as the normal image (--hdr writes the term):
+                        direct_diffuse|direct_specular|ambient_diffuse|ambient_specular|emissive
   --frames N            render N frames and report the median pass times (default 1)
   --uber                compile every feature in, chosen at run time (= --set settings.uber=true);
                         default: programs specialized to the scene (docs/variants.md)

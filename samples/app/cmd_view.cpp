@@ -4,19 +4,25 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
+#include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "app/commands.hpp"
 #include "app/scene_reload.hpp"
 #include "gl/shader_source.hpp"
 #include "platform/context.hpp"
+#include "render/pick.hpp"
 #include "render/renderer.hpp"
+#include "scene/scene_loader.hpp"
 #include "ui/imgui_layer.hpp"
 #include "ui/panels.hpp"
 
@@ -31,17 +37,21 @@ Options:
   --size WxH            window size (default 1280x720)
   --frames N            quit after N frames (for tests and timing)
   --screenshot FILE.png after the last frame, save the window (scene + panels)
+  --click X,Y           scripted left click at window pixel X,Y on the first frame (as a
+                        mouse click: picks the material there; for tests and screenshots)
   -h, --help            this text
 
 Controls: left drag orbit, right/middle drag pan, wheel zoom (around the camera target),
-WASD fly (Q/E down/up), F12 save out/view_<n>.png + .pfm, R reload shaders (an error keeps
-the last good programs running and shows in a panel), Esc quit.
+left click (no drag) on an object: select its material in the Material panel,
+WASD fly (Q/E down/up; Shift faster), F12 save out/view_<n>.png + .pfm, R reload shaders
+(an error keeps the last good programs running and shows in a panel), Esc quit.
 The scene file is reloaded when it changes on disk.
 )";
 
 struct ViewArgs {
   std::string scene, screenshot;
   int width = 1280, height = 720, frames = 0;
+  std::optional<glm::dvec2> click;  // scripted click, window coordinates
 };
 
 ViewArgs parse(const Args& args) {
@@ -59,6 +69,15 @@ ViewArgs parse(const Args& args) {
       if (r.frames < 1) throw UsageError{"--frames expects a positive count"};
     } else if (a == "--screenshot") {
       r.screenshot = value();
+    } else if (a == "--click") {
+      const std::string v = value();
+      double x = 0, y = 0;
+      char comma = 0;
+      std::istringstream in(v);
+      if (!(in >> x >> comma >> y) || comma != ',' || x < 0 || y < 0) {
+        throw UsageError{"--click expects X,Y (window pixels), got '" + v + "'"};
+      }
+      r.click = glm::dvec2(x, y);
     } else if (!a.empty() && a[0] == '-') {
       throw UsageError{"unknown option '" + a + "'"};
     } else if (r.scene.empty()) {
@@ -165,6 +184,65 @@ struct CameraController {
   }
 };
 
+// A left click that is not a drag: pressed outside the panels and released within a few pixels
+// of where it was pressed (a longer move is an orbit). Window coordinates.
+struct ClickDetector {
+  static constexpr double kSlop = 3.0;  // pixels of movement still counted as a click
+  bool down = false, armed = false;
+  glm::dvec2 start{0.0};
+
+  std::optional<glm::dvec2> update(GLFWwindow* win, bool ui_mouse) {
+    glm::dvec2 p;
+    glfwGetCursorPos(win, &p.x, &p.y);
+    const bool now = glfwGetMouseButton(win, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    std::optional<glm::dvec2> click;
+    if (now && !down) {
+      armed = !ui_mouse;
+      start = p;
+    } else if (now && glm::length(p - start) > kSlop) {
+      armed = false;
+    } else if (!now && down && armed) {
+      click = p;
+    }
+    down = now;
+    return click;
+  }
+};
+
+// Selects the material of the object under window point `at` in the material panel; returns a
+// status line for the panel. The pick is a CPU ray cast (render/pick.hpp).
+std::string pickMaterial(GLFWwindow* win, const Scene& scene, glm::ivec2 fb, glm::dvec2 at,
+                         ui::MaterialPanelModel& materials) {
+  int ww = 1, wh = 1;
+  glfwGetWindowSize(win, &ww, &wh);
+  // Window coordinates -> framebuffer pixels (they differ on high-DPI displays).
+  const glm::vec2 px(float(at.x * fb.x / std::max(ww, 1)), float(at.y * fb.y / std::max(wh, 1)));
+  const auto hit = render::pick(scene, fb.x, fb.y, px);
+  if (!hit) return "picked: background (no material)";
+  materials.select(hit->material);
+  const Material& m = scene.materials.at(size_t(hit->material));
+  const Object& o = scene.objects.at(size_t(hit->object));
+  return "picked material " + std::to_string(hit->material) + " '" + m.name + "' on object '" +
+         o.name + "'";
+}
+
+// The HDR environments the rendering panel offers: *.hdr in ${HV_ASSETS_DIR}/env, sorted.
+std::vector<std::string> hdrChoices() {
+  std::vector<std::string> out;
+  try {
+    const std::filesystem::path dir =
+        std::filesystem::path(expandEnvVars("${HV_ASSETS_DIR}")) / "env";
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
+      if (e.path().extension() == ".hdr")
+        out.push_back(std::filesystem::absolute(e.path()).string());
+    }
+  } catch (const std::exception&) {  // no assets: the panel offers none
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 // A key's press edge.
 struct KeyEdge {
   int key;
@@ -203,9 +281,13 @@ int cmdView(const Args& args) {
   ui::LightsPanelModel lights(*scene);
   ui::RenderSettingsModel settings(*scene);
   ui::StatsModel stats;
-  std::string save_status, scene_error, shader_error;
+  settings.hdr_choices = hdrChoices();
+  Environment good_environment = scene->environment;  // the last one that baked
+  std::string panel_status;  // the material panel's status line: picks, saves
+  std::string scene_error, shader_error;
   bool shaders_ok = true;
   CameraController controller;
+  ClickDetector clicks;
   KeyEdge key_f12{GLFW_KEY_F12}, key_r{GLFW_KEY_R}, key_esc{GLFW_KEY_ESCAPE};
   const std::string gpu = ctx->renderer();
   int shot_index = 0;
@@ -233,11 +315,19 @@ int cmdView(const Args& args) {
         materials.attach(*scene);
         lights.attach(*scene);
         settings.attach(*scene);
+        good_environment = scene->environment;
       }
       scene_error = reloader.error();
     }
 
     imgui.beginFrame();
+    // Before the camera moves: a click picks in the frame the user clicked on.
+    std::optional<glm::dvec2> click = clicks.update(win, imgui.wantsMouse());
+    if (frame == 0 && va.click) click = va.click;
+    if (click) {
+      panel_status = pickMaterial(win, *scene, fb, *click, materials);
+      std::printf("%s\n", panel_status.c_str());
+    }
     controller.update(win, scene->camera, imgui.wantsMouse(), imgui.wantsKeyboard(),
                       float(std::min(frame_ms, 100.0) / 1000.0));
     if (!imgui.wantsKeyboard()) {
@@ -257,20 +347,28 @@ int cmdView(const Args& args) {
       }
     }
 
-    if (ui::drawMaterialPanel(materials, va.scene, &save_status)) renderer.updateMaterials();
+    if (ui::drawMaterialPanel(materials, va.scene, &panel_status)) renderer.updateMaterials();
     if (ui::drawLightsPanel(lights)) renderer.updateLights();
     ui::drawRenderingPanel(settings);
     if (settings.takeNeedsSetScene()) {
       try {
         renderer.setScene(*scene);
+        good_environment = scene->environment;
       } catch (const std::exception& e) {
+        // A bad HDR: back to the environment that worked, the error in the panel.
         scene_error = e.what();
+        scene->environment = good_environment;
+        try {
+          renderer.setScene(*scene);
+        } catch (const std::exception&) {
+        }
       }
     }
     materials.takeDirty();
     lights.takeDirty();
     const render::Manifest manifest = renderer.manifest();
-    ui::drawStatsPanel(stats, scene->lights.size(), gpu, &manifest);
+    ui::drawStatsPanel(stats, scene->lights.size(), render::countLightsInView(*scene, fb.x, fb.y),
+                       gpu, &manifest);
     ui::drawErrorPanel("Scene error (showing the last good scene)", scene_error);
     ui::drawErrorPanel("Shader error (last good programs still running; fix and press R)",
                        shader_error);
@@ -308,8 +406,8 @@ int cmdView(const Args& args) {
       } while (std::filesystem::exists(base + ".png"));
       writePng(base + ".png", renderer.readLdr());
       writePfm(base + ".pfm", renderer.readHdr());
-      save_status = "saved " + base + ".png / .pfm";
-      std::printf("%s\n", save_status.c_str());
+      panel_status = "saved " + base + ".png / .pfm";
+      std::printf("%s\n", panel_status.c_str());
     }
     ++frame;
     const bool last_frame = va.frames > 0 && frame >= va.frames;

@@ -10,10 +10,14 @@ layout(std140, binding = 0) uniform FrameBlock {
   mat4 u_inv_view_proj;
   vec4 u_camera_pos;   // xyz world position
   uvec4 u_viewport;    // width, height, tiles x, tiles y
-  uvec4 u_counts;      // lights, tile-index capacity, debug view, unused
+  uvec4 u_counts;      // lights, tile-index capacity, debug view, HV_FRAME_* flags
   vec4 u_output;       // exposure, dither strength, environment intensity, environment rotation (rad)
   vec4 u_near_params;  // near plane, unused...
 };
+
+// u_counts.w bits (hv::render::FrameFlag), set for the per-term debug views.
+#define HV_FRAME_NO_BACKGROUND 1u  // background pixels stay black (ambient.comp)
+#define HV_FRAME_NO_EMISSIVE 2u    // no emissive in the HDR target (C++ masks the G-buffer write)
 
 // Storage-buffer bindings.
 #define HV_BINDING_MATERIALS 1

@@ -35,7 +35,8 @@
 #define HV_SPECULAR_OCCLUSION 0
 #endif
 // Term mask: bit 1 ambient diffuse, bit 2 ambient specular; a term left out is 0 (per-term
-// images, `halfvec render --aov`). Background pixels are drawn whatever the mask.
+// images, `halfvec render --aov`). Background pixels are drawn whatever the mask, unless
+// u_counts.w has HV_FRAME_NO_BACKGROUND (per-term debug views).
 #ifndef HV_AMBIENT_TERMS
 #define HV_AMBIENT_TERMS 3
 #endif
@@ -74,6 +75,7 @@ void main() {
 #else
     vec3 sky = vec3(0.0);
 #endif
+    if ((u_counts.w & HV_FRAME_NO_BACKGROUND) != 0u) sky = vec3(0.0);  // per-term debug view
     imageStore(i_hdr, px, vec4(min(sky, vec3(HV_HDR_MAX)), 1.0));
     return;
   }

@@ -230,8 +230,41 @@ TEST(RenderingPanel, EveryEnumFieldUsesEnumNames) {
   EXPECT_FALSE(model.takeNeedsSetScene());
   EXPECT_TRUE(model.setExposure(1000.0f));
   EXPECT_EQ(scene.settings.exposure, 64.0f);
-  EXPECT_EQ(hv::ui::RenderSettingsModel::debugViewNames().size(),
-            size_t(hv::render::DebugView::LightsPerTile) + 1);
+  const auto views = hv::ui::RenderSettingsModel::debugViewNames();
+  ASSERT_EQ(views.size(), hv::render::kDebugViewCount);
+  EXPECT_STREQ(views[size_t(hv::render::DebugView::DirectSpecular)], "direct_specular");
+  EXPECT_STREQ(views.back(), "emissive");
+}
+
+}  // namespace
+
+namespace {
+
+TEST(RenderingPanel, EnvironmentChoiceNeedsARebake) {
+  hv::Scene scene;
+  scene.environment.kind = hv::EnvironmentKind::Sky;
+  hv::ui::RenderSettingsModel model(scene);
+  EXPECT_FALSE(model.setEnvironmentKind(hv::EnvironmentKind::Sky));
+  EXPECT_FALSE(model.takeNeedsSetScene());
+  // No HDR file known yet: "hdr" cannot be chosen by kind alone.
+  EXPECT_FALSE(model.setEnvironmentKind(hv::EnvironmentKind::HdrFile));
+  EXPECT_TRUE(model.setEnvironmentKind(hv::EnvironmentKind::Uniform));
+  EXPECT_TRUE(model.takeNeedsSetScene());
+  EXPECT_TRUE(model.setEnvironmentColor({0.5f, -1.0f, 2e9f}));
+  EXPECT_EQ(scene.environment.color, glm::vec3(0.5f, 0.0f, 1000.0f));
+  EXPECT_TRUE(model.takeNeedsSetScene());
+  EXPECT_FALSE(model.setEnvironmentHdr("/nonexistent/sky.hdr"));
+  EXPECT_EQ(scene.environment.kind, hv::EnvironmentKind::Uniform);
+  EXPECT_FALSE(model.takeNeedsSetScene());
+  const auto file = std::filesystem::temp_directory_path() / "hv_panel_env.hdr";
+  std::ofstream(file) << "not really an HDR";
+  EXPECT_TRUE(model.setEnvironmentHdr(file.string()));
+  EXPECT_EQ(scene.environment.kind, hv::EnvironmentKind::HdrFile);
+  EXPECT_EQ(scene.environment.path, file.string());
+  EXPECT_TRUE(model.takeNeedsSetScene());
+  EXPECT_TRUE(model.setEnvironmentKind(hv::EnvironmentKind::None));
+  EXPECT_TRUE(model.setEnvironmentKind(hv::EnvironmentKind::HdrFile));  // the path is kept
+  std::filesystem::remove(file);
 }
 
 }  // namespace

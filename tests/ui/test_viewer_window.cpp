@@ -1,5 +1,5 @@
 // `halfvec view` in a real GLFW window under Xvfb: runs a few frames, saves a screenshot that
-// must show a lit scene and the ImGui panels.
+// must show a lit scene and the ImGui panels; a scripted click picks the material under it.
 #include <gtest/gtest.h>
 
 #include <signal.h>
@@ -10,11 +10,18 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <thread>
 
 #include "image/image.hpp"
+
+#if HV_HAVE_XLIB
+#include <X11/Xlib.h>
+#include <X11/keysym.h>
+#endif
 
 namespace {
 
@@ -92,15 +99,24 @@ TEST(Viewer, WindowShowsSceneAndPanelsUnderXvfb) {
 
   const auto shot =
       std::filesystem::temp_directory_path() / numbered("hv_view_", int(getpid()), ".png");
+  const auto log =
+      std::filesystem::temp_directory_path() / numbered("hv_view_", int(getpid()), ".log");
   // (ostringstream: GCC 12's -Wrestrict misfires on long std::string + chains)
+  // --click 359,186: a scripted left click where the red sphere's center (0.6, 0.5, 0) lands in
+  // the 640x360 window, through the same path as a mouse click.
   std::ostringstream os;
   os << "DISPLAY=" << server.display() << " '" << exe << "' view '" << HV_SOURCE_DIR
-     << "/samples/scenes/default.json' --size 640x360 --frames 5 --screenshot '" << shot.string()
-     << "' > /dev/null 2>&1";
+     << "/samples/scenes/default.json' --size 640x360 --frames 5 --click 359,186 --screenshot '"
+     << shot.string() << "' > '" << log.string() << "' 2>&1";
   const std::string cmd = os.str();
   const int rc = std::system(cmd.c_str());
   ASSERT_TRUE(WIFEXITED(rc)) << cmd;
   ASSERT_EQ(WEXITSTATUS(rc), 0) << cmd;
+  std::ifstream log_in(log);
+  const std::string out((std::istreambuf_iterator<char>(log_in)), std::istreambuf_iterator<char>());
+  std::filesystem::remove(log);
+  EXPECT_NE(out.find("picked material 4 'plastic_red' on object 'red_sphere'"), std::string::npos)
+      << out;
   ASSERT_TRUE(std::filesystem::exists(shot));
   hv::ImageRGBA8 img = hv::readPng(shot.string());
   std::filesystem::remove(shot);
@@ -137,6 +153,82 @@ TEST(Viewer, WindowShowsSceneAndPanelsUnderXvfb) {
   }
   EXPECT_GT(title_px, 1000) << "no ImGui title bar found";
 }
+
+#if HV_HAVE_XLIB
+// The viewer's top-level window (no window manager under Xvfb: a child of the root), or 0.
+Window findViewerWindow(Display* d) {
+  Window root = DefaultRootWindow(d), parent = 0, *children = nullptr;
+  unsigned int n = 0;
+  Window found = 0;
+  if (!XQueryTree(d, root, &root, &parent, &children, &n)) return 0;
+  for (unsigned int i = 0; i < n && !found; ++i) {
+    char* name = nullptr;
+    if (XFetchName(d, children[i], &name) && name) {
+      if (std::string(name).rfind("halfvec view", 0) == 0) found = children[i];
+      XFree(name);
+    }
+  }
+  if (children) XFree(children);
+  return found;
+}
+
+// Esc pressed (a key event sent by the X server to the window, as a keyboard would) quits the
+// viewer with status 0; --frames is only a backstop so a failure cannot hang the suite.
+TEST(Viewer, ExitsCleanlyOnEsc) {
+  const std::string xvfb = findXvfb();
+  if (xvfb.empty()) GTEST_SKIP() << "Xvfb not installed (apt-get install xvfb)";
+  const std::string exe = std::string(HV_BINARY_DIR) + "/halfvec";
+  if (access(exe.c_str(), X_OK) != 0) GTEST_SKIP() << exe << " not built";
+  Xvfb server(xvfb);
+  ASSERT_FALSE(server.display().empty()) << "could not start Xvfb";
+  const std::string scene = std::string(HV_SOURCE_DIR) + "/samples/scenes/default.json";
+  const pid_t pid = fork();
+  if (pid == 0) {
+    setenv("DISPLAY", server.display().c_str(), 1);
+    std::freopen("/dev/null", "w", stdout);
+    std::freopen("/dev/null", "w", stderr);
+    execl(exe.c_str(), exe.c_str(), "view", scene.c_str(), "--size", "320x180", "--frames",
+          "100000", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  ASSERT_GT(pid, 0);
+  Display* d = XOpenDisplay(server.display().c_str());
+  ASSERT_NE(d, nullptr);
+  Window win = 0;
+  for (int i = 0; i < 600 && !win; ++i) {  // up to 60 s for the window
+    win = findViewerWindow(d);
+    if (!win) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  int status = -1;
+  bool exited = false;
+  if (win) {
+    XKeyEvent ev{};
+    ev.type = KeyPress;
+    ev.display = d;
+    ev.window = win;
+    ev.root = DefaultRootWindow(d);
+    ev.time = CurrentTime;
+    ev.same_screen = True;
+    ev.keycode = XKeysymToKeycode(d, XK_Escape);
+    // Held down (no release): the viewer reads the key state once per frame.
+    XSendEvent(d, win, True, KeyPressMask, reinterpret_cast<XEvent*>(&ev));
+    XFlush(d);
+    for (int i = 0; i < 600 && !exited; ++i) {  // up to 60 s to quit
+      exited = waitpid(pid, &status, WNOHANG) == pid;
+      if (!exited) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+  }
+  XCloseDisplay(d);
+  if (!exited) {
+    kill(pid, SIGKILL);
+    waitpid(pid, &status, 0);
+  }
+  ASSERT_NE(win, Window(0)) << "the viewer's window never appeared";
+  ASSERT_TRUE(exited) << "Esc did not quit the viewer";
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+}
+#endif
 
 TEST(Viewer, BadSceneFileFailsCleanly) {
   const std::string exe = std::string(HV_BINARY_DIR) + "/halfvec";
