@@ -111,22 +111,35 @@ void main() {
   uint end = min(range.x + range.y, u_counts.y);
   uint end_point = min(range.x + split.x, end);
   uint end_sphere = min(end_point + split.y, end);
+  // One loop per type, each a do-while behind an if: the exit test at the end of the body. A SIMD
+  // CPU implementation (llvmpipe) runs a loop body under a mask until no lane is left, so a test
+  // at the top costs one extra, fully masked body per loop: one wasted evaluation of each type
+  // per tile row (measured, bench --lights 1024: light pass 92.5 -> 84.2 ms, mixed types).
 #if HV_HAS_POINT_LIGHTS
-  for (uint i = range.x; i < end_point; ++i) {
-    GpuLight l = tileLight(i);
-    for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += evaluatePointLightAt(l, s[j], sp[j]);
+  if (range.x < end_point) {
+    uint i = range.x;
+    do {
+      GpuLight l = tileLight(i);
+      for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += evaluatePointLightAt(l, s[j], sp[j]);
+    } while (++i < end_point);
   }
 #endif
 #if HV_HAS_SPHERE_LIGHTS
-  for (uint i = end_point; i < end_sphere; ++i) {
-    GpuLight l = tileLight(i);
-    for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += evaluateSphereLightAt(l, s[j], sp[j]);
+  if (end_point < end_sphere) {
+    uint i = end_point;
+    do {
+      GpuLight l = tileLight(i);
+      for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += evaluateSphereLightAt(l, s[j], sp[j]);
+    } while (++i < end_sphere);
   }
 #endif
 #if HV_HAS_TUBE_LIGHTS
-  for (uint i = end_sphere; i < end; ++i) {
-    GpuLight l = tileLight(i);
-    for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += evaluateTubeLightAt(l, s[j], sp[j]);
+  if (end_sphere < end) {
+    uint i = end_sphere;
+    do {
+      GpuLight l = tileLight(i);
+      for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += evaluateTubeLightAt(l, s[j], sp[j]);
+    } while (++i < end);
   }
 #endif
 #endif
