@@ -42,7 +42,7 @@ ratios.
   --shaders D1,D2,...  with --lights: the same scene rendered by one renderer per shader tree
                (HV_SHADER_DIR, a copy of shaders/ with a change), frames interleaved D1 D2 D1 D2
                so that load from other processes hits them alike; prints the median and the
-               fastest frame of each. For A/B tests of shader changes.
+               fastest frame of each (culling and light pass). For A/B tests of shader changes.
 
   --variants   instead: programs specialized to the scene vs the uber build, GPU ms per pass on
                every scene of samples/scenes, as a markdown table (--quick: at most 640x360)
@@ -148,7 +148,7 @@ void printRow(int n, float range, const Result& r) {
   std::fflush(stdout);
 }
 
-// --shaders: one renderer per shader tree, frames interleaved; median and fastest light ms.
+// --shaders: one renderer per shader tree, frames interleaved; median and fastest pass ms.
 int compareShaderTrees(const Scene& scene, const std::vector<std::string>& dirs, int w, int h,
                        int frames) {
   std::vector<std::unique_ptr<Runner>> runs;
@@ -167,10 +167,12 @@ int compareShaderTrees(const Scene& scene, const std::vector<std::string>& dirs,
   for (int f = 0; f < frames; ++f) {
     for (auto& run : runs) run->frame(w, h);
   }
-  std::printf("%-40s %12s %12s %14s\n", "shader tree", "light ms", "fastest ms", "Mevals/s (fast)");
+  std::printf("%-32s %10s %10s %10s %10s %14s\n", "shader tree", "cull ms", "fastest", "light ms",
+              "fastest", "Mevals/s (fast)");
   for (size_t i = 0; i < runs.size(); ++i) {
     const Result med = runs[i]->result(), fast = runs[i]->result(true);
-    std::printf("%-40s %12.3f %12.3f %14.1f\n", dirs[i].c_str(), med.light_ms, fast.light_ms,
+    std::printf("%-32s %10.3f %10.3f %10.3f %10.3f %14.1f\n", dirs[i].c_str(), med.cull_ms,
+                fast.cull_ms, med.light_ms, fast.light_ms,
                 fast.light_ms > 0 ? double(fast.evals) / (fast.light_ms * 1e-3) * 1e-6 : 0.0);
   }
   return 0;

@@ -8,8 +8,8 @@
 //                    tightened in x and y as well: a slanted floor tile is a thin slab, not the
 //                    whole frustum slice between its min and max depth.
 //  1 HV_CULL_LIGHTS  one invocation per light: the light's bounding sphere (lightCullRadius) is
-//                    projected to a conservative rectangle of tiles; for every tile of it the
-//                    sphere is tested against the tile's four side planes and its AABB (exact
+//                    projected to its exact rectangle of tiles (tangent planes through the eye);
+//                    for every tile of it the sphere is tested against the tile's AABB (exact
 //                    sphere-box distance). u_cull_phase 0 counts hits per (tile, light type);
 //                    phase 1 writes the light index into the slot the scan reserved. Both phases
 //                    run the same program on the same data, so they find the same pairs.
@@ -120,11 +120,16 @@ layout(std430, binding = HV_BINDING_TILE_INDICES) buffer TileIndexBlock {
 };
 uniform uint u_cull_phase;  // 0 = count, 1 = fill
 
-// Signed distance-like test of view-space center c against the plane through the eye and the
-// line x = k (-z) (or y = k (-z)): dot of c with the unnormalized normal (1, 0, k), scaled to a
-// distance. side = +1 keeps x > k (-z) (left edge), -1 keeps x < k (-z) (right edge).
-bool insideEdge(float cx, float cz, float k, float side, float r) {
-  return side * (cx + k * cz) * inversesqrt(1.0 + k * k) > -r;
+// Range of k = x / (-z) (x or y) over a view-space sphere of center (cx, -d) and radius r,
+// d > r (entirely in front of the eye): the slopes of the two planes through the eye tangent to
+// it, roots of (cx + k cz)^2 = r^2 (1 + k^2) (distance from the center to the plane x = k (-z)
+// equal to r; as in Mara & McGuire 2013, "2D Polyhedral Bounds of a Clipped, Perspective-
+// Projected 3D Sphere"). A tile column whose planes x = k0 (-z), x = k1 (-z) bound a k interval
+// missing this range holds no point of the sphere: exact, not just conservative, in x and y.
+vec2 tangentSlopes(float cx, float d, float r) {
+  float den = d * d - r * r;
+  float root = r * sqrt(max(cx * cx + den, 0.0));
+  return vec2(cx * d - root, cx * d + root) / den;
 }
 
 void main() {
@@ -136,16 +141,17 @@ void main() {
   float near_z = -c.z - r, far_z = -c.z + r;        // view-distance interval of the sphere
   if (far_z < u_near_params.x || type > 2u) return;  // every visible point is beyond the near plane
 
-  // Conservative NDC rectangle: the sphere lies in the view-space box c +- r. When the box is
-  // entirely in front of the eye, its projection lies within the extremes of x / dist over its
-  // corners (x / dist is monotonic in x and in dist along each edge); otherwise take the screen.
-  vec2 inv_scale = vec2(1.0 / u_proj[0][0], 1.0 / u_proj[1][1]);
+  // NDC rectangle of the sphere: exact from its tangent planes (tangentSlopes, x = k (-z) maps to
+  // ndc_x = k P00) when it lies in front of the eye (1e-3 r of margin against rounding in the
+  // division); otherwise, the sphere containing or touching the eye plane, the whole screen.
+  // Widened by 1e-5 in NDC (0.004 px at 720 p) so rounding never drops a tile at its border.
+  vec2 scale = vec2(u_proj[0][0], u_proj[1][1]);
   vec2 ndc_lo = vec2(-1.0), ndc_hi = vec2(1.0);
-  if (near_z > 1e-6 * far_z) {
-    vec2 lo = c.xy - r, hi = c.xy + r;
-    vec2 a = lo / near_z, b = lo / far_z, e = hi / near_z, f = hi / far_z;
-    ndc_lo = max(min(a, b) / inv_scale, vec2(-1.0));
-    ndc_hi = min(max(e, f) / inv_scale, vec2(1.0));
+  float d = -c.z;
+  if (near_z > 1e-3 * r) {
+    vec2 kx = tangentSlopes(c.x, d, r), ky = tangentSlopes(c.y, d, r);
+    ndc_lo = max(vec2(kx.x, ky.x) * scale - 1e-5, vec2(-1.0));
+    ndc_hi = min(vec2(kx.y, ky.y) * scale + 1e-5, vec2(1.0));
     if (ndc_lo.x > 1.0 || ndc_lo.y > 1.0 || ndc_hi.x < -1.0 || ndc_hi.y < -1.0) return;
   }
   vec2 vp = vec2(u_viewport.xy);
@@ -154,24 +160,24 @@ void main() {
   ivec2 t0 = clamp(ivec2(floor((ndc_lo * 0.5 + 0.5) * vp / tile_px)), ivec2(0), tmax);
   ivec2 t1 = clamp(ivec2(floor((ndc_hi * 0.5 + 0.5) * vp / tile_px)), ivec2(0), tmax);
 
-  for (int ty = t0.y; ty <= t1.y; ++ty) {
-    // Tile row edges: y = k (-z) with k = ndc_y / P11 (same formula as stage 0).
-    float ky0 = (float(ty * HV_TILE_HEIGHT) / vp.y * 2.0 - 1.0) * inv_scale.y;
-    float ky1 = (float((ty + 1) * HV_TILE_HEIGHT) / vp.y * 2.0 - 1.0) * inv_scale.y;
-    if (!insideEdge(c.y, c.z, ky0, 1.0, r) || !insideEdge(c.y, c.z, ky1, -1.0, r)) continue;
-    for (int tx = t0.x; tx <= t1.x; ++tx) {
-      float kx0 = (float(tx * HV_TILE_SIZE) / vp.x * 2.0 - 1.0) * inv_scale.x;
-      float kx1 = (float((tx + 1) * HV_TILE_SIZE) / vp.x * 2.0 - 1.0) * inv_scale.x;
-      if (!insideEdge(c.x, c.z, kx0, 1.0, r) || !insideEdge(c.x, c.z, kx1, -1.0, r)) continue;
+  // The rectangle's tiles against the tile surface boxes (exact sphere-box distance). do-while:
+  // the exit test at the end of the body, which a SIMD CPU implementation (llvmpipe) would
+  // otherwise pay as one more, fully masked iteration per loop entry (t0 <= t1 after the clamps).
+  float r2 = r * r;
+  int ty = t0.y;
+  do {
+    int tx = t0.x;
+    do {
       uint tile = uint(ty) * u_viewport.z + uint(tx);
       vec4 bmin = tile_bounds[tile * 2u];
-      if (bmin.w == 0.0) continue;  // no surface in this tile
       vec3 q = clamp(c, bmin.xyz, tile_bounds[tile * 2u + 1u].xyz);
-      if (dot(q - c, q - c) > r * r) continue;  // sphere misses the tile's surface box
-      uint slot = atomicAdd(tile_counters[tile * 3u + type], 1u);
-      if (u_cull_phase == 1u && slot < u_counts.y) tile_indices[slot] = i;
-    }
-  }
+      // bmin.w = 0: no surface in this tile.
+      if (bmin.w != 0.0 && dot(q - c, q - c) <= r2) {
+        uint slot = atomicAdd(tile_counters[tile * 3u + type], 1u);
+        if (u_cull_phase == 1u && slot < u_counts.y) tile_indices[slot] = i;
+      }
+    } while (++tx <= t1.x);
+  } while (++ty <= t1.y);
 }
 
 // ---------------------------------------------------------------------------------------------
