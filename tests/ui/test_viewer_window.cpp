@@ -154,6 +154,41 @@ TEST(Viewer, WindowShowsSceneAndPanelsUnderXvfb) {
   EXPECT_GT(title_px, 1000) << "no ImGui title bar found";
 }
 
+// Every sample scene opens in the viewer (issue "Done when"): a few frames in a window, exit 0,
+// and the part of the window between the panels shows a lit image.
+TEST(Viewer, EverySampleSceneOpens) {
+  const std::string xvfb = findXvfb();
+  if (xvfb.empty()) GTEST_SKIP() << "Xvfb not installed (apt-get install xvfb)";
+  const std::string exe = std::string(HV_BINARY_DIR) + "/halfvec";
+  if (access(exe.c_str(), X_OK) != 0) GTEST_SKIP() << exe << " not built";
+  Xvfb server(xvfb);
+  ASSERT_FALSE(server.display().empty()) << "could not start Xvfb";
+  int scenes = 0;
+  for (const auto& e :
+       std::filesystem::directory_iterator(std::string(HV_SOURCE_DIR) + "/samples/scenes")) {
+    if (e.path().extension() != ".json") continue;
+    ++scenes;
+    const auto shot =
+        std::filesystem::temp_directory_path() / numbered("hv_view_sample_", int(getpid()), ".png");
+    std::ostringstream os;
+    os << "DISPLAY=" << server.display() << " '" << exe << "' view '" << e.path().string()
+       << "' --size 640x360 --frames 2 --screenshot '" << shot.string() << "' > /dev/null 2>&1";
+    const int rc = std::system(os.str().c_str());
+    ASSERT_TRUE(WIFEXITED(rc)) << e.path();
+    EXPECT_EQ(WEXITSTATUS(rc), 0) << e.path();
+    ASSERT_TRUE(std::filesystem::exists(shot)) << e.path();
+    hv::ImageRGBA8 img = hv::readPng(shot.string());
+    std::filesystem::remove(shot);
+    double sum = 0;
+    int n = 0;
+    for (int y = 120; y < 300; ++y) {
+      for (int x = 250; x < 390; ++x, ++n) sum += img.at(x, y)[1];
+    }
+    EXPECT_GT(sum / n, 10.0) << e.path() << ": the view looks black";
+  }
+  EXPECT_GE(scenes, 6);
+}
+
 #if HV_HAVE_XLIB
 // The viewer's top-level window (no window manager under Xvfb: a child of the root), or 0.
 Window findViewerWindow(Display* d) {
