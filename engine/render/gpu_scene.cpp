@@ -88,7 +88,12 @@ void GpuScene::updateMaterials(const Scene& scene) {
 void GpuScene::updateLights(const Scene& scene) {
   std::vector<GpuLight> packed;
   packed.reserve(scene.lights.size());
-  for (const Light& l : scene.lights) packed.push_back(packLight(l));
+  cull_spheres_.clear();
+  for (const Light& l : scene.lights) {
+    packed.push_back(packLight(l));
+    cull_spheres_.emplace_back(glm::vec3(packed.back().position_radius),
+                               glsl::lightCullRadius(toGlsl(packed.back())));
+  }
   light_count_ = packed.size();
   if (!lights_ || light_capacity_ < packed.size()) {
     light_capacity_ = std::max<size_t>(packed.size(), 1);

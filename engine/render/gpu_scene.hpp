@@ -36,6 +36,9 @@ class GpuScene {
   GLuint materialBuffer() const { return materials_.id(); }
   GLuint lightBuffer() const { return lights_.id(); }
   size_t lightCount() const { return light_count_; }
+  // What the GPU buffer holds, per light: world-space bounding sphere of the culling (xyz center,
+  // w lightCullRadius), for sizing the tile lists on the CPU (Renderer::cullLightsPass).
+  const std::vector<glm::vec4>& lightCullSpheres() const { return cull_spheres_; }
   size_t triangleCount() const { return triangles_; }
   const std::vector<DrawItem>& draws() const { return draws_; }
   // Texture units 0..4 for a material: base color, metal-rough, normal, occlusion, emissive.
@@ -50,6 +53,7 @@ class GpuScene {
   gl::VertexArray vao_;
   std::vector<DrawItem> draws_;
   size_t light_count_ = 0;
+  std::vector<glm::vec4> cull_spheres_;
   size_t light_capacity_ = 0;
   size_t triangles_ = 0;
   std::map<std::pair<int, bool>, gl::Texture> textures_;

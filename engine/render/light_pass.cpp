@@ -11,12 +11,43 @@ namespace hv::render {
 
 namespace {
 constexpr size_t kTileHeaderUints = 4;  // counter + padding before the index array
+// Upper bound of the (tile, light) pairs the culling can find: the sum of the lights' tile
+// rectangles (sphereTileRect, the function the GPU runs), each widened by one tile on every side
+// so that rounding differences between the two compilers cannot make it smaller than the GPU's.
+size_t listBound(const std::vector<glm::vec4>& spheres, const FrameBlock& frame) {
+  const glm::vec2 scale(frame.proj[0][0], frame.proj[1][1]);
+  const glm::vec2 viewport(frame.viewport.x, frame.viewport.y);
+  const glm::ivec2 tiles(frame.viewport.z, frame.viewport.w);
+  const glm::vec2 tile_px(kTileSize, kTileHeight);
+  size_t bound = 0;
+  for (const glm::vec4& s : spheres) {
+    const glm::vec3 c = glm::vec3(frame.view * glm::vec4(glm::vec3(s), 1.0f));
+    glm::ivec4 r;
+    if (!glsl::sphereTileRect(c, s.w, scale, frame.near_params.x, viewport, tiles, tile_px, r)) {
+      continue;
+    }
+    const glm::ivec2 lo = glm::max(glm::ivec2(r.x, r.y) - 1, glm::ivec2(0));
+    const glm::ivec2 hi = glm::min(glm::ivec2(r.z, r.w) + 1, tiles - 1);
+    bound += size_t(hi.x - lo.x + 1) * size_t(hi.y - lo.y + 1);
+  }
+  return bound;
+}
+}  // namespace
+
+void Renderer::growTileList(size_t need) {
+  tile_capacity_ = std::max(tile_capacity_, need + need / 4);  // headroom: fewer reallocations
+  tile_indices_ = gl::createBuffer("tile light indices",
+                                   (kTileHeaderUints + tile_capacity_) * sizeof(uint32_t));
 }
 
 // Tiled culling in four dispatches (shaders/passes/light_cull.comp; docs/lights.md): tile surface
 // bounds, per-light count, prefix sum, per-light fill. The work is tiles + lights + the (tile,
-// light) pairs that touch, instead of tiles x lights. The exact total is read back between the scan
-// and the fill, so the index list is grown before anything is written: no cap, no second pass.
+// light) pairs that touch, instead of tiles x lights. No cap on a tile's list: the index list is
+// sized before the fill from an upper bound computed on the CPU (listBound: the lights' tile
+// rectangles, which contain every pair the GPU can find), so nothing waits for the GPU mid-frame.
+// Only when that bound exceeds setTileListBoundLimit (32 Mi entries, 128 MiB, by default) is the
+// exact total read back between the scan and the fill (a pipeline stall on a GPU) to size the
+// list to the need instead.
 void Renderer::cullLightsPass(FrameBlock& frame) {
   gl::ScopedPass pass(timer_, "light_cull");
   applyState(PipelineState{});
@@ -29,11 +60,11 @@ void Renderer::cullLightsPass(FrameBlock& frame) {
     tile_counters_ = gl::createBuffer("tile light counters", tiles * 3 * sizeof(uint32_t));
     tile_buffers_tiles_ = tiles;
   }
-  if (!tile_indices_) {
-    if (tile_capacity_ == 0) tile_capacity_ = std::max<size_t>(tiles * 16, 1 << 16);
-    tile_indices_ = gl::createBuffer("tile light indices",
-                                     (kTileHeaderUints + tile_capacity_) * sizeof(uint32_t));
-  }
+  if (!tile_indices_) growTileList(std::max<size_t>(tiles * 16, 1 << 16));
+  // Size the list before anything runs, from the CPU bound when it is small enough.
+  const size_t bound = listBound(gpu_->lightCullSpheres(), frame);
+  const bool bounded = bound <= tile_bound_limit_;
+  if (bounded && bound > tile_capacity_) growTileList(bound);
   auto stage = [&](const char* name, const char* value) {
     return programs_.get(
         {name, {{GL_COMPUTE_SHADER, "passes/light_cull.comp"}}, {{"HV_CULL_STAGE", value}}});
@@ -70,15 +101,15 @@ void Renderer::cullLightsPass(FrameBlock& frame) {
   glUseProgram(scan_prog);
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  uint32_t total = 0;
-  glGetNamedBufferSubData(tile_indices_.id(), 0, sizeof total, &total);
-  tile_entries_ = total;
-  if (total > tile_capacity_) {  // grow to the exact need plus headroom, keep the header
-    tile_capacity_ = size_t(total) + total / 4;
-    tile_indices_ = gl::createBuffer("tile light indices",
-                                     (kTileHeaderUints + tile_capacity_) * sizeof(uint32_t));
-    glNamedBufferSubData(tile_indices_.id(), 0, sizeof total, &total);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, tile_indices_.id());
+  if (!bounded) {  // the bound is too loose to allocate: read the exact total back (a stall)
+    uint32_t total = 0;
+    glGetNamedBufferSubData(tile_indices_.id(), 0, sizeof total, &total);
+    ++list_readbacks_;
+    if (total > tile_capacity_) {  // grow to the need plus headroom, keep the header
+      growTileList(total);
+      glNamedBufferSubData(tile_indices_.id(), 0, sizeof total, &total);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, tile_indices_.id());
+    }
   }
   if (frame.counts.y != tile_capacity_) {  // the list was created or grown: tell the shaders
     frame.counts.y = static_cast<uint32_t>(tile_capacity_);
@@ -87,7 +118,7 @@ void Renderer::cullLightsPass(FrameBlock& frame) {
   // 4. Fill: the same program writes each pair into the slot the scan reserved.
   glUseProgram(lights_prog);
   glProgramUniform1ui(lights_prog, phase_loc, 1u);
-  if (light_groups > 0 && total > 0) glDispatchCompute(light_groups, 1, 1);
+  if (light_groups > 0) glDispatchCompute(light_groups, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   glBindSampler(3, 0);
   glUseProgram(0);

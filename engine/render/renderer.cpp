@@ -202,9 +202,9 @@ FrameStats Renderer::render(int width, int height, DebugView view,
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, frame_ubo_.id());
 
   gbufferPass(frame);
-  if (scene_->settings.culling == Culling::Tiled || view == DebugView::LightsPerTile) {
-    cullLightsPass(frame);
-  }
+  const bool culled =
+      scene_->settings.culling == Culling::Tiled || view == DebugView::LightsPerTile;
+  if (culled) cullLightsPass(frame);
   lightPass(frame);
   ambientPass();
   tonemapPass(view, present_fbo, width, height);
@@ -215,6 +215,12 @@ FrameStats Renderer::render(int width, int height, DebugView view,
   for (auto& [name, ms] : stats.passes) stats.total_ms += ms;
   stats.width = width;
   stats.height = height;
+  if (culled) {
+    // The scan's total, for the stats: read after the timers, which already waited for the frame.
+    uint32_t total = 0;
+    glGetNamedBufferSubData(tile_indices_.id(), 0, sizeof total, &total);
+    tile_entries_ = total;
+  }
   stats.tile_light_entries = tile_entries_;
   return stats;
 }

@@ -118,6 +118,14 @@ class Renderer {
   // min(GL_MAX_TEXTURE_BUFFER_SIZE, this many texels; 0 = no extra cap), else through the SSBOs.
   // Tests set a small cap to run the SSBO path.
   void setLightTexelLimit(size_t texels) { light_texel_limit_ = texels; }
+  // The tile index list is sized from a CPU upper bound of the culling's (tile, light) pairs
+  // when that bound is at most this many entries (default 32 Mi = 128 MiB), else from the GPU's
+  // exact count read back mid-frame. Tests set 0 to run the read-back path.
+  void setTileListBoundLimit(size_t entries) { tile_bound_limit_ = entries; }
+  // Frames so far whose culling read the list total back mid-frame (the bound was too large).
+  size_t tileListReadbacks() const { return list_readbacks_; }
+  // Capacity of the tile index list (entries).
+  size_t tileListCapacity() const { return tile_capacity_; }
 
   // Timings of the environment bake of the current scene (nullptr without an environment).
   const BakeTimings* environmentTimings() const;
@@ -169,7 +177,10 @@ class Renderer {
   gl::Buffer tile_ranges_, tile_types_, tile_bounds_, tile_counters_, tile_indices_;
   size_t tile_capacity_ = 0;       // uints in the tile index list (sized from the exact count)
   size_t tile_buffers_tiles_ = 0;  // tiles the per-tile buffers hold
-  size_t tile_entries_ = 0;        // entries the last culling pass produced
+  size_t tile_entries_ = 0;        // entries the last culling pass produced (read at frame end)
+  size_t tile_bound_limit_ = size_t(32) << 20;
+  size_t list_readbacks_ = 0;
+  void growTileList(size_t need);
   gl::Texture light_texels_, tile_index_texels_;  // buffer-texture views for the light pass
   size_t light_texel_limit_ = 0;                  // see setLightTexelLimit
   gl::VertexArray empty_vao_;

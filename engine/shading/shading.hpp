@@ -19,6 +19,7 @@ namespace {
 #include "../../shaders/common/brdf.glsl"
 #include "../../shaders/common/sampling.glsl"
 #include "../../shaders/common/lights.glsl"
+#include "../../shaders/common/cull.glsl"
 #include "../../shaders/common/gbuffer.glsl"
 #include "../../shaders/common/tonemap.glsl"
 }  // namespace

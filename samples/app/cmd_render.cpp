@@ -234,6 +234,8 @@ int cmdRender(const Args& args) {
     }
     j["light_counts"] = counts;
     j["tile_light_entries"] = stats.tile_light_entries;
+    j["tile_list_capacity"] = renderer.tileListCapacity();  // sized from the CPU bound
+    j["tile_list_readbacks"] = renderer.tileListReadbacks();
     nlohmann::ordered_json vars = nlohmann::ordered_json::array();
     for (const auto& v : renderer.programs().variants()) {
       vars.push_back({{"program", v.name}, {"defines", v.defines}, {"compile_ms", v.compile_ms}});

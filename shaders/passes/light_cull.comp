@@ -25,6 +25,7 @@
 // no subgroup operations).
 #include "../common/frame.glsl"
 #include "../common/lights.glsl"
+#include "../common/cull.glsl"
 
 #define HV_CULL_BOUNDS 0
 #define HV_CULL_LIGHTS 1
@@ -120,45 +121,19 @@ layout(std430, binding = HV_BINDING_TILE_INDICES) buffer TileIndexBlock {
 };
 uniform uint u_cull_phase;  // 0 = count, 1 = fill
 
-// Range of k = x / (-z) (x or y) over a view-space sphere of center (cx, -d) and radius r,
-// d > r (entirely in front of the eye): the slopes of the two planes through the eye tangent to
-// it, roots of (cx + k cz)^2 = r^2 (1 + k^2) (distance from the center to the plane x = k (-z)
-// equal to r; as in Mara & McGuire 2013, "2D Polyhedral Bounds of a Clipped, Perspective-
-// Projected 3D Sphere"). A tile column whose planes x = k0 (-z), x = k1 (-z) bound a k interval
-// missing this range holds no point of the sphere: exact, not just conservative, in x and y.
-vec2 tangentSlopes(float cx, float d, float r) {
-  float den = d * d - r * r;
-  float root = r * sqrt(max(cx * cx + den, 0.0));
-  return vec2(cx * d - root, cx * d + root) / den;
-}
-
 void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= u_counts.x) return;
   vec3 c = (u_view * vec4(lights[i].position_radius.xyz, 1.0)).xyz;
   float r = lightCullRadius(lights[i]);
   uint type = uint(lights[i].params.y + 0.5);  // HV_LIGHT_POINT/SPHERE/TUBE = 0/1/2
-  float near_z = -c.z - r, far_z = -c.z + r;        // view-distance interval of the sphere
-  if (far_z < u_near_params.x || type > 2u) return;  // every visible point is beyond the near plane
-
-  // NDC rectangle of the sphere: exact from its tangent planes (tangentSlopes, x = k (-z) maps to
-  // ndc_x = k P00) when it lies in front of the eye (1e-3 r of margin against rounding in the
-  // division); otherwise, the sphere containing or touching the eye plane, the whole screen.
-  // Widened by 1e-5 in NDC (0.004 px at 720 p) so rounding never drops a tile at its border.
-  vec2 scale = vec2(u_proj[0][0], u_proj[1][1]);
-  vec2 ndc_lo = vec2(-1.0), ndc_hi = vec2(1.0);
-  float d = -c.z;
-  if (near_z > 1e-3 * r) {
-    vec2 kx = tangentSlopes(c.x, d, r), ky = tangentSlopes(c.y, d, r);
-    ndc_lo = max(vec2(kx.x, ky.x) * scale - 1e-5, vec2(-1.0));
-    ndc_hi = min(vec2(kx.y, ky.y) * scale + 1e-5, vec2(1.0));
-    if (ndc_lo.x > 1.0 || ndc_lo.y > 1.0 || ndc_hi.x < -1.0 || ndc_hi.y < -1.0) return;
+  if (type > 2u) return;
+  ivec4 rect;
+  if (!sphereTileRect(c, r, vec2(u_proj[0][0], u_proj[1][1]), u_near_params.x, vec2(u_viewport.xy),
+                      ivec2(u_viewport.zw), vec2(HV_TILE_SIZE, HV_TILE_HEIGHT), rect)) {
+    return;
   }
-  vec2 vp = vec2(u_viewport.xy);
-  ivec2 tmax = ivec2(u_viewport.zw) - 1;
-  vec2 tile_px = vec2(HV_TILE_SIZE, HV_TILE_HEIGHT);
-  ivec2 t0 = clamp(ivec2(floor((ndc_lo * 0.5 + 0.5) * vp / tile_px)), ivec2(0), tmax);
-  ivec2 t1 = clamp(ivec2(floor((ndc_hi * 0.5 + 0.5) * vp / tile_px)), ivec2(0), tmax);
+  ivec2 t0 = rect.xy, t1 = rect.zw;
 
   // The rectangle's tiles against the tile surface boxes (exact sphere-box distance). do-while:
   // the exit test at the end of the body, which a SIMD CPU implementation (llvmpipe) would

@@ -100,11 +100,24 @@ TEST(LightPass, TiledEqualsBruteForceWith4096Lights) {
   const int w = 160, h2 = 96;
   render::Renderer r;
   r.setScene(s);
-  r.render(w, h2);
+  const auto stats = r.render(w, h2);
   const auto tiled = r.readHdr();
+  // The list was sized from the CPU bound: no mid-frame read-back, and the bound held the lists.
+  EXPECT_EQ(r.tileListReadbacks(), 0u);
+  EXPECT_GT(stats.tile_light_entries, 1000u);
+  EXPECT_GE(r.tileListCapacity(), stats.tile_light_entries);
   r.setLightTexelLimit(1);  // the SSBO path of the light pass (no buffer textures)
   r.render(w, h2);
   const auto tiled_ssbo = r.readHdr();
+  // The read-back path (bound over the limit): a fresh renderer, so the list starts small and
+  // has to grow from the exact total read back between the scan and the fill.
+  render::Renderer r2;
+  r2.setTileListBoundLimit(0);
+  r2.setScene(s);
+  const auto stats2 = r2.render(w, h2);
+  const auto tiled_readback = r2.readHdr();
+  EXPECT_EQ(r2.tileListReadbacks(), 1u);
+  EXPECT_EQ(stats2.tile_light_entries, stats.tile_light_entries);
   s.settings.culling = Culling::BruteForce;
   r.render(w, h2);
   const auto brute = r.readHdr();
@@ -114,6 +127,7 @@ TEST(LightPass, TiledEqualsBruteForceWith4096Lights) {
       const float a = tiled.px[i][k], b = brute.px[i][k];
       ASSERT_NEAR(a, b, 1e-3f * b + 1e-5f) << "pixel " << i;
       ASSERT_NEAR(tiled_ssbo.px[i][k], b, 1e-3f * b + 1e-5f) << "SSBO path, pixel " << i;
+      ASSERT_NEAR(tiled_readback.px[i][k], b, 1e-3f * b + 1e-5f) << "read-back path, pixel " << i;
       max_rel = std::max(max_rel, double(std::abs(a - b) / (b + 1e-6f)));
       mean += b;
     }
@@ -122,9 +136,10 @@ TEST(LightPass, TiledEqualsBruteForceWith4096Lights) {
 }
 
 // 65,536 lights (the "no small fixed cap" case): the culled tile lists outgrow the
-// initial index list (grown exactly, no cap), and the tiled image still equals the sum of every
-// light evaluated on the CPU (hv::glsl::evaluateLight over all 65,536 lights) at sampled pixels.
-// Tolerance: 3e-3 relative + 1e-5 (RGBA16F target: 2^-11 relative, plus float summation order).
+// initial index list (grown before the fill from the CPU bound, no cap), and the tiled image still
+// equals the sum of every light evaluated on the CPU (hv::glsl::evaluateLight over all 65,536
+// lights) at sampled pixels. Tolerance: 3e-3 relative + 1e-5 (RGBA16F target: 2^-11 relative, plus
+// float summation order).
 TEST(LightPass, Tiled65536LightsMatchCpuSumOverAllLights) {
   testContext();
   Material m;
