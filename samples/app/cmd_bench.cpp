@@ -15,6 +15,7 @@
 #include "platform/context.hpp"
 #include "render/renderer.hpp"
 #include "scene/primitives.hpp"
+#include "scene/scene_loader.hpp"
 
 namespace hv::app {
 
@@ -43,6 +44,8 @@ ratios.
                (HV_SHADER_DIR, a copy of shaders/ with a change), frames interleaved D1 D2 D1 D2
                so that load from other processes hits them alike; prints the median and the
                fastest frame of each (culling and light pass). For A/B tests of shader changes.
+  --scene FILE with --shaders: that scene file instead of the bench floor (no --lights needed);
+               prints every pass's fastest frame per shader tree
 
   --variants   instead: programs specialized to the scene vs the uber build, GPU ms per pass on
                every scene of samples/scenes, as a markdown table (--quick: at most 640x360)
@@ -94,6 +97,7 @@ struct Result {
 struct Runner {
   render::Renderer r;
   std::vector<double> cull, light;
+  std::vector<std::pair<std::string, double>> fastest;  // per pass, the fastest frame's ms
   Runner(const Scene& scene, int w, int h) {
     r.setScene(scene);
     r.render(w, h);  // warm up: compiles the variants
@@ -103,6 +107,13 @@ struct Runner {
     for (auto& [name, ms] : st.passes) {
       if (name == "light_cull") cull.push_back(ms);
       if (name == "light") light.push_back(ms);
+      auto it = std::find_if(fastest.begin(), fastest.end(),
+                             [&](const auto& p) { return p.first == name; });
+      if (it == fastest.end()) {
+        fastest.emplace_back(name, ms);
+      } else {
+        it->second = std::min(it->second, ms);
+      }
     }
   }
   Result result(bool fastest = false) const {
@@ -152,7 +163,7 @@ void printRow(int n, float range, const Result& r) {
 
 // --shaders: one renderer per shader tree, frames interleaved; median and fastest pass ms.
 int compareShaderTrees(const Scene& scene, const std::vector<std::string>& dirs, int w, int h,
-                       int frames) {
+                       int frames, bool scene_file) {
   std::vector<std::unique_ptr<Runner>> runs;
   const char* old = std::getenv("HV_SHADER_DIR");
   const std::string saved = old ? old : "";
@@ -172,6 +183,12 @@ int compareShaderTrees(const Scene& scene, const std::vector<std::string>& dirs,
   std::printf("%-32s %10s %10s %10s %10s %14s\n", "shader tree", "cull ms", "fastest", "light ms",
               "fastest", "Mevals/s (fast)");
   for (size_t i = 0; i < runs.size(); ++i) {
+    if (scene_file) {  // a scene file: every pass, fastest frame
+      std::printf("%-32s", dirs[i].c_str());
+      for (const auto& [name, ms] : runs[i]->fastest) std::printf(" %s %.3f", name.c_str(), ms);
+      std::printf("\n");
+      continue;
+    }
     const Result med = runs[i]->result(), fast = runs[i]->result(true);
     std::printf("%-32s %10.3f %10.3f %10.3f %10.3f %14.1f\n", dirs[i].c_str(), med.cull_ms,
                 fast.cull_ms, med.light_ms, fast.light_ms,
@@ -193,6 +210,7 @@ int cmdBench(const Args& args) {
   bool quick = false;
   bool variants = false;
   std::vector<std::string> shader_dirs;
+  std::string scene_path;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a == "--help" || a == "-h") {
@@ -223,6 +241,8 @@ int cmdBench(const Args& args) {
       } else {
         throw UsageError{"--types expects mixed, point, sphere or tube, got '" + t + "'"};
       }
+    } else if (a == "--scene" && i + 1 < args.size()) {
+      scene_path = args[++i];
     } else if (a == "--shaders" && i + 1 < args.size()) {
       std::stringstream list(args[++i]);
       for (std::string d; std::getline(list, d, ',');) {
@@ -254,12 +274,17 @@ int cmdBench(const Args& args) {
     return v;
   };
   auto densityRange = [&](int n) { return std::sqrt(density * area / (3.14159265f * float(n))); };
+  if (!scene_path.empty()) {
+    if (shader_dirs.empty()) throw UsageError{"--scene goes with --shaders"};
+    Scene sc = loadScene(scene_path);
+    return compareShaderTrees(sc, shader_dirs, w, h, frames, true);
+  }
   if (only > 0) {
     std::printf("(a) constant density (about %.0f lights per floor point)\n", density);
     header();
     const float r = only_range > 0.0f ? only_range : densityRange(only);
     Scene s = benchScene(only, r, 1);
-    if (!shader_dirs.empty()) return compareShaderTrees(s, shader_dirs, w, h, frames);
+    if (!shader_dirs.empty()) return compareShaderTrees(s, shader_dirs, w, h, frames, false);
     printRow(only, r, measure(s, w, h, frames));
     return 0;
   }
