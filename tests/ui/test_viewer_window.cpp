@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -89,14 +90,21 @@ class Xvfb {
   std::string display_;
 };
 
-TEST(Viewer, WindowShowsSceneAndPanelsUnderXvfb) {
-  const std::string xvfb = findXvfb();
-  if (xvfb.empty()) GTEST_SKIP() << "Xvfb not installed (apt-get install xvfb)";
+// The window tests: skipped without Xvfb or the halfvec binary; an Xvfb server per test.
+class ViewerWindow : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const std::string xvfb = findXvfb();
+    if (xvfb.empty()) GTEST_SKIP() << "Xvfb not installed (apt-get install xvfb)";
+    if (access(exe.c_str(), X_OK) != 0) GTEST_SKIP() << exe << " not built";
+    server = std::make_unique<Xvfb>(xvfb);
+    ASSERT_FALSE(server->display().empty()) << "could not start Xvfb";
+  }
   const std::string exe = std::string(HV_BINARY_DIR) + "/halfvec";
-  if (access(exe.c_str(), X_OK) != 0) GTEST_SKIP() << exe << " not built";
-  Xvfb server(xvfb);
-  ASSERT_FALSE(server.display().empty()) << "could not start Xvfb";
+  std::unique_ptr<Xvfb> server;
+};
 
+TEST_F(ViewerWindow, WindowShowsSceneAndPanelsUnderXvfb) {
   const auto shot =
       std::filesystem::temp_directory_path() / numbered("hv_view_", int(getpid()), ".png");
   const auto log =
@@ -105,7 +113,7 @@ TEST(Viewer, WindowShowsSceneAndPanelsUnderXvfb) {
   // --click 359,186: a scripted left click where the red sphere's center (0.6, 0.5, 0) lands in
   // the 640x360 window, through the same path as a mouse click.
   std::ostringstream os;
-  os << "DISPLAY=" << server.display() << " '" << exe << "' view '" << HV_SOURCE_DIR
+  os << "DISPLAY=" << server->display() << " '" << exe << "' view '" << HV_SOURCE_DIR
      << "/samples/scenes/default.json' --size 640x360 --frames 5 --click 359,186 --screenshot '"
      << shot.string() << "' > '" << log.string() << "' 2>&1";
   const std::string cmd = os.str();
@@ -156,13 +164,7 @@ TEST(Viewer, WindowShowsSceneAndPanelsUnderXvfb) {
 
 // Every sample scene opens in the viewer (issue "Done when"): a few frames in a window, exit 0,
 // and the part of the window between the panels shows a lit image.
-TEST(Viewer, EverySampleSceneOpens) {
-  const std::string xvfb = findXvfb();
-  if (xvfb.empty()) GTEST_SKIP() << "Xvfb not installed (apt-get install xvfb)";
-  const std::string exe = std::string(HV_BINARY_DIR) + "/halfvec";
-  if (access(exe.c_str(), X_OK) != 0) GTEST_SKIP() << exe << " not built";
-  Xvfb server(xvfb);
-  ASSERT_FALSE(server.display().empty()) << "could not start Xvfb";
+TEST_F(ViewerWindow, EverySampleSceneOpens) {
   int scenes = 0;
   for (const auto& e :
        std::filesystem::directory_iterator(std::string(HV_SOURCE_DIR) + "/samples/scenes")) {
@@ -171,7 +173,7 @@ TEST(Viewer, EverySampleSceneOpens) {
     const auto shot =
         std::filesystem::temp_directory_path() / numbered("hv_view_sample_", int(getpid()), ".png");
     std::ostringstream os;
-    os << "DISPLAY=" << server.display() << " '" << exe << "' view '" << e.path().string()
+    os << "DISPLAY=" << server->display() << " '" << exe << "' view '" << e.path().string()
        << "' --size 640x360 --frames 2 --screenshot '" << shot.string() << "' > /dev/null 2>&1";
     const int rc = std::system(os.str().c_str());
     ASSERT_TRUE(WIFEXITED(rc)) << e.path();
@@ -209,17 +211,11 @@ Window findViewerWindow(Display* d) {
 
 // Esc pressed (a key event sent by the X server to the window, as a keyboard would) quits the
 // viewer with status 0; --frames is only a backstop so a failure cannot hang the suite.
-TEST(Viewer, ExitsCleanlyOnEsc) {
-  const std::string xvfb = findXvfb();
-  if (xvfb.empty()) GTEST_SKIP() << "Xvfb not installed (apt-get install xvfb)";
-  const std::string exe = std::string(HV_BINARY_DIR) + "/halfvec";
-  if (access(exe.c_str(), X_OK) != 0) GTEST_SKIP() << exe << " not built";
-  Xvfb server(xvfb);
-  ASSERT_FALSE(server.display().empty()) << "could not start Xvfb";
+TEST_F(ViewerWindow, ExitsCleanlyOnEsc) {
   const std::string scene = std::string(HV_SOURCE_DIR) + "/samples/scenes/default.json";
   const pid_t pid = fork();
   if (pid == 0) {
-    setenv("DISPLAY", server.display().c_str(), 1);
+    setenv("DISPLAY", server->display().c_str(), 1);
     std::freopen("/dev/null", "w", stdout);
     std::freopen("/dev/null", "w", stderr);
     execl(exe.c_str(), exe.c_str(), "view", scene.c_str(), "--size", "320x180", "--frames",
@@ -227,7 +223,7 @@ TEST(Viewer, ExitsCleanlyOnEsc) {
     _exit(127);
   }
   ASSERT_GT(pid, 0);
-  Display* d = XOpenDisplay(server.display().c_str());
+  Display* d = XOpenDisplay(server->display().c_str());
   ASSERT_NE(d, nullptr);
   Window win = 0;
   for (int i = 0; i < 600 && !win; ++i) {  // up to 60 s for the window
