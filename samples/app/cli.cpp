@@ -32,6 +32,11 @@ void parseSize(const std::string& v, int& w, int& h) {
   }
 }
 
+std::string optionValue(const Args& args, size_t& i) {
+  if (i + 1 >= args.size()) throw UsageError{args[i] + " needs a value"};
+  return args[++i];
+}
+
 int runCli(const std::vector<std::string>& args) {
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
     std::fputs(kHelp, stdout);

@@ -26,10 +26,7 @@ int cmdCompare(const Args& args) {
   std::string a, b, heat, json;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& s = args[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= args.size()) throw UsageError{s + " needs a value"};
-      return args[++i];
-    };
+    auto value = [&] { return optionValue(args, i); };
     if (s == "--help" || s == "-h") {
       std::fputs(kCompareHelp, stdout);
       return 0;

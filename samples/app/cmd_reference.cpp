@@ -39,10 +39,7 @@ int cmdReference(const Args& args) {
   opt.progress = true;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= args.size()) throw UsageError{a + " needs a value"};
-      return args[++i];
-    };
+    auto value = [&] { return optionValue(args, i); };
     if (a == "--help" || a == "-h") {
       std::fputs(kHelp, stdout);
       return 0;

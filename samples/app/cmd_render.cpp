@@ -55,10 +55,7 @@ RenderArgs parse(const Args& args) {
   RenderArgs r;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= args.size()) throw UsageError{a + " needs a value"};
-      return args[++i];
-    };
+    auto value = [&] { return optionValue(args, i); };
     if (a == "--size") {
       parseSize(value(), r.width, r.height);
     } else if (a == "--out") {

@@ -58,10 +58,7 @@ ViewArgs parse(const Args& args) {
   ViewArgs r;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= args.size()) throw UsageError{a + " needs a value"};
-      return args[++i];
-    };
+    auto value = [&] { return optionValue(args, i); };
     if (a == "--size") {
       parseSize(value(), r.width, r.height);
     } else if (a == "--frames") {

@@ -27,4 +27,8 @@ struct UsageError {
   std::string message;
 };
 
+// The value of option args[i]: advances i to it; throws UsageError "<option> needs a value" when
+// the option is the last argument.
+std::string optionValue(const Args& args, size_t& i);
+
 }  // namespace hv::app
