@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 
 namespace hv {
 namespace {
@@ -153,6 +154,17 @@ Mesh makeBox(const glm::vec3& h) {
   addFace(m, {0, h.y, 0}, {0, 1, 0}, {1, 0, 0}, h.x, {0, 0, 1}, h.z);
   addFace(m, {0, -h.y, 0}, {0, -1, 0}, {1, 0, 0}, h.x, {0, 0, -1}, h.z);
   return m;
+}
+
+int addMeshObject(Scene& scene, Mesh mesh, const Material& material, const glm::vec3& position) {
+  scene.materials.push_back(material);
+  mesh.material = int(scene.materials.size()) - 1;
+  scene.meshes.push_back(std::move(mesh));
+  Object o;
+  o.meshes = {int(scene.meshes.size()) - 1};
+  o.transform[3] = glm::vec4(position, 1.0f);
+  scene.objects.push_back(o);
+  return int(scene.objects.size()) - 1;
 }
 
 }  // namespace hv

@@ -20,4 +20,8 @@ Mesh makeBox(const glm::vec3& half_extents);
 // v runs along the profile by arc length.
 Mesh makeCapsule(float radius, float half_length, int segments = 48, int rings = 24);
 
+// Appends `material`, `mesh` drawn with it, and an object placing the mesh at `position`
+// (translation only); returns the object's index. For scenes built in code (tests, tools).
+int addMeshObject(Scene& scene, Mesh mesh, const Material& material, const glm::vec3& position);
+
 }  // namespace hv

@@ -193,15 +193,8 @@ void pointLightSection(Doc& doc, const Options& opt) {
   m.base_color = {0.6f, 0.5f, 0.4f};
   m.roughness = 0.35f;
   m.metallic = 0.2f;
-  s.materials.push_back(m);
-  s.meshes.push_back(makeSphere(0.8f, 48, 24));
-  s.meshes.push_back(makePlane(6.0f, 6.0f));
-  s.meshes[1].material = 0;
-  Object a, b;
-  a.meshes = {0};
-  a.transform[3] = glm::vec4(0, 0.8f, 0, 1);
-  b.meshes = {1};
-  s.objects = {a, b};
+  addMeshObject(s, makeSphere(0.8f, 48, 24), m, {0.0f, 0.8f, 0.0f});
+  addMeshObject(s, makePlane(6.0f, 6.0f), m, glm::vec3(0.0f));
   for (int k = 0; k < 3; ++k) {
     Light l;
     l.position = {1.5f * float(k - 1), 1.0f + 0.6f * float(k), 1.0f - float(k)};
@@ -630,15 +623,7 @@ Scene ambientScene(const Environment& env, const std::vector<float>& roughness) 
       m.base_color = glm::vec3(1.0f);
       m.metallic = row == 0 ? 1.0f : 0.0f;
       m.roughness = roughness[size_t(i)];
-      s.materials.push_back(m);
-      Mesh mesh = sphere;
-      mesh.material = int(s.materials.size()) - 1;
-      s.meshes.push_back(mesh);
-      Object o;
-      o.meshes = {int(s.meshes.size()) - 1};
-      o.transform[3] =
-          glm::vec4(1.0f * (float(i) - 0.5f * float(n - 1)), row == 0 ? 0.5f : -0.5f, 0.0f, 1.0f);
-      s.objects.push_back(o);
+      addMeshObject(s, sphere, m, {float(i) - 0.5f * float(n - 1), row == 0 ? 0.5f : -0.5f, 0.0f});
     }
   }
   s.environment = env;
@@ -912,10 +897,7 @@ Options parseArgs(const Args& args) {
   Options o;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= args.size()) throw UsageError{a + " needs a value"};
-      return args[++i];
-    };
+    auto value = [&] { return optionValue(args, i); };
     if (a == "--out") {
       o.out = value();
     } else if (a == "--quick") {

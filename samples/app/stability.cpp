@@ -18,7 +18,7 @@ Scene baseScene(float roughness) {
   s.camera.target = {0.0f, 0.0f, 0.0f};
   s.camera.fov_y_deg = 50.0f;
   s.environment.kind = EnvironmentKind::None;
-  s.meshes.push_back(makeSphere(1.0f, 32, 16));
+  const Mesh sphere = makeSphere(1.0f, 32, 16);
   int i = 0;
   for (float metallic : {0.0f, 1.0f}) {
     for (float base : {0.0f, 1.0f}) {
@@ -26,19 +26,10 @@ Scene baseScene(float roughness) {
       m.base_color = glm::vec3(base);
       m.metallic = metallic;
       m.roughness = roughness;
-      s.materials.push_back(m);
-      Mesh mesh = s.meshes[0];
-      mesh.material = i;
-      s.meshes.push_back(mesh);
-      Object o;
-      o.meshes = {i + 1};
-      o.transform[3] = glm::vec4((i % 2) * 2.2f - 1.1f, (i / 2) * 2.2f - 1.1f, 0.0f, 1.0f);
-      s.objects.push_back(o);
+      addMeshObject(s, sphere, m, {(i % 2) * 2.2f - 1.1f, (i / 2) * 2.2f - 1.1f, 0.0f});
       ++i;
     }
   }
-  s.meshes.erase(s.meshes.begin());
-  for (auto& o : s.objects) o.meshes[0] -= 1;
   return s;
 }
 

@@ -31,16 +31,8 @@ hv::Scene tinyScene() {
   ball.base_color = glm::vec3(0.9f, 0.6f, 0.3f);
   ball.metallic = 1.0f;
   ball.roughness = 0.6f;
-  s.materials = {floor, ball};
-  s.meshes.push_back(hv::makePlane(6.0f, 6.0f));
-  s.meshes.back().material = 0;
-  s.meshes.push_back(hv::makeSphere(0.5f, 32, 16));
-  s.meshes.back().material = 1;
-  hv::Object o0, o1;
-  o0.meshes = {0};
-  o1.meshes = {1};
-  o1.transform[3] = glm::vec4(0.0f, 0.5f, 0.0f, 1.0f);
-  s.objects = {o0, o1};
+  hv::addMeshObject(s, hv::makePlane(6.0f, 6.0f), floor, glm::vec3(0.0f));
+  hv::addMeshObject(s, hv::makeSphere(0.5f, 32, 16), ball, {0.0f, 0.5f, 0.0f});
   hv::Light point;
   point.position = {1.0f, 2.0f, 1.0f};
   point.intensity = 4.0f;

@@ -403,14 +403,7 @@ TEST(AccuracyFindings, AmbientUniformEnvironment) {
       m.base_color = glm::vec3(1.0f);
       m.metallic = row == 0 ? 1.0f : 0.0f;
       m.roughness = rough[i];
-      s.materials.push_back(m);
-      Mesh mesh = sphere;
-      mesh.material = int(s.materials.size()) - 1;
-      s.meshes.push_back(mesh);
-      Object o;
-      o.meshes = {int(s.meshes.size()) - 1};
-      o.transform[3] = glm::vec4(1.0f * float(i - 1), row == 0 ? 0.5f : -0.5f, 0.0f, 1.0f);
-      s.objects.push_back(o);
+      addMeshObject(s, sphere, m, {float(i - 1), row == 0 ? 0.5f : -0.5f, 0.0f});
     }
   }
   s.environment.kind = EnvironmentKind::Uniform;

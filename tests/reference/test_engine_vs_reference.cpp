@@ -21,15 +21,8 @@ TEST(EngineVsReference, PointLightAgreesWithinPrecision) {
   m.base_color = {0.6f, 0.5f, 0.4f};
   m.roughness = 0.35f;
   m.metallic = 0.2f;
-  s.materials.push_back(m);
-  s.meshes.push_back(makeSphere(0.8f, 48, 24));
-  s.meshes.push_back(makePlane(6.0f, 6.0f));
-  s.meshes[1].material = 0;
-  Object a, b;
-  a.meshes = {0};
-  a.transform[3] = glm::vec4(0, 0.8f, 0, 1);
-  b.meshes = {1};
-  s.objects = {a, b};
+  addMeshObject(s, makeSphere(0.8f, 48, 24), m, {0.0f, 0.8f, 0.0f});
+  addMeshObject(s, makePlane(6.0f, 6.0f), m, glm::vec3(0.0f));
   Light l;
   l.position = {1.0f, 2.0f, 1.0f};
   l.intensity = 5.0f;

@@ -74,3 +74,20 @@ TEST(Primitives, Capsule) {
     return glm::normalize(p - c);
   });
 }
+
+TEST(Primitives, AddMeshObjectLinksMaterialMeshAndObject) {
+  hv::Scene s;
+  hv::Material a, b;
+  a.roughness = 0.2f;
+  b.roughness = 0.9f;
+  EXPECT_EQ(hv::addMeshObject(s, hv::makeBox(glm::vec3(1.0f)), a, glm::vec3(0.0f)), 0);
+  EXPECT_EQ(hv::addMeshObject(s, hv::makeSphere(1.0f, 8, 4), b, {1.0f, 2.0f, 3.0f}), 1);
+  ASSERT_EQ(s.materials.size(), 2u);
+  ASSERT_EQ(s.meshes.size(), 2u);
+  ASSERT_EQ(s.objects.size(), 2u);
+  EXPECT_EQ(s.objects[1].meshes, std::vector<int>{1});
+  EXPECT_EQ(s.meshes[1].material, 1);
+  EXPECT_EQ(s.materials[1].roughness, 0.9f);
+  EXPECT_EQ(s.objects[1].transform[3], glm::vec4(1.0f, 2.0f, 3.0f, 1.0f));
+  EXPECT_EQ(s.objects[1].transform[0], glm::vec4(1.0f, 0.0f, 0.0f, 0.0f));
+}
