@@ -33,6 +33,32 @@ Scene litPlane(LightType type) {
   return s;
 }
 
+// `count` lights cycling point, sphere, tube at random positions (x in +-half_xz, y in [y0, y1],
+// z in +-half_xz plus z_shift), colors with channels c uniform in [0.2, 1], range range0 +
+// range_span * c; radius and length for the types that have them.
+struct RandomLights {
+  int count = 0;
+  uint32_t seed = 1;
+  float half_xz = 4.0f, y0 = 0.05f, y1 = 1.0f, z_shift = 0.0f;
+  float intensity = 0.05f, range0 = 0.4f, range_span = 0.6f, radius = 0.03f, length = 0.2f;
+};
+
+void addRandomLights(Scene& s, const RandomLights& p) {
+  std::mt19937 rng(p.seed);
+  std::uniform_real_distribution<float> u(-p.half_xz, p.half_xz), h(p.y0, p.y1), c(0.2f, 1.0f);
+  for (int i = 0; i < p.count; ++i) {
+    Light l;
+    l.type = static_cast<LightType>(i % 3);
+    l.position = {u(rng), h(rng), u(rng) + p.z_shift};
+    l.color = {c(rng), c(rng), c(rng)};
+    l.intensity = p.intensity;
+    l.range = p.range0 + p.range_span * c(rng);
+    l.radius = l.type == LightType::Point ? 0.0f : p.radius;
+    l.length = l.type == LightType::Tube ? p.length : 0.0f;
+    s.lights.push_back(l);
+  }
+}
+
 }  // namespace
 
 // Every light type: GPU HDR = CPU evaluateLight on the read-back G-buffer, to the precision of the
@@ -84,19 +110,10 @@ TEST(LightPass, TiledEqualsBruteForceWith4096Lights) {
   Scene s = planeScene(m, 8.0f);
   s.camera.position = {0.0f, 3.0f, 4.0f};
   s.camera.up = {0.0f, 1.0f, 0.0f};
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<float> u(-4.0f, 4.0f), h(0.05f, 1.0f), c(0.2f, 1.0f);
-  for (int i = 0; i < 4096; ++i) {
-    Light l;
-    l.type = static_cast<LightType>(i % 3);
-    l.position = {u(rng), h(rng), u(rng)};
-    l.color = {c(rng), c(rng), c(rng)};
-    l.intensity = 0.05f;
-    l.range = 0.4f + 0.6f * c(rng);
-    l.radius = l.type == LightType::Point ? 0.0f : 0.03f;
-    l.length = l.type == LightType::Tube ? 0.2f : 0.0f;
-    s.lights.push_back(l);
-  }
+  RandomLights lights;
+  lights.count = 4096;
+  lights.seed = 7;
+  addRandomLights(s, lights);
   const int w = 160, h2 = 96;
   render::Renderer r;
   r.setScene(s);
@@ -148,19 +165,16 @@ TEST(LightPass, Tiled65536LightsMatchCpuSumOverAllLights) {
   Scene s = planeScene(m, 8.0f);
   s.camera.position = {0.0f, 3.0f, 4.0f};
   s.camera.up = {0.0f, 1.0f, 0.0f};
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<float> u(-4.0f, 4.0f), h(0.05f, 0.5f), c(0.2f, 1.0f);
-  for (int i = 0; i < 65536; ++i) {
-    Light l;
-    l.type = static_cast<LightType>(i % 3);
-    l.position = {u(rng), h(rng), u(rng)};
-    l.color = {c(rng), c(rng), c(rng)};
-    l.intensity = 0.002f;
-    l.range = 0.3f + 0.3f * c(rng);
-    l.radius = l.type == LightType::Point ? 0.0f : 0.02f;
-    l.length = l.type == LightType::Tube ? 0.1f : 0.0f;
-    s.lights.push_back(l);
-  }
+  RandomLights lights;
+  lights.count = 65536;
+  lights.seed = 11;
+  lights.y1 = 0.5f;
+  lights.intensity = 0.002f;
+  lights.range0 = 0.3f;
+  lights.range_span = 0.3f;
+  lights.radius = 0.02f;
+  lights.length = 0.1f;
+  addRandomLights(s, lights);
   const int w = 96, h2 = 64;
   render::Renderer r;
   r.setScene(s);
@@ -220,19 +234,16 @@ TEST(LightPass, TiledEqualsBruteForceDepthEdgesAndCameraInsideLights) {
         glm::translate(glm::mat4(1.0f), glm::vec3(-2.5f + float(i), 0.6f, 2.5f - 1.2f * float(i)));
     s.objects.push_back(o);
   }
-  std::mt19937 rng(3);
-  std::uniform_real_distribution<float> u(-6.0f, 6.0f), h(0.05f, 2.5f), c(0.2f, 1.0f);
-  for (int i = 0; i < 600; ++i) {
-    Light l;
-    l.type = static_cast<LightType>(i % 3);
-    l.position = {u(rng), h(rng), u(rng) + 1.0f};  // some behind the camera (z > 5)
-    l.color = {c(rng), c(rng), c(rng)};
-    l.intensity = 0.05f;
-    l.range = 0.3f + 1.5f * c(rng);
-    l.radius = l.type == LightType::Point ? 0.0f : 0.03f;
-    l.length = l.type == LightType::Tube ? 0.3f : 0.0f;
-    s.lights.push_back(l);
-  }
+  RandomLights lights;
+  lights.count = 600;
+  lights.seed = 3;
+  lights.half_xz = 6.0f;
+  lights.y1 = 2.5f;
+  lights.z_shift = 1.0f;  // some behind the camera (z > 5)
+  lights.range0 = 0.3f;
+  lights.range_span = 1.5f;
+  lights.length = 0.3f;
+  addRandomLights(s, lights);
   Light inside;  // the camera is inside this one's culling sphere
   inside.position = s.camera.position + glm::vec3(0.2f, -0.1f, -0.05f);
   inside.range = 3.0f;

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -227,22 +229,38 @@ TEST(Gltf, BlendWarnsOnce) {
 
 // ---- shared assets ----------------------------------------------------------------------------
 
+namespace {
+
+// Loads one glTF file of the shared assets into a fresh scene (warnings collected, not printed):
+// the SceneError's message when it is rejected, else nullopt; `meshes` gets the mesh count.
+std::optional<std::string> loadError(const fs::path& p, size_t* meshes = nullptr) {
+  hv::Scene s;
+  std::vector<std::string> w;
+  hv::GltfOptions opt;
+  opt.warnings = &w;
+  try {
+    hv::loadGltf(p.string(), glm::mat4(1.0f), s, opt);
+  } catch (const hv::SceneError& e) {
+    return std::string(e.what());
+  }
+  if (meshes) *meshes = s.meshes.size();
+  return std::nullopt;
+}
+
+}  // namespace
+
 TEST(GltfAssets, SampleModelsLoad) {
   const fs::path dir = assetsDir() / "gltf";
   if (assetsDir().empty() || !fs::is_directory(dir)) GTEST_SKIP() << "no shared assets at " << dir;
   int pass = 0, fail = 0;
   for (const fs::path& p : gltfFiles(dir)) {
-    hv::Scene s;
-    std::vector<std::string> w;
-    hv::GltfOptions opt;
-    opt.warnings = &w;
-    try {
-      hv::loadGltf(p.string(), glm::mat4(1.0f), s, opt);
-      EXPECT_FALSE(s.meshes.empty()) << p;
-      ++pass;
-    } catch (const hv::SceneError& e) {
-      ADD_FAILURE() << e.what();
+    size_t meshes = 0;
+    if (const auto err = loadError(p, &meshes)) {
+      ADD_FAILURE() << *err;
       ++fail;
+    } else {
+      EXPECT_GT(meshes, 0u) << p;
+      ++pass;
     }
   }
   std::cout << "[ gltf/ ] " << pass << " loaded, " << fail << " failed\n";
@@ -254,16 +272,11 @@ TEST(GltfAssets, AssetGeneratorPositiveLoads) {
   if (assetsDir().empty() || !fs::is_directory(dir)) GTEST_SKIP() << "no shared assets at " << dir;
   int pass = 0, fail = 0;
   for (const fs::path& p : gltfFiles(dir)) {
-    hv::Scene s;
-    std::vector<std::string> w;
-    hv::GltfOptions opt;
-    opt.warnings = &w;
-    try {
-      hv::loadGltf(p.string(), glm::mat4(1.0f), s, opt);
-      ++pass;
-    } catch (const hv::SceneError& e) {
-      ADD_FAILURE() << e.what();
+    if (const auto err = loadError(p)) {
+      ADD_FAILURE() << *err;
       ++fail;
+    } else {
+      ++pass;
     }
   }
   std::cout << "[ Positive ] " << pass << " loaded, " << fail << " failed\n";
@@ -275,17 +288,12 @@ TEST(GltfAssets, AssetGeneratorNegativeRejected) {
   if (assetsDir().empty() || !fs::is_directory(dir)) GTEST_SKIP() << "no shared assets at " << dir;
   int rejected = 0, accepted = 0;
   for (const fs::path& p : gltfFiles(dir)) {
-    hv::Scene s;
-    std::vector<std::string> w;
-    hv::GltfOptions opt;
-    opt.warnings = &w;
-    try {
-      hv::loadGltf(p.string(), glm::mat4(1.0f), s, opt);
+    if (const auto err = loadError(p)) {
+      EXPECT_NE(err->find(p.filename().string()), std::string::npos);
+      ++rejected;
+    } else {
       ADD_FAILURE() << p << " was accepted";
       ++accepted;
-    } catch (const hv::SceneError& e) {
-      EXPECT_NE(std::string(e.what()).find(p.filename().string()), std::string::npos);
-      ++rejected;
     }
   }
   std::cout << "[ Negative ] " << rejected << " rejected, " << accepted << " accepted\n";
