@@ -53,10 +53,9 @@ ratios.
 
 constexpr float kFloor = 40.0f;
 
-// -1: mixed (point, sphere, tube in turn), else that LightType.
-int g_bench_type = -1;
-
-Scene benchScene(int lights, float range, uint32_t seed) {
+// `lights` lights of range `range` above the floor; type -1: mixed (point, sphere, tube in turn),
+// else that hv::LightType for all. The same positions and colors for every call (seed 1).
+Scene benchScene(int lights, float range, int type = -1) {
   Scene s;
   s.camera.position = {0.0f, 18.0f, 22.0f};
   s.camera.target = {0.0f, 0.0f, 0.0f};
@@ -70,11 +69,11 @@ Scene benchScene(int lights, float range, uint32_t seed) {
   Object o;
   o.meshes = {0};
   s.objects.push_back(o);
-  std::mt19937 rng(seed);
+  std::mt19937 rng(1);
   std::uniform_real_distribution<float> u(-kFloor / 2, kFloor / 2), h(0.1f, 0.6f), c(0.3f, 1.0f);
   for (int i = 0; i < lights; ++i) {
     Light l;
-    l.type = static_cast<LightType>(g_bench_type < 0 ? i % 3 : g_bench_type);
+    l.type = static_cast<LightType>(type < 0 ? i % 3 : type);
     l.position = {u(rng), h(rng), u(rng)};
     l.color = {c(rng), c(rng), c(rng)};
     l.intensity = 1.0f;
@@ -89,7 +88,6 @@ Scene benchScene(int lights, float range, uint32_t seed) {
 
 struct Result {
   double cull_ms = 0, light_ms = 0;
-  double fastest_light_ms = 0;  // the fastest frame's light pass
   size_t evals = 0, lit = 0;
 };
 
@@ -126,7 +124,6 @@ struct Runner {
     Result res;
     res.cull_ms = median(cull);
     res.light_ms = median(light);
-    res.fastest_light_ms = light.empty() ? 0.0 : *std::min_element(light.begin(), light.end());
     const auto work = r.lightWork();
     res.evals = work.light_pixel_evaluations;
     res.lit = work.lit_pixels;
@@ -221,6 +218,7 @@ int cmdBench(const Args& args) {
   float only_range = 0.0f;
   bool quick = false;
   bool variants = false;
+  int types = -1;  // --types: -1 mixed, else a hv::LightType
   std::vector<std::string> shader_dirs;
   std::string scene_path;
   for (size_t i = 0; i < args.size(); ++i) {
@@ -247,9 +245,9 @@ int cmdBench(const Args& args) {
     } else if (a == "--types" && i + 1 < args.size()) {
       const std::string t = args[++i];
       if (t == "mixed") {
-        g_bench_type = -1;
+        types = -1;
       } else if (t == "point" || t == "sphere" || t == "tube") {
-        g_bench_type = t == "point" ? 0 : t == "sphere" ? 1 : 2;  // hv::LightType
+        types = t == "point" ? 0 : t == "sphere" ? 1 : 2;  // hv::LightType
       } else {
         throw UsageError{"--types expects mixed, point, sphere or tube, got '" + t + "'"};
       }
@@ -295,7 +293,7 @@ int cmdBench(const Args& args) {
     std::printf("(a) constant density (about %.0f lights per floor point)\n", density);
     header();
     const float r = only_range > 0.0f ? only_range : densityRange(only);
-    Scene s = benchScene(only, r, 1);
+    Scene s = benchScene(only, r, types);
     if (!shader_dirs.empty()) return compareShaderTrees(s, shader_dirs, w, h, frames, false);
     printRow(only, r, measure(s, w, h, frames));
     return 0;
@@ -304,34 +302,32 @@ int cmdBench(const Args& args) {
   header();
   std::vector<std::pair<int, Result>> table_a;
   for (int n : counts({64, 256, 1024, 16384})) {
-    Scene s = benchScene(n, densityRange(n), 1);
+    Scene s = benchScene(n, densityRange(n), types);
     table_a.emplace_back(n, measure(s, w, h, frames));
     printRow(n, densityRange(n), table_a.back().second);
   }
   std::printf("\n(b) fixed scene (range 2 m)\n");
   header();
   for (int n : counts({64, 1024, 16384})) {
-    Scene s = benchScene(n, 2.0f, 1);
+    Scene s = benchScene(n, 2.0f, types);
     printRow(n, 2.0f, measure(s, w, h, frames));
   }
-  if (g_bench_type < 0) {
+  if (types < 0) {
     // What one evaluation costs per type: a tube light is several times a point light.
     std::printf(
         "\n(c) one light type, 1024 lights, constant density (row (a) at 1024 is the mix)\n");
     std::printf("%8s", "type");
     header();
     for (int t = 0; t < 3; ++t) {
-      g_bench_type = t;
-      Scene st = benchScene(1024, densityRange(1024), 1);
+      Scene st = benchScene(1024, densityRange(1024), t);
       std::printf("%8s", t == 0 ? "point" : t == 1 ? "sphere" : "tube");
       printRow(1024, densityRange(1024), measure(st, w, h, frames));
     }
-    g_bench_type = -1;
   }
   std::printf("\ntiled vs brute force, 1024 lights, constant-density range\n");
   header();
   const float range = densityRange(1024);
-  Scene s = benchScene(1024, range, 1);
+  Scene s = benchScene(1024, range, types);
   const Result tiled = measure(s, w, h, frames);
   printRow(1024, range, tiled);
   s.settings.culling = Culling::BruteForce;
@@ -358,18 +354,18 @@ int cmdBench(const Args& args) {
   }
   if (max_lights >= 16384) {
     // Re-measured interleaved (see measureInterleaved): the table rows above ran minutes apart.
-    const Scene s256 = benchScene(256, densityRange(256), 1);
-    const Scene s16k = benchScene(16384, densityRange(16384), 1);
+    const Scene s256 = benchScene(256, densityRange(256), types);
+    const Scene s16k = benchScene(16384, densityRange(16384), types);
     // Judged on the median of the per-round ratios: each round renders one frame of each scene
     // back to back, so a slow stretch of the machine (other processes, the host) hits both.
     double growth = 0.0;
     const auto pair = measureInterleaved({&s256, &s16k}, w, h, std::max(frames, 15), &growth);
     check("light pass ms growth 256 -> 16384 lights, (a)*", "<= 1.5x", growth, growth <= 1.5);
     std::printf(
-        "  * median of per-round ratios over %d interleaved rounds; fastest frames: %.1f ms (256) "
-        "vs %.1f ms (16384); medians: %.1f vs %.1f ms; %.1f vs %.1f lights/px\n",
-        std::max(frames, 15), pair[0].fastest_light_ms, pair[1].fastest_light_ms, pair[0].light_ms,
-        pair[1].light_ms, pair[0].lit ? double(pair[0].evals) / double(pair[0].lit) : 0.0,
+        "  * median of per-round ratios over %d interleaved rounds; median light ms %.1f (256) vs "
+        "%.1f (16384); %.1f vs %.1f lights/px\n",
+        std::max(frames, 15), pair[0].light_ms, pair[1].light_ms,
+        pair[0].lit ? double(pair[0].evals) / double(pair[0].lit) : 0.0,
         pair[1].lit ? double(pair[1].evals) / double(pair[1].lit) : 0.0);
   } else {
     std::printf("%-52s %10s %10s  %s\n", "light pass ms growth 256 -> 16384 lights, (a)", "<= 1.5x",
