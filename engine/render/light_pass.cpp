@@ -2,6 +2,7 @@
 // (compute, per pixel).
 // In: depth, G-buffer, lights. Out: per-tile light lists; direct light added into the HDR target.
 #include <algorithm>
+#include <string>
 
 #include "render/pipeline_state.hpp"
 #include "render/renderer.hpp"
@@ -142,6 +143,9 @@ void Renderer::lightPass(const FrameBlock& frame) {
                             kTileHeaderUints + tile_capacity_ <= max_texels;
   gl::DefineSet defines = lightingDefines();
   defines.push_back({"HV_LIGHTS_TEXTURE", use_textures ? "1" : "0"});
+  if (light_probe_ != LightPassProbe::Shade) {
+    defines.push_back({"HV_LIGHT_PROBE", std::to_string(static_cast<int>(light_probe_))});
+  }
   const GLuint prog =
       programs_.get({"light", {{GL_COMPUTE_SHADER, "passes/light_shade.comp"}}, defines});
   glUseProgram(prog);

@@ -122,6 +122,14 @@ class Renderer {
   // when that bound is at most this many entries (default 32 Mi = 128 MiB), else from the GPU's
   // exact count read back mid-frame. Tests set 0 to run the read-back path.
   void setTileListBoundLimit(size_t entries) { tile_bound_limit_ = entries; }
+  // Benchmark instrument (`halfvec bench --breakdown`): what the light pass runs per light.
+  //  Shade      the real pass
+  //  FetchOnly  the same loops and light fetches, each light adding its premultiplied color
+  //             (no shading math): the cost of walking the lists and reading the lights
+  //  SetupOnly  G-buffer reads, per-pixel setup and the store, no light loop at all
+  // The two probes render wrong images by design; never left on outside a measurement.
+  enum class LightPassProbe { Shade = 0, FetchOnly = 1, SetupOnly = 2 };
+  void setLightPassProbe(LightPassProbe probe) { light_probe_ = probe; }
   // Frames so far whose culling read the list total back mid-frame (the bound was too large).
   size_t tileListReadbacks() const { return list_readbacks_; }
   // Capacity of the tile index list (entries).
@@ -183,6 +191,7 @@ class Renderer {
   void growTileList(size_t need);
   gl::Texture light_texels_, tile_index_texels_;  // buffer-texture views for the light pass
   size_t light_texel_limit_ = 0;                  // see setLightTexelLimit
+  LightPassProbe light_probe_ = LightPassProbe::Shade;
   gl::VertexArray empty_vao_;
   gl::Sampler nearest_;
   gl::Texture fallback_cube_;

@@ -31,7 +31,8 @@ Light-pass benchmark on a 40 m x 40 m floor seen from above at an angle, lights 
   (b) fixed scene: the range stays 2 m, so the work grows with N;
 the median light_cull and light pass GPU ms over N frames and light-pixel evaluations per
 second (evaluations = sum over lit pixels of the lights in the pixel's tile list), then tiled vs
-brute force at 1,024 lights, then (c) the 1,024-light row per light type, then the issue's three targets with the measured value and
+brute force at 1,024 lights, then (c) the 1,024-light row per light type, (d) where the light
+pass's time goes at 1,024 lights (see --breakdown), then the issue's three targets with the measured value and
 met/MISSED (the 256 -> 16384 growth re-measured with the two scenes' frames interleaved, so load
 from other processes hits both alike, and judged on the median of the per-round ratios). Light counts: 64, 256, 1024, 4096, 16384 (--quick: 64, 256, 1024, 16384 for (a),
 64, 1024, 16384 for (b)), up to --max-lights. --lights N: only the row of table (a) at N lights
@@ -47,6 +48,11 @@ ratios.
   --scene FILE with --shaders: that scene file instead of the bench floor (no --lights needed);
                prints every pass's fastest frame per shader tree
 
+  --breakdown  instead: table (d) alone at 1024 lights (or --lights N), per type: the light pass
+               split into per-pixel setup, walking the lists and fetching the lights, and the
+               shading arithmetic, each measured by a probe build of the pass with frames
+               interleaved (Renderer::LightPassProbe); "if only shading" is the rate the pass
+               would reach were setup and fetching free
   --variants   instead: programs specialized to the scene vs the uber build, GPU ms per pass on
                every scene of samples/scenes, as a markdown table (--quick: at most 640x360)
 )";
@@ -96,7 +102,9 @@ struct Runner {
   render::Renderer r;
   std::vector<double> cull, light;
   std::vector<std::pair<std::string, double>> fastest;  // per pass, the fastest frame's ms
-  Runner(const Scene& scene, int w, int h) {
+  Runner(const Scene& scene, int w, int h,
+         render::Renderer::LightPassProbe probe = render::Renderer::LightPassProbe::Shade) {
+    r.setLightPassProbe(probe);
     r.setScene(scene);
     r.render(w, h);  // warm up: compiles the variants
   }
@@ -206,6 +214,43 @@ int compareShaderTrees(const Scene& scene, const std::vector<std::string>& dirs,
   return 0;
 }
 
+// --breakdown (and table (d)): the light pass of one scene three times, frames interleaved: the
+// real pass, the FetchOnly probe (lists walked, lights fetched, no shading) and the SetupOnly
+// probe (no light loop); see Renderer::LightPassProbe. Differences of medians give the time of
+// per-pixel setup, of walking the lists and fetching the lights, and of the shading arithmetic;
+// "if only shading" is the evaluation rate the pass would reach were the other two free.
+struct Breakdown {
+  double full = 0, setup = 0, fetch = 0, shading = 0, rate = 0, shading_rate = 0;
+};
+Breakdown breakdown(const Scene& scene, int w, int h, int frames) {
+  using Probe = render::Renderer::LightPassProbe;
+  std::vector<std::unique_ptr<Runner>> runs;
+  for (Probe p : {Probe::Shade, Probe::FetchOnly, Probe::SetupOnly}) {
+    runs.push_back(std::make_unique<Runner>(scene, w, h, p));
+  }
+  for (int f = 0; f < frames; ++f) {
+    for (auto& run : runs) run->frame(w, h);
+  }
+  const Result full = runs[0]->result(), fetch = runs[1]->result(), setup = runs[2]->result();
+  Breakdown b;
+  b.full = full.light_ms;
+  b.setup = setup.light_ms;
+  b.fetch = fetch.light_ms - setup.light_ms;
+  b.shading = full.light_ms - fetch.light_ms;
+  b.rate = full.light_ms > 0 ? double(full.evals) / (full.light_ms * 1e-3) * 1e-6 : 0.0;
+  b.shading_rate = b.shading > 0 ? double(full.evals) / (b.shading * 1e-3) * 1e-6 : 0.0;
+  return b;
+}
+void breakdownHeader() {
+  std::printf("%8s %9s %9s %12s %11s %10s %14s\n", "type", "light ms", "setup ms", "lists+fetch",
+              "shading ms", "Mevals/s", "if only shading");
+}
+void breakdownRow(const char* type, const Breakdown& b) {
+  std::printf("%8s %9.2f %9.2f %12.2f %11.2f %10.1f %14.1f\n", type, b.full, b.setup, b.fetch,
+              b.shading, b.rate, b.shading_rate);
+  std::fflush(stdout);
+}
+
 void header() {
   std::printf("%8s %8s %10s %10s %12s %14s\n", "lights", "range m", "cull ms", "light ms",
               "lights/px", "Mevals/s");
@@ -218,6 +263,7 @@ int cmdBench(const Args& args) {
   float only_range = 0.0f;
   bool quick = false;
   bool variants = false;
+  bool show_breakdown = false;
   int types = -1;  // --types: -1 mixed, else a hv::LightType
   std::vector<std::string> shader_dirs;
   std::string scene_path;
@@ -260,6 +306,8 @@ int cmdBench(const Args& args) {
       }
     } else if (a == "--variants") {
       variants = true;
+    } else if (a == "--breakdown") {
+      show_breakdown = true;
     } else {
       throw UsageError{"unknown option '" + a + "'"};
     }
@@ -288,6 +336,26 @@ int cmdBench(const Args& args) {
     if (shader_dirs.empty()) throw UsageError{"--scene goes with --shaders"};
     Scene sc = loadScene(scene_path);
     return compareShaderTrees(sc, shader_dirs, w, h, frames, true);
+  }
+  // Table (d): where the light pass's time goes, per type (mixed first unless --types).
+  auto breakdownTable = [&](int n) {
+    std::printf(
+        "\n(d) where the light pass's time goes, %d lights, constant density (median ms of %d "
+        "interleaved frames per probe; light = setup + lists+fetch + shading)\n",
+        n, frames);
+    breakdownHeader();
+    Breakdown mixed;
+    for (int t = types < 0 ? -1 : types; t < (types < 0 ? 3 : types + 1); ++t) {
+      const Breakdown b = breakdown(benchScene(n, densityRange(n), t), w, h, frames);
+      if (t < 0) mixed = b;
+      breakdownRow(t < 0 ? "mixed" : t == 0 ? "point" : t == 1 ? "sphere" : "tube", b);
+    }
+    return mixed;
+  };
+  if (show_breakdown) {
+    if (!shader_dirs.empty()) throw UsageError{"--breakdown does not take --shaders"};
+    breakdownTable(only > 0 ? only : 1024);
+    return 0;
   }
   if (only > 0) {
     std::printf("(a) constant density (about %.0f lights per floor point)\n", density);
@@ -324,6 +392,8 @@ int cmdBench(const Args& args) {
       printRow(1024, densityRange(1024), measure(st, w, h, frames));
     }
   }
+  double shading_only_rate = 0.0;
+  if (types < 0) shading_only_rate = breakdownTable(1024).shading_rate;
   std::printf("\ntiled vs brute force, 1024 lights, constant-density range\n");
   header();
   const float range = densityRange(1024);
@@ -351,6 +421,10 @@ int cmdBench(const Args& args) {
   }
   if (!table_a.empty()) {
     check("light-pixel evals/s, M (slowest row of (a))", ">= 300", min_rate, min_rate >= 300.0);
+    if (shading_only_rate > 0.0) {
+      std::printf("  shading arithmetic alone, mixed, 1024 lights (d): %.1f M evals/s\n",
+                  shading_only_rate);
+    }
   }
   if (max_lights >= 16384) {
     // Re-measured interleaved (see measureInterleaved): the table rows above ran minutes apart.

@@ -63,6 +63,24 @@ GpuLight tileLight(uint i) { return lights[tile_indices[i]]; }
 #endif
 #endif
 
+// Benchmark probes (Renderer::LightPassProbe, `halfvec bench --breakdown`); 0 = the real pass.
+// 1: the same loops and light fetches with no shading: each light adds its premultiplied color
+// (times step(0, radius) and, for tubes, step(0, length), both 1, so that every texel the real
+// evaluation reads is read). 2: no light loop. Both render wrong images by design.
+#ifndef HV_LIGHT_PROBE
+#define HV_LIGHT_PROBE 0
+#endif
+#if HV_LIGHT_PROBE == 1
+vec3 probeLight(GpuLight l) { return l.color_inv_range.rgb * step(0.0, l.position_radius.w); }
+#define HV_EVAL_POINT(l, j) probeLight(l)
+#define HV_EVAL_SPHERE(l, j) probeLight(l)
+#define HV_EVAL_TUBE(l, j) (probeLight(l) * step(0.0, l.axis_length.w))
+#else
+#define HV_EVAL_POINT(l, j) evaluatePointLightAt(l, s[j], sp[j])
+#define HV_EVAL_SPHERE(l, j) evaluateSphereLightAt(l, s[j], sp[j])
+#define HV_EVAL_TUBE(l, j) evaluateTubeLightAt(l, s[j], sp[j])
+#endif
+
 // This invocation's tile row (may lie below the viewport in the last row of workgroups).
 uint tileRow() {
   return gl_WorkGroupID.y * HV_LIGHT_GROUP_TILES + gl_LocalInvocationID.y / HV_LIGHT_ROWS_PER_TILE;
@@ -115,30 +133,30 @@ void main() {
   // CPU implementation (llvmpipe) runs a loop body under a mask until no lane is left, so a test
   // at the top costs one extra, fully masked body per loop: one wasted evaluation of each type
   // per tile row (measured, bench --lights 1024: light pass 92.5 -> 84.2 ms, mixed types).
-#if HV_HAS_POINT_LIGHTS
+#if HV_HAS_POINT_LIGHTS && HV_LIGHT_PROBE != 2
   if (range.x < end_point) {
     uint i = range.x;
     do {
       GpuLight l = tileLight(i);
-      for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += evaluatePointLightAt(l, s[j], sp[j]);
+      for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += HV_EVAL_POINT(l, j);
     } while (++i < end_point);
   }
 #endif
-#if HV_HAS_SPHERE_LIGHTS
+#if HV_HAS_SPHERE_LIGHTS && HV_LIGHT_PROBE != 2
   if (end_point < end_sphere) {
     uint i = end_point;
     do {
       GpuLight l = tileLight(i);
-      for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += evaluateSphereLightAt(l, s[j], sp[j]);
+      for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += HV_EVAL_SPHERE(l, j);
     } while (++i < end_sphere);
   }
 #endif
-#if HV_HAS_TUBE_LIGHTS
+#if HV_HAS_TUBE_LIGHTS && HV_LIGHT_PROBE != 2
   if (end_sphere < end) {
     uint i = end_sphere;
     do {
       GpuLight l = tileLight(i);
-      for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += evaluateTubeLightAt(l, s[j], sp[j]);
+      for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += HV_EVAL_TUBE(l, j);
     } while (++i < end);
   }
 #endif

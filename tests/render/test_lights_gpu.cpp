@@ -274,3 +274,65 @@ TEST(LightPass, TiledEqualsBruteForceDepthEdgesAndCameraInsideLights) {
   }
   EXPECT_GT(mean / tiled.px.size(), 0.01) << "lights should light the scene";
 }
+
+// The benchmark probes of the light pass (Renderer::LightPassProbe, `halfvec bench --breakdown`)
+// measure what they claim: FetchOnly walks each pixel's tile list and reads its lights (every lit
+// pixel = the sum of the premultiplied colors of the lights in its tile, so a light outside the
+// view adds nothing), SetupOnly runs no light loop (the image of the scene without lights), and
+// switching back to Shade gives the real image again. Tolerance: RGBA16F, 2^-11 relative.
+TEST(LightPass, BenchmarkProbesDoWhatTheyMeasure) {
+  testContext();
+  using Probe = render::Renderer::LightPassProbe;
+  Scene s = litPlane(LightType::Point);
+  s.lights[0].color = {1.0f, 0.5f, 0.25f};
+  Light sphere = litPlane(LightType::Sphere).lights[0];
+  sphere.color = {0.25f, 1.0f, 0.5f};
+  sphere.intensity = 2.0f;
+  Light tube = litPlane(LightType::Tube).lights[0];
+  tube.color = {0.5f, 0.25f, 1.0f};
+  tube.intensity = 0.5f;
+  Light far_away = s.lights[0];
+  far_away.position = {100.0f, 0.5f, 0.0f};  // range 5: touches no visible tile
+  far_away.intensity = 50.0f;
+  s.lights.insert(s.lights.end(), {sphere, tube, far_away});
+  glm::vec3 in_view(0.0f);  // every visible pixel is within range 5 of the first three
+  for (int i = 0; i < 3; ++i) in_view += s.lights[i].color * s.lights[i].intensity;
+  const int w = 64, h = 48;
+  render::Renderer r;
+  r.setScene(s);
+  r.render(w, h);
+  const auto shaded = r.readHdr();
+
+  r.setLightPassProbe(Probe::FetchOnly);
+  r.render(w, h);
+  const auto fetched = r.readHdr();
+  for (size_t i = 0; i < fetched.px.size(); ++i) {
+    for (int k = 0; k < 3; ++k) {
+      ASSERT_NEAR(fetched.px[i][k], in_view[k], 1e-3f * in_view[k]) << "pixel " << i;
+    }
+  }
+
+  r.setLightPassProbe(Probe::SetupOnly);
+  r.render(w, h);
+  const auto setup_only = r.readHdr();
+  Scene dark = s;
+  dark.lights.clear();
+  render::Renderer rd;
+  rd.setScene(dark);
+  rd.render(w, h);
+  const auto no_lights = rd.readHdr();
+  ASSERT_EQ(setup_only.px.size(), no_lights.px.size());
+  for (size_t i = 0; i < no_lights.px.size(); ++i) {
+    ASSERT_EQ(setup_only.px[i], no_lights.px[i]) << "pixel " << i;
+  }
+
+  r.setLightPassProbe(Probe::Shade);
+  r.render(w, h);
+  const auto again = r.readHdr();
+  float lit = 0.0f;
+  for (size_t i = 0; i < shaded.px.size(); ++i) {
+    ASSERT_EQ(again.px[i], shaded.px[i]) << "pixel " << i;
+    lit += shaded.px[i].x;
+  }
+  EXPECT_GT(lit / float(shaded.px.size()), 0.01f) << "the real pass should light the plane";
+}
