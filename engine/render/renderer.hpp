@@ -127,7 +127,8 @@ class Renderer {
   //  FetchOnly  the same loops and light fetches, each light adding its premultiplied color
   //             (no shading math): the cost of walking the lists and reading the lights
   //  SetupOnly  G-buffer reads, per-pixel setup and the store, no light loop at all
-  // The two probes render wrong images by design; never left on outside a measurement.
+  // The two probes act on the tiled pass (the brute-force baseline ignores them) and render wrong
+  // images by design; never left on outside a measurement.
   enum class LightPassProbe { Shade = 0, FetchOnly = 1, SetupOnly = 2 };
   void setLightPassProbe(LightPassProbe probe) { light_probe_ = probe; }
   // Frames so far whose culling read the list total back mid-frame (the bound was too large).

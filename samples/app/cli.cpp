@@ -37,6 +37,12 @@ std::string optionValue(const Args& args, size_t& i) {
   return args[++i];
 }
 
+void takeScenePath(const std::string& arg, std::string& scene) {
+  if (!arg.empty() && arg[0] == '-') throw UsageError{"unknown option '" + arg + "'"};
+  if (!scene.empty()) throw UsageError{"more than one scene file given"};
+  scene = arg;
+}
+
 int runCli(const std::vector<std::string>& args) {
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
     std::fputs(kHelp, stdout);

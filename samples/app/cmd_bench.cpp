@@ -139,6 +139,18 @@ struct Runner {
   }
 };
 
+// Light-pixel evaluations per second, in millions, of `evals` evaluations in `ms` milliseconds.
+double mevalsPerSecond(size_t evals, double ms) {
+  return ms > 0 ? double(evals) / ms * 1e-3 : 0.0;
+}
+
+// Renders `frames` rounds of one frame of each runner in turn (A B A B ...).
+void runInterleaved(std::vector<std::unique_ptr<Runner>>& runs, int w, int h, int frames) {
+  for (int f = 0; f < frames; ++f) {
+    for (auto& run : runs) run->frame(w, h);
+  }
+}
+
 Result measure(Scene& scene, int w, int h, int frames) {
   Runner run(scene, w, h);
   for (int f = 0; f < frames; ++f) run.frame(w, h);
@@ -153,9 +165,7 @@ std::vector<Result> measureInterleaved(const std::vector<const Scene*>& scenes, 
                                        int frames, double* pair_ratio = nullptr) {
   std::vector<std::unique_ptr<Runner>> runs;
   for (const Scene* s : scenes) runs.push_back(std::make_unique<Runner>(*s, w, h));
-  for (int f = 0; f < frames; ++f) {
-    for (auto& run : runs) run->frame(w, h);
-  }
+  runInterleaved(runs, w, h, frames);
   if (pair_ratio) {
     std::vector<double> ratios;
     const auto& a = runs.front()->light;
@@ -172,9 +182,8 @@ std::vector<Result> measureInterleaved(const std::vector<const Scene*>& scenes, 
 }
 
 void printRow(int n, float range, const Result& r) {
-  const double per_s = r.light_ms > 0 ? double(r.evals) / (r.light_ms * 1e-3) : 0.0;
   std::printf("%8d %8.2f %10.3f %10.3f %12.1f %14.1f\n", n, range, r.cull_ms, r.light_ms,
-              r.lit ? double(r.evals) / double(r.lit) : 0.0, per_s * 1e-6);
+              r.lit ? double(r.evals) / double(r.lit) : 0.0, mevalsPerSecond(r.evals, r.light_ms));
   std::fflush(stdout);
 }
 
@@ -194,9 +203,7 @@ int compareShaderTrees(const Scene& scene, const std::vector<std::string>& dirs,
   } else {
     ::unsetenv("HV_SHADER_DIR");
   }
-  for (int f = 0; f < frames; ++f) {
-    for (auto& run : runs) run->frame(w, h);
-  }
+  runInterleaved(runs, w, h, frames);
   std::printf("%-32s %10s %10s %10s %10s %14s\n", "shader tree", "cull ms", "fastest", "light ms",
               "fastest", "Mevals/s (fast)");
   for (size_t i = 0; i < runs.size(); ++i) {
@@ -209,7 +216,7 @@ int compareShaderTrees(const Scene& scene, const std::vector<std::string>& dirs,
     const Result med = runs[i]->result(), fast = runs[i]->result(true);
     std::printf("%-32s %10.3f %10.3f %10.3f %10.3f %14.1f\n", dirs[i].c_str(), med.cull_ms,
                 fast.cull_ms, med.light_ms, fast.light_ms,
-                fast.light_ms > 0 ? double(fast.evals) / (fast.light_ms * 1e-3) * 1e-6 : 0.0);
+                mevalsPerSecond(fast.evals, fast.light_ms));
   }
   return 0;
 }
@@ -220,7 +227,10 @@ int compareShaderTrees(const Scene& scene, const std::vector<std::string>& dirs,
 // per-pixel setup, of walking the lists and fetching the lights, and of the shading arithmetic;
 // "if only shading" is the evaluation rate the pass would reach were the other two free.
 struct Breakdown {
-  double full = 0, setup = 0, fetch = 0, shading = 0, rate = 0, shading_rate = 0;
+  Result full, fetch_only, setup_only;  // medians of the real pass and of the two probes
+  double fetch() const { return fetch_only.light_ms - setup_only.light_ms; }
+  double shading() const { return full.light_ms - fetch_only.light_ms; }
+  double shadingOnlyRate() const { return mevalsPerSecond(full.evals, shading()); }
 };
 Breakdown breakdown(const Scene& scene, int w, int h, int frames) {
   using Probe = render::Renderer::LightPassProbe;
@@ -228,26 +238,17 @@ Breakdown breakdown(const Scene& scene, int w, int h, int frames) {
   for (Probe p : {Probe::Shade, Probe::FetchOnly, Probe::SetupOnly}) {
     runs.push_back(std::make_unique<Runner>(scene, w, h, p));
   }
-  for (int f = 0; f < frames; ++f) {
-    for (auto& run : runs) run->frame(w, h);
-  }
-  const Result full = runs[0]->result(), fetch = runs[1]->result(), setup = runs[2]->result();
-  Breakdown b;
-  b.full = full.light_ms;
-  b.setup = setup.light_ms;
-  b.fetch = fetch.light_ms - setup.light_ms;
-  b.shading = full.light_ms - fetch.light_ms;
-  b.rate = full.light_ms > 0 ? double(full.evals) / (full.light_ms * 1e-3) * 1e-6 : 0.0;
-  b.shading_rate = b.shading > 0 ? double(full.evals) / (b.shading * 1e-3) * 1e-6 : 0.0;
-  return b;
+  runInterleaved(runs, w, h, frames);
+  return {runs[0]->result(), runs[1]->result(), runs[2]->result()};
 }
 void breakdownHeader() {
   std::printf("%8s %9s %9s %12s %11s %10s %14s\n", "type", "light ms", "setup ms", "lists+fetch",
               "shading ms", "Mevals/s", "if only shading");
 }
 void breakdownRow(const char* type, const Breakdown& b) {
-  std::printf("%8s %9.2f %9.2f %12.2f %11.2f %10.1f %14.1f\n", type, b.full, b.setup, b.fetch,
-              b.shading, b.rate, b.shading_rate);
+  std::printf("%8s %9.2f %9.2f %12.2f %11.2f %10.1f %14.1f\n", type, b.full.light_ms,
+              b.setup_only.light_ms, b.fetch(), b.shading(),
+              mevalsPerSecond(b.full.evals, b.full.light_ms), b.shadingOnlyRate());
   std::fflush(stdout);
 }
 
@@ -269,27 +270,26 @@ int cmdBench(const Args& args) {
   std::string scene_path;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
+    auto value = [&] { return optionValue(args, i); };
     if (a == "--help" || a == "-h") {
       std::fputs(kHelp, stdout);
       return 0;
-    } else if (a == "--size" && i + 1 < args.size()) {
-      if (std::sscanf(args[++i].c_str(), "%dx%d", &w, &h) != 2 || w <= 0 || h <= 0) {
-        throw UsageError{"--size expects WxH"};
-      }
-    } else if (a == "--frames" && i + 1 < args.size()) {
-      frames = std::max(1, std::atoi(args[++i].c_str()));
-    } else if (a == "--max-lights" && i + 1 < args.size()) {
-      max_lights = std::atoi(args[++i].c_str());
-    } else if (a == "--lights" && i + 1 < args.size()) {
-      only = std::atoi(args[++i].c_str());
+    } else if (a == "--size") {
+      parseSize(value(), w, h);
+    } else if (a == "--frames") {
+      frames = std::max(1, std::atoi(value().c_str()));
+    } else if (a == "--max-lights") {
+      max_lights = std::atoi(value().c_str());
+    } else if (a == "--lights") {
+      only = std::atoi(value().c_str());
       if (only <= 0) throw UsageError{"--lights expects a positive count"};
-    } else if (a == "--range" && i + 1 < args.size()) {
-      only_range = static_cast<float>(std::atof(args[++i].c_str()));
+    } else if (a == "--range") {
+      only_range = static_cast<float>(std::atof(value().c_str()));
       if (!(only_range > 0.0f)) throw UsageError{"--range expects a positive length in m"};
     } else if (a == "--quick") {
       quick = true;
-    } else if (a == "--types" && i + 1 < args.size()) {
-      const std::string t = args[++i];
+    } else if (a == "--types") {
+      const std::string t = value();
       if (t == "mixed") {
         types = -1;
       } else if (t == "point" || t == "sphere" || t == "tube") {
@@ -297,10 +297,10 @@ int cmdBench(const Args& args) {
       } else {
         throw UsageError{"--types expects mixed, point, sphere or tube, got '" + t + "'"};
       }
-    } else if (a == "--scene" && i + 1 < args.size()) {
-      scene_path = args[++i];
-    } else if (a == "--shaders" && i + 1 < args.size()) {
-      std::stringstream list(args[++i]);
+    } else if (a == "--scene") {
+      scene_path = value();
+    } else if (a == "--shaders") {
+      std::stringstream list(value());
       for (std::string d; std::getline(list, d, ',');) {
         if (!d.empty()) shader_dirs.push_back(d);
       }
@@ -393,7 +393,7 @@ int cmdBench(const Args& args) {
     }
   }
   double shading_only_rate = 0.0;
-  if (types < 0) shading_only_rate = breakdownTable(1024).shading_rate;
+  if (types < 0) shading_only_rate = breakdownTable(1024).shadingOnlyRate();
   std::printf("\ntiled vs brute force, 1024 lights, constant-density range\n");
   header();
   const float range = densityRange(1024);
@@ -416,7 +416,7 @@ int cmdBench(const Args& args) {
   double min_rate = 0.0;
   for (size_t i = 0; i < table_a.size(); ++i) {
     const Result& r = table_a[i].second;
-    const double rate = r.light_ms > 0 ? double(r.evals) / (r.light_ms * 1e-3) * 1e-6 : 0.0;
+    const double rate = mevalsPerSecond(r.evals, r.light_ms);
     min_rate = i == 0 ? rate : std::min(min_rate, rate);
   }
   if (!table_a.empty()) {

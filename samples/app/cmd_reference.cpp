@@ -60,12 +60,8 @@ int cmdReference(const Args& args) {
       aov = value();
     } else if (a == "--set") {
       overrides.push_back(value());
-    } else if (!a.empty() && a[0] == '-') {
-      throw UsageError{"unknown option '" + a + "'"};
-    } else if (scene_path.empty()) {
-      scene_path = a;
     } else {
-      throw UsageError{"more than one scene file given"};
+      takeScenePath(a, scene_path);
     }
   }
   if (scene_path.empty()) throw UsageError{"no scene file given"};

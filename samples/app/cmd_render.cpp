@@ -80,12 +80,8 @@ RenderArgs parse(const Args& args) {
       auto dv = render::debugViewFromString(v);
       if (!dv) throw UsageError{"unknown --view '" + v + "'"};
       r.view = *dv;
-    } else if (!a.empty() && a[0] == '-') {
-      throw UsageError{"unknown option '" + a + "'"};
-    } else if (r.scene.empty()) {
-      r.scene = a;
     } else {
-      throw UsageError{"more than one scene file given"};
+      takeScenePath(a, r.scene);
     }
   }
   if (r.scene.empty()) throw UsageError{"no scene file given"};

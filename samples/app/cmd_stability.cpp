@@ -30,8 +30,8 @@ int cmdStability(const Args& args) {
       return 0;
     } else if (args[i] == "--small") {
       o.small = true;
-    } else if (args[i] == "--size" && i + 1 < args.size()) {
-      o.size = std::atoi(args[++i].c_str());
+    } else if (args[i] == "--size") {
+      o.size = std::atoi(optionValue(args, i).c_str());
       if (o.size < 8 || o.size > 1024) throw UsageError{"--size expects 8..1024"};
     } else {
       throw UsageError{"unknown option '" + args[i] + "'"};

@@ -75,12 +75,8 @@ ViewArgs parse(const Args& args) {
         throw UsageError{"--click expects X,Y (window pixels), got '" + v + "'"};
       }
       r.click = glm::dvec2(x, y);
-    } else if (!a.empty() && a[0] == '-') {
-      throw UsageError{"unknown option '" + a + "'"};
-    } else if (r.scene.empty()) {
-      r.scene = a;
     } else {
-      throw UsageError{"more than one scene file given"};
+      takeScenePath(a, r.scene);
     }
   }
   if (r.scene.empty()) throw UsageError{"no scene file given"};

@@ -31,4 +31,8 @@ struct UsageError {
 // the option is the last argument.
 std::string optionValue(const Args& args, size_t& i);
 
+// A positional argument of a command that takes one scene file: stores it in `scene`; throws
+// UsageError for an unknown option (a leading '-') or a second scene file.
+void takeScenePath(const std::string& arg, std::string& scene);
+
 }  // namespace hv::app
