@@ -5,5 +5,7 @@ cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 shared_assets=""
 if [ -d ../shared/assets ]; then shared_assets="-DHV_ASSETS_DIR=$(cd ../shared/assets && pwd)"; fi
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DHV_WERROR="${HV_WERROR:-ON}" $shared_assets >/dev/null
+launcher=""
+if command -v ccache >/dev/null; then launcher="-DCMAKE_CXX_COMPILER_LAUNCHER=ccache"; fi
+cmake -S . -B build -G Ninja $launcher -DCMAKE_BUILD_TYPE=Release -DHV_WERROR="${HV_WERROR:-ON}" $shared_assets >/dev/null
 cmake --build build -j"$(nproc)"

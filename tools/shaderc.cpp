@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "gl/shader_source.hpp"
+#include "halfvec/gl/shader_source.hpp"
 
 namespace fs = std::filesystem;
 

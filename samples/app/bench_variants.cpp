@@ -7,9 +7,9 @@
 #include <map>
 
 #include "app/commands.hpp"
-#include "platform/context.hpp"
-#include "render/renderer.hpp"
-#include "scene/scene_loader.hpp"
+#include "halfvec/platform/context.hpp"
+#include "halfvec/render/renderer.hpp"
+#include "halfvec/scene/scene_loader.hpp"
 
 namespace hv::app {
 

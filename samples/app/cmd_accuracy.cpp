@@ -15,15 +15,15 @@
 
 #include "app/commands.hpp"
 #include "app/engine_aov.hpp"
-#include "ibl/ibl.hpp"
-#include "ibl/ibl_math.hpp"
-#include "image/metrics.hpp"
-#include "platform/context.hpp"
-#include "reference/light_accuracy.hpp"
-#include "reference/reference.hpp"
-#include "render/renderer.hpp"
-#include "scene/primitives.hpp"
-#include "scene/scene_loader.hpp"
+#include "halfvec/ibl/ibl.hpp"
+#include "halfvec/ibl/ibl_math.hpp"
+#include "halfvec/image/metrics.hpp"
+#include "halfvec/platform/context.hpp"
+#include "halfvec/reference/light_accuracy.hpp"
+#include "halfvec/reference/reference.hpp"
+#include "halfvec/render/renderer.hpp"
+#include "halfvec/scene/primitives.hpp"
+#include "halfvec/scene/scene_loader.hpp"
 
 namespace hv::app {
 

@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "app/commands.hpp"
-#include "platform/context.hpp"
-#include "render/renderer.hpp"
-#include "scene/primitives.hpp"
-#include "scene/scene_loader.hpp"
+#include "halfvec/platform/context.hpp"
+#include "halfvec/render/renderer.hpp"
+#include "halfvec/scene/primitives.hpp"
+#include "halfvec/scene/scene_loader.hpp"
 
 namespace hv::app {
 

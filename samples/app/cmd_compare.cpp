@@ -5,8 +5,8 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
-#include "image/image.hpp"
-#include "image/metrics.hpp"
+#include "halfvec/image/image.hpp"
+#include "halfvec/image/metrics.hpp"
 
 namespace hv::app {
 

@@ -4,11 +4,11 @@
 #include <filesystem>
 
 #include "app/commands.hpp"
-#include "platform/context.hpp"
-#include "reference/reference.hpp"
-#include "render/renderer.hpp"
-#include "scene/scene_loader.hpp"
-#include "shading/shading.hpp"
+#include "halfvec/platform/context.hpp"
+#include "halfvec/reference/reference.hpp"
+#include "halfvec/render/renderer.hpp"
+#include "halfvec/scene/scene_loader.hpp"
+#include "halfvec/shading/shading.hpp"
 
 namespace hv::app {
 
@@ -74,7 +74,7 @@ int cmdReference(const Args& args) {
   render::Renderer renderer;
   renderer.setScene(scene);
   renderer.render(w, h);
-  const render::GBufferReadback g = renderer.readGBuffer();
+  const GBufferReadback g = renderer.readGBuffer();
   const ReferenceResult r = renderReference(scene, g, opt);
   std::printf("reference: %dx%d, %zu lit pixels, %llu samples, %.1f s\n", w, h, r.stats.lit_pixels,
               static_cast<unsigned long long>(r.stats.total_samples), r.stats.seconds);

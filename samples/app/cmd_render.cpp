@@ -7,12 +7,12 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
-#include "ibl/ibl.hpp"
+#include "halfvec/ibl/ibl.hpp"
 #include "app/engine_aov.hpp"
-#include "platform/context.hpp"
-#include "render/renderer.hpp"
-#include "scene/enums.hpp"
-#include "scene/scene_loader.hpp"
+#include "halfvec/platform/context.hpp"
+#include "halfvec/render/renderer.hpp"
+#include "halfvec/scene/enums.hpp"
+#include "halfvec/scene/scene_loader.hpp"
 
 namespace hv::app {
 

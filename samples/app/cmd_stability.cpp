@@ -3,7 +3,7 @@
 
 #include "app/commands.hpp"
 #include "app/stability.hpp"
-#include "platform/context.hpp"
+#include "halfvec/platform/context.hpp"
 
 namespace hv::app {
 

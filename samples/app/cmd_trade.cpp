@@ -7,10 +7,10 @@
 
 #include "app/commands.hpp"
 #include "app/trade.hpp"
-#include "image/image.hpp"
-#include "platform/context.hpp"
-#include "scene/presets.hpp"
-#include "scene/scene_loader.hpp"
+#include "halfvec/image/image.hpp"
+#include "halfvec/platform/context.hpp"
+#include "halfvec/scene/presets.hpp"
+#include "halfvec/scene/scene_loader.hpp"
 
 namespace hv::app {
 

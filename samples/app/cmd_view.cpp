@@ -1,6 +1,6 @@
 // `halfvec view`: interactive viewer. The same Renderer as `render`, drawing into the window's
 // default framebuffer, with the ImGui panels (engine/ui) on top.
-#include "gl/gl.hpp"  // before GLFW, which must not pull in GL/gl.h
+#include "halfvec/gl/gl.hpp"  // before GLFW, which must not pull in GL/gl.h
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
@@ -18,13 +18,13 @@
 
 #include "app/commands.hpp"
 #include "app/scene_reload.hpp"
-#include "gl/shader_source.hpp"
-#include "platform/context.hpp"
-#include "render/pick.hpp"
-#include "render/renderer.hpp"
-#include "scene/scene_loader.hpp"
-#include "ui/imgui_layer.hpp"
-#include "ui/panels.hpp"
+#include "halfvec/gl/shader_source.hpp"
+#include "halfvec/platform/context.hpp"
+#include "halfvec/render/pick.hpp"
+#include "halfvec/render/renderer.hpp"
+#include "halfvec/scene/scene_loader.hpp"
+#include "halfvec/ui/imgui_layer.hpp"
+#include "halfvec/ui/panels.hpp"
 
 namespace hv::app {
 

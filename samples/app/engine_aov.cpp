@@ -27,7 +27,7 @@ std::array<ImageRGBf, kReferenceAovCount> renderEngineAovs(render::Renderer& ren
   s.direct_terms = keep_direct;
   s.ambient_terms = keep_ambient;
   const ImageRGBf base = renderer.readHdr();  // emissive (+ background): in every render
-  const render::GBufferReadback g = renderer.readGBuffer();
+  const GBufferReadback g = renderer.readGBuffer();
   for (auto& img : aov) {
     for (size_t i = 0; i < img.px.size(); ++i) {
       const bool lit = g.model[i] == static_cast<uint32_t>(ShadingModel::DefaultLit);

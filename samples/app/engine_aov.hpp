@@ -5,10 +5,10 @@
 
 #include <array>
 
-#include "image/image.hpp"
-#include "reference/reference.hpp"
-#include "render/renderer.hpp"
-#include "scene/scene.hpp"
+#include "halfvec/image/image.hpp"
+#include "halfvec/reference/reference.hpp"
+#include "halfvec/render/renderer.hpp"
+#include "halfvec/scene/scene.hpp"
 
 namespace hv::app {
 

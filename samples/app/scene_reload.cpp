@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "scene/scene_loader.hpp"
+#include "halfvec/scene/scene_loader.hpp"
 
 namespace hv::app {
 

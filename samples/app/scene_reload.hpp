@@ -7,8 +7,8 @@
 #include <memory>
 #include <string>
 
-#include "render/renderer.hpp"
-#include "scene/scene.hpp"
+#include "halfvec/render/renderer.hpp"
+#include "halfvec/scene/scene.hpp"
 
 namespace hv::app {
 

@@ -2,9 +2,9 @@
 
 #include <cmath>
 
-#include "render/renderer.hpp"
-#include "scene/enums.hpp"
-#include "scene/primitives.hpp"
+#include "halfvec/render/renderer.hpp"
+#include "halfvec/scene/enums.hpp"
+#include "halfvec/scene/primitives.hpp"
 
 namespace hv::app {
 

@@ -12,11 +12,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "ibl/ibl.hpp"
-#include "image/plot.hpp"
-#include "render/renderer.hpp"
-#include "scene/enums.hpp"
-#include "scene/presets.hpp"
+#include "halfvec/ibl/ibl.hpp"
+#include "halfvec/image/plot.hpp"
+#include "halfvec/render/renderer.hpp"
+#include "halfvec/scene/enums.hpp"
+#include "halfvec/scene/presets.hpp"
 
 namespace hv::app {
 
@@ -62,8 +62,8 @@ std::string readText(const std::string& path) {
 
 // Scene content (the file's text and everything the reference reads), size, samples, seed and
 // the truth settings.
-uint64_t referenceKey(const Scene& scene, const render::GBufferReadback& gb,
-                      const RenderSettings& truth, int samples, uint64_t seed) {
+uint64_t referenceKey(const Scene& scene, const GBufferReadback& gb, const RenderSettings& truth,
+                      int samples, uint64_t seed) {
   Hasher k;
   k.text(kReferenceCacheVersion);
   k.text(readText(scene.source_path));
@@ -318,7 +318,7 @@ TradeReport runTrade(const Scene& scene, const TradeOptions& opt) {
   render::Renderer renderer;
   renderer.setScene(work);
   renderer.render(w, h);
-  const render::GBufferReadback gb = renderer.readGBuffer();
+  const GBufferReadback gb = renderer.readGBuffer();
 
   // ---- The reference of the exact configuration, cached by its inputs. ----
   rep.truth = truthSettings(scene.settings);

@@ -10,10 +10,10 @@
 #include <utility>
 #include <vector>
 
-#include "image/image.hpp"
-#include "image/metrics.hpp"
-#include "reference/reference.hpp"
-#include "scene/scene.hpp"
+#include "halfvec/image/image.hpp"
+#include "halfvec/image/metrics.hpp"
+#include "halfvec/reference/reference.hpp"
+#include "halfvec/scene/scene.hpp"
 
 namespace hv::app {
 

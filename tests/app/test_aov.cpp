@@ -8,10 +8,10 @@
 
 #include "app/cli.hpp"
 #include "app/engine_aov.hpp"
-#include "image/image.hpp"
-#include "platform/context.hpp"
-#include "render/renderer.hpp"
-#include "scene/primitives.hpp"
+#include "halfvec/image/image.hpp"
+#include "halfvec/platform/context.hpp"
+#include "halfvec/render/renderer.hpp"
+#include "halfvec/scene/primitives.hpp"
 
 namespace fs = std::filesystem;
 using namespace hv;

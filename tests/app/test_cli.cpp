@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli.hpp"
-#include "image/image.hpp"
+#include "halfvec/image/image.hpp"
 
 namespace fs = std::filesystem;
 

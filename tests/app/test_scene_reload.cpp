@@ -6,7 +6,7 @@
 #include <fstream>
 
 #include "app/scene_reload.hpp"
-#include "platform/context.hpp"
+#include "halfvec/platform/context.hpp"
 
 namespace fs = std::filesystem;
 using namespace hv;

@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "app/stability.hpp"
-#include "platform/context.hpp"
+#include "halfvec/platform/context.hpp"
 
 TEST(Stability, SmallSweepHasNoBadPixels) {
   auto ctx = hv::createHeadlessContext();

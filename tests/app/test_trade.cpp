@@ -10,10 +10,10 @@
 #include <string>
 
 #include "app/trade.hpp"
-#include "image/image.hpp"
-#include "platform/context.hpp"
-#include "scene/presets.hpp"
-#include "scene/primitives.hpp"
+#include "halfvec/image/image.hpp"
+#include "halfvec/platform/context.hpp"
+#include "halfvec/scene/presets.hpp"
+#include "halfvec/scene/primitives.hpp"
 
 namespace fs = std::filesystem;
 

@@ -4,7 +4,7 @@
 
 #include <memory>
 
-#include "platform/context.hpp"
+#include "halfvec/platform/context.hpp"
 
 // One headless context per test binary (creating EGL contexts repeatedly is slow on llvmpipe).
 inline hv::Context& testContext() {

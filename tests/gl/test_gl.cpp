@@ -3,10 +3,10 @@
 #include <filesystem>
 #include <fstream>
 
-#include "gl/objects.hpp"
-#include "gl/program.hpp"
-#include "gl/shader_source.hpp"
-#include "gl/timer.hpp"
+#include "halfvec/gl/objects.hpp"
+#include "halfvec/gl/program.hpp"
+#include "halfvec/gl/shader_source.hpp"
+#include "halfvec/gl/timer.hpp"
 #include "gl_fixture.hpp"
 
 namespace fs = std::filesystem;
@@ -14,7 +14,7 @@ using namespace hv;
 
 namespace {
 fs::path dataDir() {
-  return fs::path(__FILE__).parent_path() / "data";
+  return fs::path(HV_SOURCE_DIR) / "tests" / "gl" / "data";
 }
 }  // namespace
 

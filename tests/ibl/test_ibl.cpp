@@ -8,8 +8,8 @@
 
 #include <unistd.h>
 
-#include "ibl/ibl.hpp"
-#include "ibl/ibl_math.hpp"
+#include "halfvec/ibl/ibl.hpp"
+#include "halfvec/ibl/ibl_math.hpp"
 #include "shared_assets.hpp"
 
 namespace fs = std::filesystem;

@@ -8,8 +8,8 @@
 
 #include <unistd.h>
 
-#include "image/image.hpp"
-#include "image/metrics.hpp"
+#include "halfvec/image/image.hpp"
+#include "halfvec/image/metrics.hpp"
 
 namespace fs = std::filesystem;
 

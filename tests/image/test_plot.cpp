@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "image/plot.hpp"
+#include "halfvec/image/plot.hpp"
 
 namespace {
 size_t countColor(const hv::ImageRGBA8& img, hv::Rgb8 c) {

@@ -5,16 +5,16 @@
 
 #include <cmath>
 
-#include "ibl/ibl.hpp"
-#include "ibl/ibl_math.hpp"
-#include "reference/emitters.hpp"
-#include "reference/env_sampling.hpp"
-#include "reference/light_accuracy.hpp"
-#include "reference/lobes.hpp"
-#include "reference/reference.hpp"
-#include "platform/context.hpp"
-#include "render/renderer.hpp"
-#include "scene/primitives.hpp"
+#include "halfvec/ibl/ibl.hpp"
+#include "halfvec/ibl/ibl_math.hpp"
+#include "halfvec/reference/emitters.hpp"
+#include "halfvec/reference/env_sampling.hpp"
+#include "halfvec/reference/light_accuracy.hpp"
+#include "halfvec/reference/lobes.hpp"
+#include "halfvec/reference/reference.hpp"
+#include "halfvec/platform/context.hpp"
+#include "halfvec/render/renderer.hpp"
+#include "halfvec/scene/primitives.hpp"
 
 using namespace hv;
 

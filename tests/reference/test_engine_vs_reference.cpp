@@ -5,10 +5,10 @@
 
 #include <memory>
 
-#include "platform/context.hpp"
-#include "reference/reference.hpp"
-#include "render/renderer.hpp"
-#include "scene/primitives.hpp"
+#include "halfvec/platform/context.hpp"
+#include "halfvec/reference/reference.hpp"
+#include "halfvec/render/renderer.hpp"
+#include "halfvec/scene/primitives.hpp"
 
 using namespace hv;
 

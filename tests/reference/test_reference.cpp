@@ -7,10 +7,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "reference/reference.hpp"
-#include "render/frame_data.hpp"
-#include "shading/brdf.hpp"
-#include "shading/shading.hpp"
+#include "halfvec/reference/reference.hpp"
+#include "halfvec/render/frame_data.hpp"
+#include "halfvec/shading/brdf.hpp"
+#include "halfvec/shading/shading.hpp"
 
 namespace {
 
@@ -30,9 +30,9 @@ hv::Scene makeScene() {
 
 // A w x h G-buffer of one material on the plane y = 0 (normal +Y) at every pixel: the depth of
 // each pixel is that of its ray's intersection with the plane.
-hv::render::GBufferReadback makeGBuffer(const hv::Scene& scene, int w, int h, glm::vec3 base,
-                                        float metallic, float roughness, float cavity) {
-  hv::render::GBufferReadback gb;
+hv::GBufferReadback makeGBuffer(const hv::Scene& scene, int w, int h, glm::vec3 base,
+                                float metallic, float roughness, float cavity) {
+  hv::GBufferReadback gb;
   gb.width = w;
   gb.height = h;
   const size_t n = size_t(w) * size_t(h);
@@ -76,7 +76,7 @@ TEST(Reference, CameraMatchesEngineFrameBlock) {
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r) EXPECT_FLOAT_EQ(a[c][r], b[c][r]);
   // The center pixel reconstructs the origin.
-  hv::render::GBufferReadback gb = makeGBuffer(scene, 1, 1, glm::vec3(1.0f), 0.0f, 0.5f, 1.0f);
+  hv::GBufferReadback gb = makeGBuffer(scene, 1, 1, glm::vec3(1.0f), 0.0f, 0.5f, 1.0f);
   glm::vec3 P = g::reconstructWorldPosition(glm::vec2(0.5f), gb.depth[0], a);
   EXPECT_NEAR(glm::length(P), 0.0f, 1e-5f);
 }
@@ -91,7 +91,7 @@ TEST(Reference, PointLightIsAnalytic) {
   l.color = {1.0f, 0.5f, 0.25f};
   l.range = 4.0f;
   scene.lights.push_back(l);
-  hv::render::GBufferReadback gb = makeGBuffer(scene, 1, 1, glm::vec3(1.0f), 0.0f, 0.5f, 0.5f);
+  hv::GBufferReadback gb = makeGBuffer(scene, 1, 1, glm::vec3(1.0f), 0.0f, 0.5f, 0.5f);
   hv::ReferenceResult r = hv::renderReference(scene, gb, fastOptions(64));
   const float falloff = (15.0f / 16.0f) * (15.0f / 16.0f) / (4.0f + 1.0f);  // Karis eq. 9
   const glm::vec3 diffuse = l.color * (10.0f * falloff * float(1.0 / kPi) * 0.5f);
@@ -124,7 +124,7 @@ TEST(Reference, SphereLightAboveHorizonMatchesPointDiffuse) {
   l.intensity = 8.0f;
   l.range = 10.0f;
   scene.lights.push_back(l);
-  hv::render::GBufferReadback gb = makeGBuffer(scene, 1, 1, glm::vec3(1.0f), 0.0f, 0.5f, 0.8f);
+  hv::GBufferReadback gb = makeGBuffer(scene, 1, 1, glm::vec3(1.0f), 0.0f, 0.5f, 0.8f);
   hv::ReferenceResult r = hv::renderReference(scene, gb, fastOptions(4096));
   const float d2 = glm::dot(l.position, l.position);
   const float cos_t = l.position.y / std::sqrt(d2);
@@ -147,7 +147,7 @@ TEST(Reference, TinyFarSphereMatchesPointLight) {
     p.intensity = 20.0f;
     p.range = 20.0f;
     scene.lights.push_back(p);
-    hv::render::GBufferReadback gb =
+    hv::GBufferReadback gb =
         makeGBuffer(scene, 1, 1, glm::vec3(0.9f, 0.6f, 0.3f), metallic, 0.5f, 1.0f);
     hv::ReferenceResult rp = hv::renderReference(scene, gb, fastOptions(16));
     scene.lights[0].type = hv::LightType::Sphere;
@@ -173,7 +173,7 @@ TEST(Reference, ShortTubeMatchesSphere) {
   l.intensity = 5.0f;
   l.range = 10.0f;
   scene.lights.push_back(l);
-  hv::render::GBufferReadback gb = makeGBuffer(scene, 1, 1, glm::vec3(0.8f), 0.0f, 0.4f, 1.0f);
+  hv::GBufferReadback gb = makeGBuffer(scene, 1, 1, glm::vec3(0.8f), 0.0f, 0.4f, 1.0f);
   hv::ReferenceResult rs = hv::renderReference(scene, gb, fastOptions(4096));
   scene.lights[0].type = hv::LightType::Tube;
   scene.lights[0].length = 1e-4f;
@@ -200,7 +200,7 @@ hv::Scene uniformEnvScene(glm::vec3 L) {
 TEST(Reference, UniformEnvironmentLambert) {
   const glm::vec3 L(0.7f, 0.5f, 0.3f);
   hv::Scene scene = uniformEnvScene(L);
-  hv::render::GBufferReadback gb = makeGBuffer(scene, 1, 1, glm::vec3(1.0f), 0.0f, 0.6f, 0.6f);
+  hv::GBufferReadback gb = makeGBuffer(scene, 1, 1, glm::vec3(1.0f), 0.0f, 0.6f, 0.6f);
   hv::ReferenceResult r = hv::renderReference(scene, gb, fastOptions(4096));
   const glm::vec3 got = r[hv::ReferenceAov::AmbientDiffuse].px[0];
   const glm::vec3 se = r.stdError(hv::ReferenceAov::AmbientDiffuse).px[0];
@@ -242,8 +242,7 @@ double specularAlbedoQuadrature(float roughness, glm::vec3 V) {
 TEST(Reference, WhiteFurnaceDirectionalAlbedo) {
   hv::Scene scene = uniformEnvScene(glm::vec3(1.0f));
   for (float roughness : {0.3f, 0.7f}) {
-    hv::render::GBufferReadback gb =
-        makeGBuffer(scene, 1, 1, glm::vec3(1.0f), 1.0f, roughness, 1.0f);
+    hv::GBufferReadback gb = makeGBuffer(scene, 1, 1, glm::vec3(1.0f), 1.0f, roughness, 1.0f);
     hv::ReferenceResult r = hv::renderReference(scene, gb, fastOptions(4096));
     const float got = r[hv::ReferenceAov::AmbientSpecular].px[0].x;
     const float se = r.stdError(hv::ReferenceAov::AmbientSpecular).px[0].x;
@@ -261,7 +260,7 @@ TEST(Reference, WhiteFurnaceDirectionalAlbedo) {
 // pixels, each its own random stream).
 TEST(Reference, StandardErrorShrinksAsInverseSqrtN) {
   hv::Scene scene = uniformEnvScene(glm::vec3(1.0f));
-  hv::render::GBufferReadback gb = makeGBuffer(scene, 5, 5, glm::vec3(0.8f), 0.0f, 0.4f, 1.0f);
+  hv::GBufferReadback gb = makeGBuffer(scene, 5, 5, glm::vec3(0.8f), 0.0f, 0.4f, 1.0f);
   auto meanSe = [&](int n) {
     hv::ReferenceResult r = hv::renderReference(scene, gb, fastOptions(n));
     double sum = 0.0;
@@ -275,7 +274,7 @@ TEST(Reference, StandardErrorShrinksAsInverseSqrtN) {
 
 TEST(Reference, DeterministicForASeedAndAnyThreadCount) {
   hv::Scene scene = uniformEnvScene(glm::vec3(1.0f, 0.8f, 0.6f));
-  hv::render::GBufferReadback gb = makeGBuffer(scene, 6, 4, glm::vec3(0.5f), 0.5f, 0.5f, 0.9f);
+  hv::GBufferReadback gb = makeGBuffer(scene, 6, 4, glm::vec3(0.5f), 0.5f, 0.5f, 0.9f);
   hv::ReferenceOptions a = fastOptions(32);
   a.threads = 1;
   hv::ReferenceOptions b = fastOptions(32);
@@ -292,7 +291,7 @@ TEST(Reference, DeterministicForASeedAndAnyThreadCount) {
 // target_rel_error stops a pixel once its relative standard error is below the target.
 TEST(Reference, StopsAtTargetRelativeError) {
   hv::Scene scene = uniformEnvScene(glm::vec3(1.0f));
-  hv::render::GBufferReadback gb = makeGBuffer(scene, 3, 3, glm::vec3(0.8f), 0.0f, 0.5f, 1.0f);
+  hv::GBufferReadback gb = makeGBuffer(scene, 3, 3, glm::vec3(0.8f), 0.0f, 0.5f, 1.0f);
   hv::ReferenceOptions o = fastOptions(1 << 16);
   o.target_rel_error = 0.01f;
   hv::ReferenceResult r = hv::renderReference(scene, gb, o);
@@ -307,7 +306,7 @@ TEST(Reference, StopsAtTargetRelativeError) {
 TEST(Reference, BackgroundIsEnvironmentRadiance) {
   hv::Scene scene = makeScene();
   scene.environment.kind = hv::EnvironmentKind::Sky;
-  hv::render::GBufferReadback gb = makeGBuffer(scene, 4, 3, glm::vec3(1.0f), 0.0f, 0.5f, 1.0f);
+  hv::GBufferReadback gb = makeGBuffer(scene, 4, 3, glm::vec3(1.0f), 0.0f, 0.5f, 1.0f);
   gb.model.assign(gb.model.size(), uint32_t(hv::ShadingModel::Background));
   gb.model[5] = uint32_t(hv::ShadingModel::Unlit);
   hv::ReferenceResult r = hv::renderReference(scene, gb, fastOptions(8));
@@ -355,7 +354,7 @@ TEST(Reference, MixedSceneIsFiniteWithConsistentStats) {
   l.length = 1.0f;
   l.radius = 0.05f;
   scene.lights.push_back(l);
-  hv::render::GBufferReadback gb = makeGBuffer(scene, 16, 12, glm::vec3(0.7f), 0.3f, 0.35f, 0.7f);
+  hv::GBufferReadback gb = makeGBuffer(scene, 16, 12, glm::vec3(0.7f), 0.3f, 0.35f, 0.7f);
   for (size_t i = 0; i < 16; ++i) gb.model[i] = uint32_t(hv::ShadingModel::Background);
   hv::ReferenceOptions o = fastOptions(32);
   o.progress = true;
@@ -370,7 +369,7 @@ TEST(Reference, MixedSceneIsFiniteWithConsistentStats) {
   EXPECT_EQ(r.stats.total_samples, 32u * r.stats.lit_pixels);
   EXPECT_GT(r.stats.max_rel_error, 0.0);
   EXPECT_LE(r.stats.mean_rel_error, r.stats.max_rel_error);
-  EXPECT_THROW(hv::renderReference(scene, hv::render::GBufferReadback{}, o), std::invalid_argument);
+  EXPECT_THROW(hv::renderReference(scene, hv::GBufferReadback{}, o), std::invalid_argument);
 }
 
 }  // namespace

@@ -8,11 +8,11 @@
 
 #include <cmath>
 
-#include "ibl/ibl.hpp"
-#include "reference/emitters.hpp"
-#include "reference/reference.hpp"
-#include "shading/brdf.hpp"
-#include "shading/shading.hpp"
+#include "halfvec/ibl/ibl.hpp"
+#include "halfvec/reference/emitters.hpp"
+#include "halfvec/reference/reference.hpp"
+#include "halfvec/shading/brdf.hpp"
+#include "halfvec/shading/shading.hpp"
 
 namespace {
 
@@ -29,8 +29,8 @@ hv::Scene skyScene(float rotation_deg) {
   return s;
 }
 
-hv::render::GBufferReadback whiteLambertAt(glm::vec3 normal, const hv::Scene& scene) {
-  hv::render::GBufferReadback gb;
+hv::GBufferReadback whiteLambertAt(glm::vec3 normal, const hv::Scene& scene) {
+  hv::GBufferReadback gb;
   gb.width = gb.height = 1;
   gb.base_color = {glm::vec3(1.0f)};
   gb.metallic = {0.0f};
@@ -158,7 +158,7 @@ TEST(ReferenceMis, GlossyHighlightOfSmallSphereMatchesQuadrature) {
   const glm::vec3 R = glm::reflect(-V, N);
   l.position = R * 2.0f + glm::vec3(0.02f, 0.0f, 0.0f);
   scene.lights = {l};
-  hv::render::GBufferReadback gb = whiteLambertAt(N, scene);
+  hv::GBufferReadback gb = whiteLambertAt(N, scene);
   gb.metallic = {1.0f};
   gb.roughness = {0.15f};
   hv::ReferenceOptions o;

@@ -4,10 +4,10 @@
 
 #include <memory>
 
-#include "platform/context.hpp"
-#include "render/renderer.hpp"
-#include "scene/primitives.hpp"
-#include "scene/scene.hpp"
+#include "halfvec/platform/context.hpp"
+#include "halfvec/render/renderer.hpp"
+#include "halfvec/scene/primitives.hpp"
+#include "halfvec/scene/scene.hpp"
 
 // One headless context per test binary.
 inline hv::Context& testContext() {

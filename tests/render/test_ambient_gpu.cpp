@@ -5,7 +5,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "ibl/ibl.hpp"
+#include "halfvec/ibl/ibl.hpp"
 #include "render_fixture.hpp"
 
 using namespace hv;
@@ -42,7 +42,7 @@ struct Pixel {
 std::vector<Pixel> spherePixels(render::Renderer& r, int size) {
   r.render(size, size);
   const ImageRGBf hdr = r.readHdr();
-  const render::GBufferReadback g = r.readGBuffer();
+  const GBufferReadback g = r.readGBuffer();
   std::vector<Pixel> out;
   const glm::vec3 cam(0.0f, 0.0f, kCamDist);
   for (size_t i = 0; i < hdr.px.size(); ++i) {

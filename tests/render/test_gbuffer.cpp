@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "render_fixture.hpp"
-#include "shading/shading.hpp"
+#include "halfvec/shading/shading.hpp"
 
 using namespace hv;
 

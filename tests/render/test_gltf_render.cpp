@@ -10,7 +10,7 @@
 #include <limits>
 
 #include "render_fixture.hpp"
-#include "scene/gltf_loader.hpp"
+#include "halfvec/scene/gltf_loader.hpp"
 #include "shared_assets.hpp"
 
 namespace fs = std::filesystem;
@@ -64,7 +64,7 @@ RenderCheck renderAndCheck(render::Renderer& r, const Scene& s, int size) {
   r.setScene(s);
   r.render(size, size);
   const ImageRGBf hdr = r.readHdr();
-  const render::GBufferReadback g = r.readGBuffer();
+  const GBufferReadback g = r.readGBuffer();
   RenderCheck c;
   for (size_t i = 0; i < hdr.px.size(); ++i) {
     for (int k = 0; k < 3; ++k) {
@@ -144,7 +144,7 @@ struct CellResult {
   int cells = 0, bad_x = 0, bad_y = 0, bad = 0;  // bad: either component the wrong way
 };
 
-CellResult domeOrientation(const render::GBufferReadback& g) {
+CellResult domeOrientation(const GBufferReadback& g) {
   const int w = g.width, h = g.height;
   std::vector<int> label(size_t(w) * size_t(h), -1);
   auto tilted = [&](size_t i) { return g.model[i] != 0 && g.normal[i].z < 0.98f; };

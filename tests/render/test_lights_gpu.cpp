@@ -6,9 +6,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render_fixture.hpp"
-#include "scene/enums.hpp"
-#include "shading/light_gpu.hpp"
-#include "shading/shading.hpp"
+#include "halfvec/scene/enums.hpp"
+#include "halfvec/shading/light_gpu.hpp"
+#include "halfvec/shading/shading.hpp"
 
 using namespace hv;
 

@@ -7,10 +7,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/frame_data.hpp"
-#include "render/pick.hpp"
+#include "halfvec/render/frame_data.hpp"
+#include "halfvec/render/pick.hpp"
 #include "render_fixture.hpp"
-#include "scene/scene_loader.hpp"
+#include "halfvec/scene/scene_loader.hpp"
 
 using namespace hv;
 
@@ -85,7 +85,7 @@ TEST(Pick, AgreesWithTheGBufferOverAFrame) {
   render::Renderer r;
   r.setScene(s);
   r.render(w, h);
-  const render::GBufferReadback g = r.readGBuffer();
+  const GBufferReadback g = r.readGBuffer();
   int agree = 0, disagree = 0, background = 0, ceiling_behind = 0;
   int per_material[4] = {};
   for (int y = 0; y < h; ++y) {

@@ -8,7 +8,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render_fixture.hpp"
-#include "shading/shading.hpp"
+#include "halfvec/shading/shading.hpp"
 
 using namespace hv;
 
@@ -95,7 +95,7 @@ TEST(TermViews, SumToTheFrameAndShowOnlyTheirTerm) {
   r.setScene(scene);
   r.render(kW, kH);
   const ImageRGBf full = r.readHdr();
-  const render::GBufferReadback g = r.readGBuffer();
+  const GBufferReadback g = r.readGBuffer();
   std::vector<ImageRGBf> term;
   for (render::DebugView v : kTerms) {
     r.render(kW, kH, v);

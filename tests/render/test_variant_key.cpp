@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <map>
 
-#include "render/variant_key.hpp"
-#include "scene/primitives.hpp"
+#include "halfvec/render/variant_key.hpp"
+#include "halfvec/scene/primitives.hpp"
 
 using namespace hv;
 using namespace hv::render;

@@ -11,7 +11,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "gl/log.hpp"
+#include "halfvec/gl/log.hpp"
 #include "render_fixture.hpp"
 
 using namespace hv;

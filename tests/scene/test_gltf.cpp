@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "scene/gltf_loader.hpp"
+#include "halfvec/scene/gltf_loader.hpp"
 #include "shared_assets.hpp"
 
 namespace fs = std::filesystem;

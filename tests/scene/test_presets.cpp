@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "scene/presets.hpp"
-#include "scene/scene_loader.hpp"
+#include "halfvec/scene/presets.hpp"
+#include "halfvec/scene/scene_loader.hpp"
 
 namespace {
 

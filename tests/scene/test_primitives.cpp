@@ -2,7 +2,7 @@
 
 #include <functional>
 
-#include "scene/primitives.hpp"
+#include "halfvec/scene/primitives.hpp"
 
 namespace {
 

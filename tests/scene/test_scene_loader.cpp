@@ -3,8 +3,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "scene/enums.hpp"
-#include "scene/scene_loader.hpp"
+#include "halfvec/scene/enums.hpp"
+#include "halfvec/scene/scene_loader.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;

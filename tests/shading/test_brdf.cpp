@@ -5,7 +5,7 @@
 #include <functional>
 #include <map>
 
-#include "shading/brdf.hpp"
+#include "halfvec/shading/brdf.hpp"
 
 namespace {
 

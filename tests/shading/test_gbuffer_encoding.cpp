@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "shading/shading.hpp"
+#include "halfvec/shading/shading.hpp"
 
 using namespace hv::glsl;
 

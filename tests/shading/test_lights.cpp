@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "shading/light_gpu.hpp"
+#include "halfvec/shading/light_gpu.hpp"
 
 namespace hv::glsl {
 namespace {

@@ -9,7 +9,7 @@
 
 // The default compilation (hv::glsl, via light_gpu.hpp) comes first; then the include guards
 // and option defines are reset and the headers are compiled again into namespace variant.
-#include "shading/light_gpu.hpp"
+#include "halfvec/shading/light_gpu.hpp"
 
 #undef HV_MATH_GLSL
 #undef HV_BRDF_GLSL
@@ -42,9 +42,9 @@ namespace variant {
 using namespace glm;
 using uint = unsigned int;
 namespace {
-#include "../../shaders/common/math.glsl"
-#include "../../shaders/common/brdf.glsl"
-#include "../../shaders/common/lights.glsl"
+#include "halfvec/shaders/common/math.glsl"
+#include "halfvec/shaders/common/brdf.glsl"
+#include "halfvec/shaders/common/lights.glsl"
 #include "light_sweep.inc"
 }  // namespace
 }  // namespace variant

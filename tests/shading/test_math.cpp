@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "shading/shading.hpp"
+#include "halfvec/shading/shading.hpp"
 
 TEST(ShadingMath, HelpersCompileAsCpp) {
   EXPECT_FLOAT_EQ(hv::glsl::saturate(2.0f), 1.0f);

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <functional>
 
-#include "shading/shading.hpp"
+#include "halfvec/shading/shading.hpp"
 
 namespace {
 

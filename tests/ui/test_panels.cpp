@@ -9,19 +9,19 @@
 #include <nlohmann/json.hpp>
 
 #include "render/render_fixture.hpp"
-#include "scene/enums.hpp"
-#include "scene/scene_loader.hpp"
-#include "ui/panels.hpp"
+#include "halfvec/scene/enums.hpp"
+#include "halfvec/scene/scene_loader.hpp"
+#include "halfvec/ui/panels.hpp"
 
 namespace {
 
 using hv::ui::LightGenerator;
 using hv::ui::MaterialPanelModel;
 
-glm::vec3 centerBaseColor(const hv::render::GBufferReadback& g) {
+glm::vec3 centerBaseColor(const hv::GBufferReadback& g) {
   return g.base_color[size_t(g.height / 2) * size_t(g.width) + size_t(g.width / 2)];
 }
-float centerRoughness(const hv::render::GBufferReadback& g) {
+float centerRoughness(const hv::GBufferReadback& g) {
   return g.roughness[size_t(g.height / 2) * size_t(g.width) + size_t(g.width / 2)];
 }
 

@@ -17,7 +17,7 @@
 #include <string>
 #include <thread>
 
-#include "image/image.hpp"
+#include "halfvec/image/image.hpp"
 
 #if HV_HAVE_XLIB
 #include <X11/Xlib.h>

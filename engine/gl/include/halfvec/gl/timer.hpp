@@ -1,0 +1,45 @@
+// GPU timing of passes with timestamp queries, and debug groups so a pass has a name in
+// RenderDoc/apitrace. Results are read after the frame (waiting for the GPU).
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "halfvec/gl/objects.hpp"
+
+namespace hv::gl {
+
+class PassTimer {
+ public:
+  void begin(const std::string& pass);
+  void end();
+  // Waits for the queries of this frame; returns (pass, GPU ms) in submission order and resets.
+  std::vector<std::pair<std::string, double>> resolve();
+
+ private:
+  struct Entry {
+    std::string name;
+    Query start, stop;
+  };
+  std::vector<Entry> entries_;
+  std::vector<Query> pool_;
+  Query take();
+};
+
+// RAII scope for one pass: debug group + timing.
+class ScopedPass {
+ public:
+  ScopedPass(PassTimer& timer, const std::string& name);
+  ~ScopedPass();
+  ScopedPass(const ScopedPass&) = delete;
+  ScopedPass& operator=(const ScopedPass&) = delete;
+
+ private:
+  PassTimer& timer_;
+};
+
+// Routes KHR_debug messages to hv::log (needs a debug context for full output).
+void installDebugOutput();
+
+}  // namespace hv::gl

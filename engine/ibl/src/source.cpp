@@ -1,0 +1,245 @@
+// Environment sources: Radiance .hdr files, the procedural sky, a uniform color; -> cube map.
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+#include <glm/gtc/constants.hpp>
+
+#include <stb/stb_image.h>  // libstb.so carries the implementation
+
+#include "halfvec/ibl/ibl.hpp"
+#include "halfvec/core/parallel.hpp"
+
+namespace hv {
+namespace {
+
+constexpr float kPi = glm::pi<float>();
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+  throw IblError("HDR '" + path + "': " + what);
+}
+
+// Walks every scanline of an RGBE raster (new-style RLE or flat) and fails if the file ends
+// early, so truncated files are rejected instead of decoding to black (stb_image reads zeros
+// past the end).
+void checkRgbeScanlines(const std::string& path, const std::vector<uint8_t>& b, size_t pos, int w,
+                        int h) {
+  for (int y = 0; y < h; ++y) {
+    const auto truncated = [&] {
+      fail(path, "truncated (data ends in scanline " + std::to_string(y) + " of " +
+                     std::to_string(h) + ")");
+    };
+    if (pos + 4 > b.size()) truncated();
+    const bool rle = w >= 8 && w < 32768 && b[pos] == 2 && b[pos + 1] == 2 && !(b[pos + 2] & 0x80);
+    if (!rle) {  // flat scanline: w pixels of 4 bytes
+      if (b.size() - pos < size_t(w) * 4) truncated();
+      pos += size_t(w) * 4;
+      continue;
+    }
+    if (((int(b[pos + 2]) << 8) | b[pos + 3]) != w)
+      fail(path, "corrupt scanline " + std::to_string(y) + " (RLE length mismatch)");
+    pos += 4;
+    for (int c = 0; c < 4; ++c) {
+      int x = 0;
+      while (x < w) {
+        if (pos >= b.size()) truncated();
+        int count = b[pos++];
+        if (count > 128) {  // run of count - 128 copies of the next byte
+          count -= 128;
+          if (pos >= b.size()) truncated();
+          ++pos;
+        } else {  // count literal bytes
+          if (b.size() - pos < size_t(count)) truncated();
+          pos += size_t(count);
+        }
+        if (count == 0 || x + count > w)
+          fail(path, "corrupt scanline " + std::to_string(y) + " (bad RLE run)");
+        x += count;
+      }
+    }
+  }
+}
+
+float luminance(glm::vec3 c) {
+  return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+}
+
+}  // namespace
+
+ImageRGBf loadHdr(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) fail(path, "cannot open (missing file?)");
+  std::vector<uint8_t> b((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  size_t pos = 0;
+  auto line = [&]() -> std::string {
+    std::string s;
+    while (pos < b.size() && b[pos] != '\n' && s.size() < 4096) s.push_back(char(b[pos++]));
+    if (pos >= b.size()) fail(path, "truncated header");
+    ++pos;
+    return s;
+  };
+  if (b.size() < 2 || b[0] != '#' || b[1] != '?')
+    fail(path, "not a Radiance RGBE file (missing '#?RADIANCE' / '#?RGBE' signature)");
+  const std::string magic = line();
+  if (magic != "#?RADIANCE" && magic != "#?RGBE")
+    fail(path, "not a Radiance RGBE file (signature '" + magic.substr(0, 32) + "')");
+  bool format_ok = false;
+  for (std::string l = line(); !l.empty(); l = line()) {
+    if (l.rfind("FORMAT=", 0) == 0) {
+      if (l != "FORMAT=32-bit_rle_rgbe")
+        fail(path, "unsupported " + l + " (only FORMAT=32-bit_rle_rgbe)");
+      format_ok = true;
+    }
+  }
+  if (!format_ok) fail(path, "bad header (no FORMAT=32-bit_rle_rgbe line)");
+  const std::string res = line();
+  int h = 0, w = 0;
+  char tail = 0;
+  if (std::sscanf(res.c_str(), "-Y %d +X %d%c", &h, &w, &tail) != 2)
+    fail(path, "unsupported resolution line '" + res.substr(0, 64) + "' (need '-Y H +X W')");
+  if (w <= 0 || h <= 0 || w > 65536 || h > 65536)
+    fail(path, "bad dimensions " + std::to_string(w) + "x" + std::to_string(h));
+  if (w != 2 * h)
+    fail(path, "not equirectangular (" + std::to_string(w) + "x" + std::to_string(h) +
+                   ", need a 2:1 aspect)");
+  checkRgbeScanlines(path, b, pos, w, h);
+
+  int sw = 0, sh = 0, n = 0;
+  float* data = stbi_loadf_from_memory(b.data(), int(b.size()), &sw, &sh, &n, 3);
+  if (!data) {
+    const char* why = stbi_failure_reason();
+    fail(path, std::string("decode failed (") + (why ? why : "unknown") + ")");
+  }
+  ImageRGBf img = makeImageRGBf(sw, sh);
+  std::memcpy(img.px.data(), data, img.px.size() * sizeof(glm::vec3));
+  stbi_image_free(data);
+  if (sw != w || sh != h) fail(path, "decoded size differs from header");
+  return img;
+}
+
+glm::vec2 equirectUV(glm::vec3 d) {
+  d = glm::normalize(d);
+  return {std::atan2(d.x, -d.z) / (2.0f * kPi) + 0.5f,
+          std::acos(std::clamp(d.y, -1.0f, 1.0f)) / kPi};
+}
+
+glm::vec3 equirectDirection(glm::vec2 uv) {
+  const float phi = (uv.x - 0.5f) * 2.0f * kPi, theta = uv.y * kPi;
+  return {std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi)};
+}
+
+glm::vec3 skySunDirection(const SkyParams& s) {
+  const float el = glm::radians(s.sun_elevation_deg), az = glm::radians(s.sun_azimuth_deg);
+  return {std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)};
+}
+
+namespace {
+// The dome: horizon -> zenith blend by a (1 - cos theta)^4 weight on the horizon, i.e. a bright
+// band near the horizon.
+glm::vec3 skyDome(const SkyParams& s, float mu) {
+  const float t = std::pow(1.0f - std::clamp(mu, 0.0f, 1.0f), 4.0f);
+  return glm::mix(s.zenith, s.horizon, t);
+}
+}  // namespace
+
+// E_sky = int L cos over the upper hemisphere = 2 pi int_0^1 L(mu) mu dmu, by a 64-step midpoint
+// rule (exact enough for a smooth quartic blend).
+float skyDomeIlluminance(const SkyParams& s) {
+  float e = 0.0f;
+  for (int i = 0; i < 64; ++i) {
+    const float mu = (float(i) + 0.5f) / 64.0f;
+    e += luminance(skyDome(s, mu)) * mu / 64.0f;
+  }
+  return 2.0f * kPi * e;
+}
+
+glm::vec3 skyRadiance(const SkyParams& s, glm::vec3 dir) {
+  return skyRadiance(s, dir, skyDomeIlluminance(s));
+}
+
+glm::vec3 skyRadiance(const SkyParams& s, glm::vec3 dir, float e_sky) {
+  dir = glm::normalize(dir);
+  auto dome = [&](float mu) { return skyDome(s, mu); };
+  const glm::vec3 sun_dir = skySunDirection(s);
+  const float cos_r = std::cos(glm::radians(s.sun_angular_radius_deg));
+  const float sun_omega = 2.0f * kPi * (1.0f - cos_r);
+  const bool in_sun = glm::dot(dir, sun_dir) >= cos_r;
+  if (!in_sun && dir.y >= 0.0f) return dome(dir.y);
+  const float e_sun = s.sun_to_sky * e_sky;  // normal illuminance of the sun
+  const glm::vec3 sun_chroma = s.sun_color / std::max(luminance(s.sun_color), 1e-6f);
+  if (in_sun) return sun_chroma * (e_sun / sun_omega);
+  // Ground: Lambertian, lit by the sky dome (its horizontal illuminance, colored like its mean)
+  // and the sun at its elevation.
+  const glm::vec3 sky_mean = 0.5f * (s.zenith + s.horizon);
+  const glm::vec3 e = sky_mean / std::max(luminance(sky_mean), 1e-6f) * e_sky +
+                      sun_chroma * e_sun * std::max(sun_dir.y, 0.0f);
+  return s.ground_albedo / kPi * e;
+}
+
+glm::vec3 EnvSource::radiance(glm::vec3 dir) const {
+  // Rotating the environment by +theta about +Y = looking up the unrotated one at -theta.
+  const float a = glm::radians(rotation_deg), c = std::cos(a), s = std::sin(a);
+  const glm::vec3 d(c * dir.x - s * dir.z, dir.y, s * dir.x + c * dir.z);
+  switch (kind) {
+    case EnvironmentKind::Uniform:
+      return color * intensity;
+    case EnvironmentKind::Sky:
+      // A source built by hand (not makeEnvSource) has no cached dome illuminance yet.
+      return skyRadiance(sky, d,
+                         sky_illuminance > 0.0f ? sky_illuminance : skyDomeIlluminance(sky)) *
+             intensity;
+    case EnvironmentKind::HdrFile: {
+      const glm::vec2 uv = equirectUV(d);
+      const int w = equirect.width, h = equirect.height;
+      const float fx = uv.x * float(w) - 0.5f, fy = uv.y * float(h) - 0.5f;
+      const float flx = std::floor(fx), fly = std::floor(fy);
+      const float tx = fx - flx, ty = fy - fly;
+      const int x0 = ((int(flx) % w) + w) % w, x1 = (x0 + 1) % w;  // wraps in longitude
+      const int y0 = std::clamp(int(fly), 0, h - 1), y1 = std::clamp(int(fly) + 1, 0, h - 1);
+      const glm::vec3 top = glm::mix(equirect.at(x0, y0), equirect.at(x1, y0), tx);
+      const glm::vec3 bot = glm::mix(equirect.at(x0, y1), equirect.at(x1, y1), tx);
+      return glm::mix(top, bot, ty) * intensity;
+    }
+    case EnvironmentKind::None:
+      break;
+  }
+  return glm::vec3(0.0f);
+}
+
+EnvSource makeEnvSource(const Environment& env, const SkyParams& sky) {
+  EnvSource src;
+  src.kind = env.kind;
+  src.color = env.color;
+  src.sky = sky;
+  src.sky_illuminance = skyDomeIlluminance(sky);
+  src.intensity = env.intensity;
+  src.rotation_deg = env.rotation_deg;
+  if (env.kind == EnvironmentKind::None)
+    throw IblError("environment kind None has nothing to bake");
+  if (env.kind == EnvironmentKind::HdrFile) src.equirect = loadHdr(env.path);
+  return src;
+}
+
+CubeMapF envToCube(const EnvSource& src, int size, int supersample, int threads) {
+  if (size <= 0) throw IblError("envToCube: cube size " + std::to_string(size) + " <= 0");
+  CubeMapF cube = makeCubeMap(size, 1);
+  const int ss = std::max(supersample, 1);
+  detail::parallelFor(6 * size, threads, [&](int row) {
+    const int face = row / size, y = row % size;
+    for (int x = 0; x < size; ++x) {
+      glm::vec3 sum(0.0f);
+      for (int j = 0; j < ss; ++j)
+        for (int i = 0; i < ss; ++i) {
+          const float u = (float(x) + (float(i) + 0.5f) / float(ss)) / float(size);
+          const float v = (float(y) + (float(j) + 0.5f) / float(ss)) / float(size);
+          sum += src.radiance(cubeDirection(face, u, v));
+        }
+      cube.at(0, face, x, y) = sum / float(ss * ss);
+    }
+  });
+  return cube;
+}
+
+}  // namespace hv

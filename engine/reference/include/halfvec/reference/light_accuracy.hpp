@@ -1,0 +1,105 @@
+// Accuracy of the engine's sphere and tube lights, per shading configuration, on the CPU: the
+// engine's own formula (shaders/common/lights.glsl compiled as C++ with the option under test,
+// one term at a time) against the exact integral over the emitter of docs/lights.md (Monte Carlo:
+// the reference renderer's emitter sampling combined with GGX visible-normal sampling by multiple
+// importance sampling). Both with the physical falloff (falloff_plus_one = false) and the default
+// BRDF terms. Used by `halfvec accuracy` (docs/accuracy.md) and tests/reference.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "halfvec/scene/scene.hpp"
+
+namespace hv {
+
+enum class LightTerm { Diffuse, Specular };
+
+// The light options of RenderSettings that change the engine's sphere/tube formulas.
+struct EngineLightOptions {
+  SphereDiffuse sphere_diffuse = SphereDiffuse::KarisPoint;
+  bool sphere_normalization = true;
+  TubeSpecular tube_specular = TubeSpecular::ClosestPointEq19;
+  bool tube_normalization = true;
+};
+
+// The engine's outgoing radiance toward V (unit, from P) from `light` for one term only
+// (HV_DIRECT_TERMS = 1 or 2), with HV_FALLOFF_PLUS_ONE = 0 and cavity 1: glsl::evaluateLight
+// compiled with the options of `o` (engine_lights.cpp).
+glm::vec3 engineLightTerm(const EngineLightOptions& o, LightTerm term, const Light& light,
+                          const glm::vec3& P, const glm::vec3& N, const glm::vec3& V,
+                          const glm::vec3& base_color, float metallic, float roughness);
+
+// Monte Carlo value of the exact direct light of a sphere or tube light (the emitter of
+// docs/lights.md with the physical falloff) at P, split into diffuse and specular, each with its
+// standard error. `samples` pairs of directions: one from the emitter (reference_detail::
+// sampleLight), one GGX-VNDF direction traced against the emitter; specular combines both by the
+// balance heuristic, diffuse uses the emitter's samples only.
+struct LightIntegral {
+  glm::dvec3 diffuse{0.0}, specular{0.0};
+  glm::dvec3 diffuse_se{0.0}, specular_se{0.0};
+};
+// The surface is given by its diffuse color and f0 directly (the sweep integrates a white
+// diffuse and a white specular lobe, f0 = 1, at once); roughness as makeSurface clamps it.
+LightIntegral integrateLight(const Light& light, const glm::vec3& P, const glm::vec3& N,
+                             const glm::vec3& V, const glm::vec3& diffuse_color,
+                             const glm::vec3& f0, float roughness, int samples, uint64_t seed);
+
+// Error of one term of one engine variant over a set of views of one configuration. Values are
+// the red channel (lights and surfaces are white). With E_v the engine, R_v the reference:
+//   rel_error = sum_v |E_v - R_v| / sum_v R_v,   bias = sum_v (E_v - R_v) / sum_v R_v (> 0: too
+//   bright), peak = E_0 / R_0 at the first view (the mirror direction of the light center),
+//   noise = sqrt(sum_v se_v^2) / sum_v R_v (the reference's relative standard error of the sum).
+// valid = false when sum_v R_v = 0 (a light entirely below the horizon); engine_sum then says
+// whether the engine leaks light there.
+struct TermError {
+  bool valid = false;
+  double rel_error = 0.0, bias = 0.0, peak = 0.0, noise = 0.0;
+  double engine_sum = 0.0, reference_sum = 0.0;
+};
+TermError termError(const std::vector<double>& engine, const std::vector<double>& reference,
+                    const std::vector<double>& reference_se);
+
+// Views of a configuration: the mirror direction of `light_dir` about N = +z (elevation clamped to
+// >= 2 degrees), rings of 8 views at 1 and 2 `footprint` (radians) around it, and 8 fixed views
+// (elevations 30 and 60 degrees, 4 azimuths); views within 1 degree of the horizon are dropped.
+std::vector<glm::vec3> sweepViews(const glm::vec3& light_dir, float footprint);
+
+// ---- Sphere light sweep: roughness x radius/distance x elevation of the center ----
+struct SphereSweepGrid {
+  std::vector<float> roughness{0.05f, 0.1f, 0.2f, 0.35f, 0.5f, 0.75f, 1.0f};
+  std::vector<float> radius{0.01f, 0.05f, 0.1f, 0.25f, 0.5f, 1.0f};  // distance to center = 1
+  std::vector<float> elevation_deg{90.0f, 45.0f, 15.0f, 5.0f, 0.0f, -5.0f};
+  int samples = 2048;
+  uint64_t seed = 1;
+  int threads = 0;
+};
+struct SphereSweepRow {
+  float roughness = 0.0f, radius = 0.0f, elevation_deg = 0.0f;
+  TermError diffuse[2];   // [SphereDiffuse]: KarisPoint, HorizonCorrect
+  TermError specular[2];  // [sphere_normalization]: without, with (alpha/alpha')^2
+};
+std::vector<SphereSweepRow> sweepSphere(const SphereSweepGrid& grid);
+
+// ---- Tube light sweep: roughness x length x radius (center at distance 1, elevation 45 degrees,
+// axis parallel to the surface, once across and once along the plane of incidence; the views of
+// both orientations are summed into one error) ----
+struct TubeSweepGrid {
+  std::vector<float> roughness{0.05f, 0.1f, 0.2f, 0.35f, 0.5f, 0.75f, 1.0f};
+  std::vector<float> length{0.25f, 0.5f, 1.0f, 2.0f};
+  std::vector<float> radius{0.01f, 0.05f, 0.2f};
+  float elevation_deg = 45.0f;
+  int samples = 2048;
+  uint64_t seed = 1;
+  int threads = 0;
+};
+struct TubeSweepRow {
+  float roughness = 0.0f, length = 0.0f, radius = 0.0f;
+  TermError diffuse;         // Karis eq. 16 (no option)
+  TermError specular[2][2];  // [TubeSpecular: eq. 19, eq. 18][tube_normalization: without, with]
+};
+std::vector<TubeSweepRow> sweepTube(const TubeSweepGrid& grid);
+
+}  // namespace hv

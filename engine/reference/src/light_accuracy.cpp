@@ -1,0 +1,282 @@
+#include "halfvec/reference/light_accuracy.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "halfvec/core/parallel.hpp"
+#include "halfvec/reference/emitters.hpp"
+#include "halfvec/reference/moments.hpp"
+#include "halfvec/reference/lobes.hpp"
+#include "halfvec/shading/brdf.hpp"
+#include "halfvec/shading/shading.hpp"
+
+namespace hv {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+using reference_detail::Moments;
+
+// The GGX alpha the engine shades with (roughness clamped as makeSurface does), for sizing the
+// view rings around the lobe.
+float lobeAlpha(float roughness) {
+  const float r = std::max(roughness, glsl::HV_MIN_ROUGHNESS);
+  return r * r;
+}
+
+RenderSettings physicalSettings() {
+  RenderSettings s;
+  s.falloff_plus_one = false;
+  return s;
+}
+
+glm::vec3 dirFromElevation(float elevation_rad, float azimuth_rad) {
+  return {std::cos(elevation_rad) * std::cos(azimuth_rad),
+          std::cos(elevation_rad) * std::sin(azimuth_rad), std::sin(elevation_rad)};
+}
+
+Light whiteLight(LightType type) {
+  Light l;
+  l.type = type;
+  l.color = glm::vec3(1.0f);
+  l.intensity = 1.0f;
+  l.range = 1.0e4f;  // window = 1 - 1e-16 at the distances swept: no window effect
+  return l;
+}
+
+// Engine and reference values (red channel) of one light over the views, per term and variant.
+struct ViewValues {
+  std::vector<double> ref_d, ref_d_se, ref_s, ref_s_se;
+};
+
+ViewValues referenceAtViews(const Light& light, const std::vector<glm::vec3>& views,
+                            float roughness, int samples, uint64_t seed) {
+  ViewValues v;
+  const glm::vec3 P(0.0f), N(0.0f, 0.0f, 1.0f);
+  for (size_t i = 0; i < views.size(); ++i) {
+    const LightIntegral r = integrateLight(light, P, N, views[i], glm::vec3(1.0f), glm::vec3(1.0f),
+                                           roughness, samples, seed + i);
+    v.ref_d.push_back(r.diffuse.x);
+    v.ref_d_se.push_back(r.diffuse_se.x);
+    v.ref_s.push_back(r.specular.x);
+    v.ref_s_se.push_back(r.specular_se.x);
+  }
+  return v;
+}
+
+std::vector<double> engineAtViews(const EngineLightOptions& o, LightTerm term, const Light& light,
+                                  const std::vector<glm::vec3>& views, float roughness) {
+  const glm::vec3 P(0.0f), N(0.0f, 0.0f, 1.0f);
+  // White diffuse (metallic 0) for the diffuse term, white specular (metallic 1, f0 = 1) for the
+  // specular term: the surface the reference integrates.
+  const float metallic = term == LightTerm::Diffuse ? 0.0f : 1.0f;
+  std::vector<double> e;
+  for (const glm::vec3& V : views) {
+    e.push_back(engineLightTerm(o, term, light, P, N, V, glm::vec3(1.0f), metallic, roughness).x);
+  }
+  return e;
+}
+
+}  // namespace
+
+LightIntegral integrateLight(const Light& light, const glm::vec3& P, const glm::vec3& N,
+                             const glm::vec3& V, const glm::vec3& diffuse_color,
+                             const glm::vec3& f0, float roughness, int samples, uint64_t seed) {
+  using namespace reference_detail;
+  const RenderSettings settings = physicalSettings();
+  const BrdfConfig brdf = BrdfConfig::fromSettings(settings);
+  glsl::Surface s = glsl::makeSurface(N, glm::vec3(1.0f), 0.0f, roughness, 1.0f);
+  s.diffuse_color = diffuse_color;
+  s.f0 = f0;
+  glm::vec3 T, B;
+  glsl::tangentFrame(N, T, B);
+  const glm::vec3 Vt(glm::dot(V, T), glm::dot(V, B), glm::dot(V, N));
+  const glm::vec3 Vs = glm::normalize(glm::vec3(Vt.x, Vt.y, std::max(Vt.z, 1e-4f)));
+  // Solid-angle pdf of the reflected GGX-VNDF direction lt (tangent space).
+  auto pdf_vndf = [&](const glm::vec3& lt) {
+    const glm::vec3 h = glsl::safeNormalize(Vs + lt);
+    const float VoH = glm::dot(Vs, h);
+    return VoH > 0.0f ? glsl::pdfGGXVNDF(Vs, h, s.alpha) / (4.0f * VoH) : 0.0f;
+  };
+  const glm::vec3 Le = emitterRadianceAt(light, settings, P);
+  Rng rng(seed, 0x5EEDull);
+  Moments md, ms;
+  const int n = std::max(samples, 2);
+  for (int i = 0; i < n; ++i) {
+    glm::dvec3 xd(0.0), xs(0.0);
+    // Strategy 1: the reference's emitter sampling (diffuse alone; specular with MIS).
+    const LightSample ls = sampleLight(light, settings, P, glm::vec2(rng.uniform(), rng.uniform()));
+    if (ls.pdf > 0.0f) {
+      const float NoL = glsl::saturate(glm::dot(N, ls.L));
+      if (NoL > 0.0f) {
+        const Lobes f = brdfLobes(brdf, s, V, ls.L, true);
+        const glm::vec3 lt(glm::dot(ls.L, T), glm::dot(ls.L, B), NoL);
+        xd += glm::dvec3(f.diffuse * ls.radiance) * double(NoL / ls.pdf);
+        xs += glm::dvec3(f.specular * ls.radiance) * double(NoL / (ls.pdf + pdf_vndf(lt)));
+      }
+    }
+    // Strategy 2: a GGX visible-normal direction, traced against the emitter (specular, MIS).
+    const glm::vec3 Ht = glsl::sampleGGXVNDF(Vs, s.alpha, glm::vec2(rng.uniform(), rng.uniform()));
+    const glm::vec3 lt = glm::reflect(-Vs, Ht);
+    if (lt.z > 0.0f) {
+      const glm::vec3 L = glm::normalize(T * lt.x + B * lt.y + N * lt.z);
+      const float p_light = lightPdf(light, P, L);
+      const float p_vndf = pdf_vndf(lt);
+      if (p_light > 0.0f && p_vndf > 0.0f) {
+        const Lobes f = brdfLobes(brdf, s, V, L, true);
+        xs += glm::dvec3(f.specular * Le) * double(lt.z / (p_light + p_vndf));
+      }
+    }
+    md.add(xd);
+    ms.add(xs);
+  }
+  LightIntegral r;
+  r.diffuse = md.mean(n);
+  r.diffuse_se = md.stdError(n);
+  r.specular = ms.mean(n);
+  r.specular_se = ms.stdError(n);
+  return r;
+}
+
+TermError termError(const std::vector<double>& engine, const std::vector<double>& reference,
+                    const std::vector<double>& reference_se) {
+  TermError t;
+  double abs_sum = 0.0, signed_sum = 0.0, var = 0.0;
+  for (size_t i = 0; i < engine.size(); ++i) {
+    t.engine_sum += engine[i];
+    t.reference_sum += reference[i];
+    abs_sum += std::abs(engine[i] - reference[i]);
+    signed_sum += engine[i] - reference[i];
+    var += reference_se[i] * reference_se[i];
+  }
+  t.valid = t.reference_sum > 1e-12;
+  if (!t.valid) return t;
+  t.rel_error = abs_sum / t.reference_sum;
+  t.bias = signed_sum / t.reference_sum;
+  t.noise = std::sqrt(var) / t.reference_sum;
+  t.peak = reference[0] > 0.0 ? engine[0] / reference[0] : 0.0;
+  return t;
+}
+
+std::vector<glm::vec3> sweepViews(const glm::vec3& light_dir, float footprint) {
+  const float min_el = float(2.0 * kPi / 180.0);
+  const float el = std::max(std::asin(glm::clamp(light_dir.z, -1.0f, 1.0f)), min_el);
+  const float az = std::atan2(light_dir.y, light_dir.x) + float(kPi);
+  const glm::vec3 m = dirFromElevation(el, az);
+  std::vector<glm::vec3> views{m};
+  glm::vec3 t1, t2;
+  glsl::tangentFrame(m, t1, t2);
+  const float fp = glm::clamp(footprint, 0.01f, 0.6f);
+  const float horizon = std::sin(float(kPi / 180.0));
+  for (float k : {1.0f, 2.0f}) {
+    for (int j = 0; j < 8; ++j) {
+      const float phi = float(2.0 * kPi * j / 8.0);
+      const glm::vec3 v = glm::normalize(
+          std::cos(k * fp) * m + std::sin(k * fp) * (std::cos(phi) * t1 + std::sin(phi) * t2));
+      if (v.z > horizon) views.push_back(v);
+    }
+  }
+  for (float e : {30.0f, 60.0f}) {
+    for (int j = 0; j < 4; ++j) {
+      views.push_back(dirFromElevation(float(e * kPi / 180.0), float(kPi * (0.25 + 0.5 * j))));
+    }
+  }
+  return views;
+}
+
+std::vector<SphereSweepRow> sweepSphere(const SphereSweepGrid& g) {
+  std::vector<SphereSweepRow> rows;
+  for (float r : g.roughness)
+    for (float rad : g.radius)
+      for (float el : g.elevation_deg) {
+        SphereSweepRow row;
+        row.roughness = r;
+        row.radius = rad;
+        row.elevation_deg = el;
+        rows.push_back(row);
+      }
+  detail::parallelFor(int(rows.size()), g.threads, [&](int i) {
+    SphereSweepRow& row = rows[size_t(i)];
+    Light light = whiteLight(LightType::Sphere);
+    const glm::vec3 dir = dirFromElevation(float(row.elevation_deg * kPi / 180.0), 0.0f);
+    light.position = dir;  // distance 1
+    light.radius = row.radius;
+    const float alpha = lobeAlpha(row.roughness);
+    const auto views = sweepViews(dir, 2.0f * alpha + std::asin(std::min(row.radius, 1.0f)));
+    const ViewValues ref =
+        referenceAtViews(light, views, row.roughness, g.samples, g.seed + uint64_t(i) * 1000003ull);
+    for (int sd = 0; sd < 2; ++sd) {
+      EngineLightOptions o;
+      o.sphere_diffuse = SphereDiffuse(sd);
+      row.diffuse[sd] = termError(engineAtViews(o, LightTerm::Diffuse, light, views, row.roughness),
+                                  ref.ref_d, ref.ref_d_se);
+    }
+    for (int sn = 0; sn < 2; ++sn) {
+      EngineLightOptions o;
+      o.sphere_normalization = sn == 1;
+      row.specular[sn] =
+          termError(engineAtViews(o, LightTerm::Specular, light, views, row.roughness), ref.ref_s,
+                    ref.ref_s_se);
+    }
+  });
+  return rows;
+}
+
+std::vector<TubeSweepRow> sweepTube(const TubeSweepGrid& g) {
+  std::vector<TubeSweepRow> rows;
+  for (float r : g.roughness)
+    for (float len : g.length)
+      for (float rad : g.radius) {
+        TubeSweepRow row;
+        row.roughness = r;
+        row.length = len;
+        row.radius = rad;
+        rows.push_back(row);
+      }
+  detail::parallelFor(int(rows.size()), g.threads, [&](int i) {
+    TubeSweepRow& row = rows[size_t(i)];
+    const glm::vec3 dir = dirFromElevation(float(g.elevation_deg * kPi / 180.0), 0.0f);
+    const float alpha = lobeAlpha(row.roughness);
+    // Two orientations of the horizontal axis: across (y) and along (x) the plane of incidence.
+    const glm::vec3 axes[2] = {glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(1.0f, 0.0f, 0.0f)};
+    std::vector<double> ref_d, ref_d_se, ref_s, ref_s_se;
+    std::vector<double> eng_d, eng_s[2][2];
+    for (int a = 0; a < 2; ++a) {
+      Light light = whiteLight(LightType::Tube);
+      light.position = dir;
+      light.radius = row.radius;
+      light.length = row.length;
+      light.axis = axes[a];
+      const float half_extent = std::atan(0.5f * row.length) + std::asin(row.radius);
+      const auto views = sweepViews(dir, 2.0f * alpha + half_extent);
+      const ViewValues ref =
+          referenceAtViews(light, views, row.roughness, g.samples,
+                           g.seed + uint64_t(i) * 1000003ull + uint64_t(a) * 101);
+      auto append = [](std::vector<double>& to, const std::vector<double>& from) {
+        to.insert(to.end(), from.begin(), from.end());
+      };
+      // The first view of the first orientation is the error's "peak" view.
+      append(ref_d, ref.ref_d);
+      append(ref_d_se, ref.ref_d_se);
+      append(ref_s, ref.ref_s);
+      append(ref_s_se, ref.ref_s_se);
+      append(eng_d, engineAtViews({}, LightTerm::Diffuse, light, views, row.roughness));
+      for (int ts = 0; ts < 2; ++ts) {
+        for (int tn = 0; tn < 2; ++tn) {
+          EngineLightOptions o;
+          o.tube_specular = TubeSpecular(ts);
+          o.tube_normalization = tn == 1;
+          append(eng_s[ts][tn], engineAtViews(o, LightTerm::Specular, light, views, row.roughness));
+        }
+      }
+    }
+    row.diffuse = termError(eng_d, ref_d, ref_d_se);
+    for (int ts = 0; ts < 2; ++ts)
+      for (int tn = 0; tn < 2; ++tn)
+        row.specular[ts][tn] = termError(eng_s[ts][tn], ref_s, ref_s_se);
+  });
+  return rows;
+}
+
+}  // namespace hv

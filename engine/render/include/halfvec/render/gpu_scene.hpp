@@ -1,0 +1,66 @@
+// The scene's GPU resources: one vertex/index buffer for all meshes, materials and lights in
+// storage buffers, textures with their samplers. Rebuilt when the scene changes; materials and
+// lights can be updated in place (the viewer's panels do).
+#pragma once
+
+#include <array>
+#include <map>
+#include <vector>
+
+#include "halfvec/gl/objects.hpp"
+#include "halfvec/scene/scene.hpp"
+
+namespace hv::render {
+
+struct DrawItem {
+  uint32_t first_index = 0;
+  uint32_t index_count = 0;
+  int32_t base_vertex = 0;
+  int material = 0;
+  int object = 0;
+  bool double_sided = false;
+};
+
+struct BoundTexture {
+  GLuint texture = 0;
+  GLuint sampler = 0;
+};
+
+class GpuScene {
+ public:
+  explicit GpuScene(const Scene& scene);
+  void updateMaterials(const Scene& scene);
+  void updateLights(const Scene& scene);
+
+  GLuint vertexArray() const { return vao_.id(); }
+  GLuint materialBuffer() const { return materials_.id(); }
+  GLuint lightBuffer() const { return lights_.id(); }
+  size_t lightCount() const { return light_count_; }
+  // What the GPU buffer holds, per light: world-space bounding sphere of the culling (xyz center,
+  // w lightCullRadius), for sizing the tile lists on the CPU (Renderer::cullLightsPass).
+  const std::vector<glm::vec4>& lightCullSpheres() const { return cull_spheres_; }
+  size_t triangleCount() const { return triangles_; }
+  const std::vector<DrawItem>& draws() const { return draws_; }
+  // Texture units 0..4 for a material: base color, metal-rough, normal, occlusion, emissive.
+  std::array<BoundTexture, 5> materialTextures(int material) const;
+
+ private:
+  GLuint textureFor(int image, bool srgb);
+  GLuint samplerFor(const Sampler& s);
+
+  const Scene* scene_ = nullptr;
+  gl::Buffer vertices_, indices_, materials_, lights_;
+  gl::VertexArray vao_;
+  std::vector<DrawItem> draws_;
+  size_t light_count_ = 0;
+  std::vector<glm::vec4> cull_spheres_;
+  size_t light_capacity_ = 0;
+  size_t triangles_ = 0;
+  std::map<std::pair<int, bool>, gl::Texture> textures_;
+  std::map<uint32_t, gl::Sampler> samplers_;
+  std::vector<std::array<BoundTexture, 5>> material_textures_;
+  gl::Texture white_;
+  gl::Sampler default_sampler_;
+};
+
+}  // namespace hv::render

@@ -1,0 +1,196 @@
+// The deferred renderer: G-buffer -> light culling -> light -> ambient -> tone map. It draws into
+// whatever context is current (headless EGL or a window) and never asks which.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "halfvec/gl/program.hpp"
+#include "halfvec/gl/timer.hpp"
+#include "halfvec/image/image.hpp"
+#include "halfvec/render/frame_data.hpp"
+#include "halfvec/render/gpu_scene.hpp"
+#include "halfvec/render/variant_key.hpp"
+#include "halfvec/scene/scene.hpp"
+#include "halfvec/shading/gbuffer_data.hpp"
+
+namespace hv {
+struct BakeTimings;
+}
+
+namespace hv::render {
+
+enum class DebugView : uint32_t {
+  None = 0,
+  BaseColor,
+  Metallic,
+  Roughness,
+  Cavity,
+  Normal,
+  Depth,
+  ShadingModel,
+  LightsPerTile,
+  // Per-term outputs, tone-mapped like the normal image (see TermView).
+  DirectDiffuse,
+  DirectSpecular,
+  AmbientDiffuse,
+  AmbientSpecular,
+  Emissive
+};
+constexpr size_t kDebugViewCount = size_t(DebugView::Emissive) + 1;
+std::optional<DebugView> debugViewFromString(const std::string& s);
+const char* toString(DebugView v);
+
+// What a per-term debug view renders: the frame with the term masks of RenderSettings
+// (HV_DIRECT_TERMS / HV_AMBIENT_TERMS; bit 1 diffuse, bit 2 specular) set to that one term, the
+// background left black and the G-buffer's emissive left out, so the HDR target holds exactly
+// the term as defined for the engine's AOVs (samples/app/engine_aov.hpp). The Emissive view is
+// the other way round: no light term, only the emissive. Over the pixels of lit surfaces, the
+// four light terms plus Emissive sum to the normal frame (up to half-float rounding).
+struct TermView {
+  uint8_t direct_terms = 3, ambient_terms = 3;
+  bool emissive = true;
+  bool operator==(const TermView&) const = default;
+};
+// The masks of a per-term view; nullopt for the other views.
+std::optional<TermView> termView(DebugView v);
+
+struct FrameStats {
+  std::vector<std::pair<std::string, double>> passes;  // GPU ms per pass, in order
+  double total_ms = 0.0;
+  int width = 0, height = 0;
+  size_t tile_light_entries = 0;  // sum over tiles of lights in the tile's list
+};
+
+// What was compiled for the scene and why (docs/variants.md): `render --stats` and the viewer's
+// stats panel print it.
+struct Manifest {
+  std::string key;           // VariantKey::text()
+  std::string binary_cache;  // ProgramCache::binaryCacheStatus()
+  size_t binary_hits = 0, binary_misses = 0;
+  std::vector<gl::VariantInfo> programs;  // the programs the last frame used, in compile order
+};
+
+constexpr int kGBufferBytesPerPixel = 16;  // RGBA8 + RGBA8 + RG16 + D32F (docs/gbuffer.md)
+
+class Renderer {
+ public:
+  Renderer();  // needs a current GL 4.5 context
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Uploads geometry, materials, lights and the environment. The scene must outlive the renderer
+  // or the next setScene call.
+  void setScene(const Scene& scene);
+  // Re-upload after the scene's materials or lights were edited in place.
+  void updateMaterials();
+  void updateLights();
+
+  // Renders one frame at width x height. The tone-mapped result stays in an internal RGBA8 target
+  // unless `present_fbo` is given (0 = a window's default framebuffer).
+  FrameStats render(int width, int height, DebugView view = DebugView::None,
+                    std::optional<GLuint> present_fbo = std::nullopt);
+
+  ImageRGBf readHdr() const;
+  ImageRGBA8 readLdr() const;
+  GBufferReadback readGBuffer() const;
+
+  struct LightWork {
+    size_t lit_pixels = 0;               // default_lit pixels the light pass shades
+    size_t light_pixel_evaluations = 0;  // sum over lit pixels of the lights in their list
+  };
+  // Counts the light pass's work of the last frame (reads back; for benchmarks and tests).
+  LightWork lightWork() const;
+
+  // The tiled light pass reads lights and tile lists through buffer textures when they fit in
+  // min(GL_MAX_TEXTURE_BUFFER_SIZE, this many texels; 0 = no extra cap), else through the SSBOs.
+  // Tests set a small cap to run the SSBO path.
+  void setLightTexelLimit(size_t texels) { light_texel_limit_ = texels; }
+  // The tile index list is sized from a CPU upper bound of the culling's (tile, light) pairs
+  // when that bound is at most this many entries (default 32 Mi = 128 MiB), else from the GPU's
+  // exact count read back mid-frame. Tests set 0 to run the read-back path.
+  void setTileListBoundLimit(size_t entries) { tile_bound_limit_ = entries; }
+  // Benchmark instrument (`halfvec bench --breakdown`): what the light pass runs per light.
+  //  Shade      the real pass
+  //  FetchOnly  the same loops and light fetches, each light adding its premultiplied color
+  //             (no shading math): the cost of walking the lists and reading the lights
+  //  SetupOnly  G-buffer reads, per-pixel setup and the store, no light loop at all
+  // The two probes act on the tiled pass (the brute-force baseline ignores them) and render wrong
+  // images by design; never left on outside a measurement.
+  enum class LightPassProbe { Shade = 0, FetchOnly = 1, SetupOnly = 2 };
+  void setLightPassProbe(LightPassProbe probe) { light_probe_ = probe; }
+  // Frames so far whose culling read the list total back mid-frame (the bound was too large).
+  size_t tileListReadbacks() const { return list_readbacks_; }
+  // Capacity of the tile index list (entries).
+  size_t tileListCapacity() const { return tile_capacity_; }
+
+  // Timings of the environment bake of the current scene (nullptr without an environment).
+  const BakeTimings* environmentTimings() const;
+
+  const gl::ProgramCache& programs() const { return programs_; }
+  gl::ProgramCache& programs() { return programs_; }
+  // Defines every light-culling and light program of the current scene is compiled with (from
+  // the variant key: BRDF terms, light options, light types present, culling).
+  gl::DefineSet lightingDefines() const;
+  // The scene's variant key (recomputed by setScene, updateMaterials, updateLights).
+  const VariantKey& variantKey() const { return key_; }
+  // The programs of the last rendered frame with their keys, reasons and compile times.
+  Manifest manifest() const;
+  // The program descriptions the key gives the G-buffer (one per material variant) and ambient
+  // passes; for tests that inspect the generated source.
+  const std::vector<gl::ProgramDesc>& gbufferPrograms() const { return gbuffer_descs_; }
+  const gl::ProgramDesc& ambientProgram() const { return ambient_desc_; }
+
+ private:
+  struct Targets;
+  void ensureTargets(int width, int height);
+  void setEnvironment(const Scene& scene);
+  void gbufferPass(const FrameBlock& frame);
+  void cullLightsPass(FrameBlock& frame);  // may grow the list: updates frame.counts.y
+  void lightPass(const FrameBlock& frame);
+  void ambientPass();
+  void tonemapPass(DebugView view, std::optional<GLuint> present_fbo, int width, int height);
+  void refreshVariants();  // key, program descriptions, draw order
+  // Overrides the key's term masks with those of the per-term view being rendered (none: the
+  // scene's own). refreshVariants applies it; render sets it from its view.
+  void applyTermView(VariantKey& key) const;
+  std::optional<TermView> term_view_;
+
+  VariantKey key_;
+  RenderSettings key_settings_;                 // the scene settings key_ was derived from
+  std::vector<gl::ProgramDesc> gbuffer_descs_;  // per material variant
+  gl::ProgramDesc ambient_desc_;
+  gl::DefineSet light_defines_;
+  std::vector<size_t> draw_order_;  // gpu_->draws() indices grouped by variant, then material
+
+  const Scene* scene_ = nullptr;
+  std::unique_ptr<GpuScene> gpu_;
+  std::unique_ptr<Targets> targets_;
+  gl::ProgramCache programs_;
+  gl::PassTimer timer_;
+  gl::Buffer frame_ubo_;
+  // Tiled culling (light_pass.cpp, shaders/passes/light_cull.comp). Per tile: ranges (offset,
+  // count), types (points, spheres), bounds (surface AABB), counters (per light type).
+  gl::Buffer tile_ranges_, tile_types_, tile_bounds_, tile_counters_, tile_indices_;
+  size_t tile_capacity_ = 0;       // uints in the tile index list (sized from the exact count)
+  size_t tile_buffers_tiles_ = 0;  // tiles the per-tile buffers hold
+  size_t tile_entries_ = 0;        // entries the last culling pass produced (read at frame end)
+  size_t tile_bound_limit_ = size_t(32) << 20;
+  size_t list_readbacks_ = 0;
+  void growTileList(size_t need);
+  gl::Texture light_texels_, tile_index_texels_;  // buffer-texture views for the light pass
+  size_t light_texel_limit_ = 0;                  // see setLightTexelLimit
+  LightPassProbe light_probe_ = LightPassProbe::Shade;
+  gl::VertexArray empty_vao_;
+  gl::Sampler nearest_;
+  gl::Texture fallback_cube_;
+  GLuint fallbackCube();
+  struct Environment;
+  std::unique_ptr<Environment> env_;
+};
+
+}  // namespace hv::render

@@ -1,0 +1,104 @@
+// Scene-driven shader specialization (docs/variants.md). The VariantKey says what a loaded scene
+// needs: light types, shading models, environment, the material features of each material and
+// the BRDF / approximation settings that change code. Each pass is compiled from it, so a scene
+// without tube lights contains no tube-light code and a material without a normal map no
+// normal-map code. The rules (which combinations are valid, which settings imply which code) are
+// plain functions, unit-tested in tests/render/test_variant_key.cpp. No GL here.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "halfvec/scene/scene.hpp"
+
+namespace hv::render {
+
+// What the G-buffer program of one material must contain. Each field is one define
+// (HV_MAT_<NAME>); a material whose field is off gets a program without that code.
+struct MaterialFeatures {
+  bool base_color_map = false;   // baseColorTexture
+  bool metal_rough_map = false;  // metallicRoughnessTexture
+  bool normal_map = false;       // normalTexture (needs the vertex tangent)
+  bool occlusion_map = false;    // occlusionTexture with strength != 0 (0 leaves Cavity as is)
+  bool emissive = false;         // emissive radiance != 0 (else the HDR target gets 0)
+  bool emissive_map = false;     // emissiveTexture; only with emissive (it scales the constant)
+  bool alpha_mask = false;       // alpha_mode mask: alpha test and discard
+  bool double_sided = false;     // back faces are drawn and flip the normal
+  bool uv1 = false;              // an enabled map reads TEXCOORD_1 (else only TEXCOORD_0 exists)
+
+  auto operator<=>(const MaterialFeatures&) const = default;
+  // Compact text of the enabled features, e.g. "base_color_map+normal_map"; "none" if none.
+  std::string text() const;
+};
+
+// One row of the feature table: define name, scene-format name, member.
+struct MaterialFeatureField {
+  const char* define;  // HV_MAT_NORMAL_MAP
+  const char* name;    // normal_map
+  bool MaterialFeatures::*member;
+};
+const std::array<MaterialFeatureField, 9>& materialFeatureFields();
+
+// The features a material uses, after the rules above (emissive map only with emissive,
+// occlusion map only with strength != 0, uv1 only if an enabled map reads set 1).
+MaterialFeatures materialFeatures(const Material& m);
+// Every feature on: the uber G-buffer program, which reads the material flags at run time.
+MaterialFeatures allMaterialFeatures();
+
+struct VariantKey {
+  // Light types present (count > 0); the light programs compile only these.
+  bool point_lights = false, sphere_lights = false, tube_lights = false;
+  // Shading models present among the materials drawn. Background (no geometry) is always
+  // possible, so it has no flag: the ambient pass always writes it.
+  bool unlit = false, default_lit = false;
+  EnvironmentKind environment = EnvironmentKind::None;
+  // The distinct feature sets, one G-buffer program each, and each material's index into it.
+  std::vector<MaterialFeatures> material_variants;
+  std::vector<int> material_variant;
+  // The scene's settings with those that change no code in this scene reset to their defaults
+  // (canonicalSettings), so equal code gets equal keys.
+  RenderSettings settings;
+  bool uber = false;  // every feature compiled in, chosen at run time
+
+  bool hasLights() const { return point_lights || sphere_lights || tube_lights; }
+  bool hasEnvironment() const { return environment != EnvironmentKind::None; }
+  // Whether the ambient pass contains image-based lighting of lit surfaces.
+  bool ambientIbl() const { return hasEnvironment() && (default_lit || uber); }
+  // One line, e.g. "lights point+tube; models default_lit+unlit; environment sky; 3 material
+  // variants; specialized".
+  std::string text() const;
+};
+
+// Derives the key of a loaded scene. With settings.uber every light type, shading model and
+// material feature is on (environment and BRDF settings still come from the scene).
+VariantKey deriveVariantKey(const Scene& scene);
+
+// Rules: which settings change code in a scene with these contents.
+// The roughness remap changes only visibility terms that depend on alpha (not Cook-Torrance or
+// implicit); see brdf.glsl visibility().
+bool remapMeaningful(VisibilityTerm v);
+// Settings reset to their defaults where they change no code: BRDF terms and falloff without
+// lights; sphere options without spheres; tube options without tubes; culling without lights;
+// the ambient options without ambient IBL; the remap where remapMeaningful is false.
+RenderSettings canonicalSettings(const RenderSettings& s, const VariantKey& key);
+
+// Reasons a key is invalid (empty if valid): an irradiance cubemap or other IBL option without
+// environment, sphere/tube options without those lights, a remap with a V term it cannot change,
+// an emissive map without emissive, uv1 without any map, a material index out of range...
+std::vector<std::string> validateKey(const VariantKey& key);
+
+// A define of a pass program with the reason it has this value (the manifest prints both).
+struct KeyDefine {
+  std::string name, value, why;
+};
+
+// G-buffer pass (gbuffer.vert/.frag), material variant `variant` of the key.
+std::vector<KeyDefine> gbufferDefines(const VariantKey& key, size_t variant, const Scene& scene);
+// Light culling and light passes: BRDF terms, light options, light types, culling.
+std::vector<KeyDefine> lightDefines(const VariantKey& key, const Scene& scene);
+// Ambient pass: environment presence, shading models, the IBL options.
+std::vector<KeyDefine> ambientDefines(const VariantKey& key, const Scene& scene);
+
+}  // namespace hv::render

@@ -1,0 +1,82 @@
+// G-buffer pass. In: the scene's geometry, materials, textures. Out: base color + cavity,
+// metallic/roughness/model, octahedral normal, reversed-Z depth, and emissive in the HDR target.
+// One program per material variant of the scene's VariantKey (docs/variants.md).
+#include <glm/gtc/type_ptr.hpp>
+
+#include "pipeline_state.hpp"
+#include "halfvec/render/renderer.hpp"
+#include "targets.hpp"
+
+namespace hv::render {
+
+void Renderer::gbufferPass(const FrameBlock& frame) {
+  gl::ScopedPass pass(timer_, "gbuffer");
+  Targets& t = *targets_;
+  PipelineState st;
+  st.depth_test = true;
+  st.depth_write = true;
+  st.depth_func = GL_GREATER;  // reversed Z: nearer is larger
+  st.cull_back = true;
+  st.framebuffer_srgb = true;  // base color target is sRGB-encoded on write
+  st.reversed_z_clip = true;
+  applyState(st);
+
+  glBindFramebuffer(GL_FRAMEBUFFER, t.gbuffer.id());
+  glViewport(0, 0, t.width, t.height);
+  const float zero[4] = {0, 0, 0, 0};
+  for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(t.gbuffer.id(), GL_COLOR, i, zero);
+  const float far_depth = 0.0f;  // reversed Z clears to 0 (infinity)
+  glClearNamedFramebufferfv(t.gbuffer.id(), GL_DEPTH, 0, &far_depth);
+  // Per-term debug views: the HDR target (attachment 3) keeps its clear value, 0, instead of the
+  // emissive (after the clear: the color mask also masks clears).
+  const bool no_emissive = (frame.counts.w & kFrameNoEmissive) != 0;
+  if (no_emissive) glColorMaski(3, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+
+  glBindVertexArray(gpu_->vertexArray());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, gpu_->materialBuffer());
+  int bound_material = -1;
+  int bound_variant = -1;
+  bool culling = true;
+  const auto& draws = gpu_->draws();
+  // draw_order_ groups the draws by material variant: one program switch per variant.
+  for (size_t di : draw_order_) {
+    const DrawItem& d = draws[di];
+    const int variant = key_.material_variant[size_t(d.material)];
+    if (variant != bound_variant) {
+      bound_variant = variant;
+      glUseProgram(programs_.get(gbuffer_descs_.at(size_t(variant))));
+      bound_material = -1;  // uniforms are per program
+    }
+    const glm::mat4& model = scene_->objects[d.object].transform;
+    const glm::mat4 normal_matrix = glm::transpose(glm::inverse(model));
+    glUniformMatrix4fv(0, 1, GL_FALSE, glm::value_ptr(model));
+    glUniformMatrix4fv(1, 1, GL_FALSE, glm::value_ptr(normal_matrix));
+    // A mirroring transform flips the winding: cull the other face.
+    const bool mirrored = glm::determinant(glm::mat3(model)) < 0.0f;
+    glFrontFace(mirrored ? GL_CW : GL_CCW);
+    if (d.double_sided == culling) {
+      culling = !d.double_sided;
+      culling ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
+    }
+    if (d.material != bound_material) {
+      bound_material = d.material;
+      glUniform1i(2, d.material);
+      const auto tex = gpu_->materialTextures(d.material);
+      for (GLuint u = 0; u < tex.size(); ++u) {
+        glBindTextureUnit(u, tex[u].texture);
+        glBindSampler(u, tex[u].sampler);
+      }
+    }
+    glDrawElementsBaseVertex(
+        GL_TRIANGLES, GLsizei(d.index_count), GL_UNSIGNED_INT,
+        reinterpret_cast<const void*>(size_t(d.first_index) * sizeof(uint32_t)), d.base_vertex);
+  }
+  for (GLuint u = 0; u < 5; ++u) glBindSampler(u, 0);
+  glBindVertexArray(0);
+  glUseProgram(0);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glFrontFace(GL_CCW);
+  if (no_emissive) glColorMaski(3, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+}  // namespace hv::render

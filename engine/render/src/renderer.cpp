@@ -1,0 +1,328 @@
+#include "halfvec/render/renderer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+#include "pipeline_state.hpp"
+#include "targets.hpp"
+#include "halfvec/scene/enums.hpp"
+#include "halfvec/shading/light_gpu.hpp"
+#include "halfvec/shading/shading.hpp"
+
+namespace hv::render {
+
+namespace {
+constexpr const char* kDebugViewNames[] = {"none",
+                                           "basecolor",
+                                           "metallic",
+                                           "roughness",
+                                           "cavity",
+                                           "normal",
+                                           "depth",
+                                           "shading_model",
+                                           "lights_per_tile",
+                                           "direct_diffuse",
+                                           "direct_specular",
+                                           "ambient_diffuse",
+                                           "ambient_specular",
+                                           "emissive"};
+static_assert(std::size(kDebugViewNames) == kDebugViewCount, "one name per DebugView");
+}  // namespace
+
+std::optional<DebugView> debugViewFromString(const std::string& s) {
+  for (size_t i = 0; i < std::size(kDebugViewNames); ++i) {
+    if (s == kDebugViewNames[i]) return static_cast<DebugView>(i);
+  }
+  return std::nullopt;
+}
+
+const char* toString(DebugView v) {
+  return kDebugViewNames[static_cast<size_t>(v)];
+}
+
+std::optional<TermView> termView(DebugView v) {
+  switch (v) {
+    case DebugView::DirectDiffuse:
+      return TermView{1, 0, false};
+    case DebugView::DirectSpecular:
+      return TermView{2, 0, false};
+    case DebugView::AmbientDiffuse:
+      return TermView{0, 1, false};
+    case DebugView::AmbientSpecular:
+      return TermView{0, 2, false};
+    case DebugView::Emissive:
+      return TermView{0, 0, true};
+    default:
+      return std::nullopt;
+  }
+}
+
+void Renderer::applyTermView(VariantKey& key) const {
+  if (!term_view_) return;
+  key.settings.direct_terms = term_view_->direct_terms;
+  key.settings.ambient_terms = term_view_->ambient_terms;
+}
+
+Renderer::Renderer() : targets_(std::make_unique<Targets>()) {
+  frame_ubo_ = gl::createBuffer("frame uniforms", sizeof(FrameBlock));
+  empty_vao_ = gl::createVertexArray("fullscreen triangle");
+  programs_.setBinaryCacheDir(gl::defaultProgramCacheDir());
+  nearest_ = gl::createSampler("nearest clamp");
+  glSamplerParameteri(nearest_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glSamplerParameteri(nearest_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glSamplerParameteri(nearest_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(nearest_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+Renderer::~Renderer() = default;
+
+void Renderer::setScene(const Scene& scene) {
+  scene_ = &scene;
+  gpu_ = std::make_unique<GpuScene>(scene);
+  setEnvironment(scene);
+  refreshVariants();
+}
+
+void Renderer::updateMaterials() {
+  if (gpu_) gpu_->updateMaterials(*scene_);
+  if (scene_) refreshVariants();
+}
+
+void Renderer::updateLights() {
+  if (gpu_) gpu_->updateLights(*scene_);
+  if (scene_) refreshVariants();
+}
+
+gl::DefineSet Renderer::lightingDefines() const {
+  return light_defines_;
+}
+
+namespace {
+gl::DefineSet toDefineSet(const std::vector<KeyDefine>& defs,
+                          std::map<std::string, std::string>* reasons = nullptr) {
+  gl::DefineSet d;
+  for (const KeyDefine& k : defs) {
+    d.push_back({k.name, k.value});
+    if (reasons) (*reasons)[k.name] = k.why;
+  }
+  return d;
+}
+}  // namespace
+
+void Renderer::refreshVariants() {
+  key_ = deriveVariantKey(*scene_);
+  applyTermView(key_);
+  key_settings_ = scene_->settings;
+  gbuffer_descs_.clear();
+  for (size_t v = 0; v < key_.material_variants.size(); ++v) {
+    gl::ProgramDesc d{
+        "gbuffer",
+        {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "passes/gbuffer.frag"}},
+        {}};
+    d.name = key_.uber ? "gbuffer uber" : "gbuffer " + key_.material_variants[v].text();
+    d.defines = toDefineSet(gbufferDefines(key_, v, *scene_), &d.reasons);
+    gbuffer_descs_.push_back(std::move(d));
+  }
+  ambient_desc_ = {"ambient", {{GL_COMPUTE_SHADER, "passes/ambient.comp"}}, {}};
+  ambient_desc_.defines = toDefineSet(ambientDefines(key_, *scene_), &ambient_desc_.reasons);
+  // The light passes build their own descriptions from lightingDefines(); their reasons go to
+  // the cache's table.
+  const auto light = lightDefines(key_, *scene_);
+  light_defines_ = toDefineSet(light);
+  std::map<std::string, std::pair<std::string, std::string>> reasons;
+  for (const KeyDefine& k : light) reasons[k.name] = {k.value, k.why};
+  const RenderSettings& s = scene_->settings;
+  reasons["HV_TONEMAP"] = {std::to_string(int(s.tone_map)),
+                           "settings.tone_map = " + std::string(toString(s.tone_map))};
+  reasons["HV_GAMMA"] = {std::to_string(int(s.gamma)),
+                         "settings.gamma = " + std::string(toString(s.gamma))};
+  programs_.setDefineReasons(std::move(reasons));
+  // Draws grouped by program, then by material (fewer program and texture switches).
+  const auto& draws = gpu_->draws();
+  draw_order_.resize(draws.size());
+  std::iota(draw_order_.begin(), draw_order_.end(), size_t(0));
+  std::stable_sort(draw_order_.begin(), draw_order_.end(), [&](size_t a, size_t b) {
+    const int va = key_.material_variant[size_t(draws[a].material)];
+    const int vb = key_.material_variant[size_t(draws[b].material)];
+    return va != vb ? va < vb : draws[a].material < draws[b].material;
+  });
+}
+
+Manifest Renderer::manifest() const {
+  Manifest m;
+  m.key = key_.text();
+  m.binary_cache = programs_.binaryCacheStatus();
+  m.binary_hits = programs_.binaryHits();
+  m.binary_misses = programs_.binaryMisses();
+  for (const auto& v : programs_.variants()) {
+    if (v.last_frame == programs_.frame()) m.programs.push_back(v);
+  }
+  return m;
+}
+
+void Renderer::ensureTargets(int w, int h) {
+  Targets& t = *targets_;
+  if (t.width == w && t.height == h && t.gbuffer) return;
+  t = Targets{};
+  t.width = w;
+  t.height = h;
+  t.base_cavity = gl::createTexture2D("gbuffer base color + cavity", GL_SRGB8_ALPHA8, w, h);
+  t.material = gl::createTexture2D("gbuffer metallic roughness model", GL_RGBA8, w, h);
+  t.normal = gl::createTexture2D("gbuffer octahedral normal", GL_RG16_SNORM, w, h);
+  t.depth = gl::createTexture2D("gbuffer depth (reversed Z)", GL_DEPTH_COMPONENT32F, w, h);
+  t.hdr = gl::createTexture2D("hdr accumulation", GL_RGBA16F, w, h);
+  t.ldr = gl::createTexture2D("tone-mapped output", GL_RGBA8, w, h);
+  t.gbuffer = gl::createFramebuffer(
+      "gbuffer", {{&t.base_cavity}, {&t.material}, {&t.normal}, {&t.hdr}}, &t.depth);
+  t.output = gl::createFramebuffer("output", {{&t.ldr}});
+}
+
+FrameStats Renderer::render(int width, int height, DebugView view,
+                            std::optional<GLuint> present_fbo) {
+  if (!scene_) throw gl::GlError("Renderer::render called before setScene");
+  if (width <= 0 || height <= 0) return {};
+  ensureTargets(width, height);
+  const std::optional<TermView> terms = termView(view);
+  const bool terms_changed = terms != term_view_;
+  term_view_ = terms;
+  // Settings edited in place (viewer), or another term view: other term masks.
+  if (!(scene_->settings == key_settings_) || terms_changed) refreshVariants();
+  programs_.beginFrame();
+  FrameBlock frame = makeFrameBlock(*scene_, width, height);
+  frame.counts.x = static_cast<uint32_t>(gpu_->lightCount());
+  frame.counts.y = static_cast<uint32_t>(tile_capacity_);
+  frame.counts.z = static_cast<uint32_t>(view);
+  // Term views: no background (ambient.comp), no emissive (masked out in gbufferPass).
+  frame.counts.w = !terms            ? 0u
+                   : terms->emissive ? kFrameNoBackground
+                                     : kFrameNoBackground | kFrameNoEmissive;
+  glNamedBufferSubData(frame_ubo_.id(), 0, sizeof frame, &frame);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 0, frame_ubo_.id());
+
+  gbufferPass(frame);
+  const bool culled =
+      scene_->settings.culling == Culling::Tiled || view == DebugView::LightsPerTile;
+  if (culled) cullLightsPass(frame);
+  lightPass(frame);
+  ambientPass();
+  tonemapPass(view, present_fbo, width, height);
+  applyState(PipelineState{});
+
+  FrameStats stats;
+  stats.passes = timer_.resolve();
+  for (auto& [name, ms] : stats.passes) stats.total_ms += ms;
+  stats.width = width;
+  stats.height = height;
+  if (culled) {
+    // The scan's total, for the stats: read after the timers, which already waited for the frame.
+    uint32_t total = 0;
+    glGetNamedBufferSubData(tile_indices_.id(), 0, sizeof total, &total);
+    tile_entries_ = total;
+  }
+  stats.tile_light_entries = tile_entries_;
+  return stats;
+}
+
+namespace {
+// GL rows go bottom-up; images here are top-down.
+template <class T>
+void flipRows(std::vector<T>& v, int w, int h, int comps) {
+  for (int y = 0; y < h / 2; ++y) {
+    std::swap_ranges(v.begin() + size_t(y) * w * comps, v.begin() + size_t(y + 1) * w * comps,
+                     v.begin() + size_t(h - 1 - y) * w * comps);
+  }
+}
+// IEC 61966-2-1 decoding of an 8-bit sRGB value.
+float srgbDecode(uint8_t v) {
+  const float s = v / 255.0f;
+  return s <= 0.04045f ? s / 12.92f : std::pow((s + 0.055f) / 1.055f, 2.4f);
+}
+}  // namespace
+
+ImageRGBf Renderer::readHdr() const {
+  const Targets& t = *targets_;
+  std::vector<float> px(size_t(t.width) * t.height * 3);
+  glGetTextureImage(t.hdr.id(), 0, GL_RGB, GL_FLOAT, GLsizei(px.size() * sizeof(float)), px.data());
+  flipRows(px, t.width, t.height, 3);
+  ImageRGBf img = makeImageRGBf(t.width, t.height);
+  for (size_t i = 0; i < img.px.size(); ++i) img.px[i] = {px[3 * i], px[3 * i + 1], px[3 * i + 2]};
+  return img;
+}
+
+ImageRGBA8 Renderer::readLdr() const {
+  const Targets& t = *targets_;
+  ImageRGBA8 img = makeImageRGBA8(t.width, t.height);
+  glGetTextureImage(t.ldr.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(img.px.size()),
+                    img.px.data());
+  flipRows(img.px, t.width, t.height, 4);
+  return img;
+}
+
+Renderer::LightWork Renderer::lightWork() const {
+  const Targets& t = *targets_;
+  const size_t n = size_t(t.width) * t.height;
+  std::vector<uint8_t> mat(n * 4);
+  glGetTextureImage(t.material.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(mat.size()), mat.data());
+  const bool brute = scene_->settings.culling == Culling::BruteForce;
+  const int tiles_x = (t.width + kTileSize - 1) / kTileSize;
+  const int tiles_y = (t.height + kTileHeight - 1) / kTileHeight;
+  std::vector<uint32_t> ranges(size_t(tiles_x) * tiles_y * 2);
+  if (!brute && tile_ranges_) {
+    glGetNamedBufferSubData(tile_ranges_.id(), 0, GLsizeiptr(ranges.size() * sizeof(uint32_t)),
+                            ranges.data());
+  }
+  LightWork w;
+  for (int y = 0; y < t.height; ++y) {
+    for (int x = 0; x < t.width; ++x) {
+      const uint8_t model = mat[(size_t(y) * t.width + x) * 4 + 2];
+      if (model != static_cast<uint8_t>(ShadingModel::DefaultLit)) continue;
+      ++w.lit_pixels;
+      const size_t tile = size_t(y / kTileHeight) * tiles_x + x / kTileSize;
+      w.light_pixel_evaluations += brute ? gpu_->lightCount() : ranges[tile * 2 + 1];
+    }
+  }
+  return w;
+}
+
+GBufferReadback Renderer::readGBuffer() const {
+  const Targets& t = *targets_;
+  const size_t n = size_t(t.width) * t.height;
+  GBufferReadback g;
+  g.width = t.width;
+  g.height = t.height;
+  std::vector<float> mat(n * 4), nrm(n * 2), depth(n);
+  std::vector<uint8_t> base(n * 4);
+  // glGetTextureImage returns the stored sRGB bytes undecoded (decoding happens only on
+  // sampling), so decode them here with the exact sRGB curve.
+  glGetTextureImage(t.base_cavity.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(base.size()),
+                    base.data());
+  glGetTextureImage(t.material.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(mat.size() * 4), mat.data());
+  glGetTextureImage(t.normal.id(), 0, GL_RG, GL_FLOAT, GLsizei(nrm.size() * 4), nrm.data());
+  glGetTextureImage(t.depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth.size() * 4),
+                    depth.data());
+  flipRows(base, t.width, t.height, 4);
+  flipRows(mat, t.width, t.height, 4);
+  flipRows(nrm, t.width, t.height, 2);
+  flipRows(depth, t.width, t.height, 1);
+  g.base_color.resize(n);
+  g.metallic.resize(n);
+  g.roughness.resize(n);
+  g.cavity.resize(n);
+  g.normal.resize(n);
+  g.model.resize(n);
+  g.depth = depth;
+  for (size_t i = 0; i < n; ++i) {
+    g.base_color[i] = {srgbDecode(base[4 * i]), srgbDecode(base[4 * i + 1]),
+                       srgbDecode(base[4 * i + 2])};
+    g.cavity[i] = base[4 * i + 3] / 255.0f;  // alpha of an sRGB format is linear
+    g.metallic[i] = mat[4 * i];
+    g.roughness[i] = mat[4 * i + 1];
+    g.model[i] = static_cast<uint32_t>(mat[4 * i + 2] * 255.0f + 0.5f);
+    g.normal[i] = glsl::octDecode(glsl::vec2(nrm[2 * i], nrm[2 * i + 1]));
+  }
+  return g;
+}
+
+}  // namespace hv::render

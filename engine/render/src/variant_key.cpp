@@ -1,0 +1,360 @@
+#include "halfvec/render/variant_key.hpp"
+
+#include <algorithm>
+#include <map>
+
+#include "halfvec/scene/enums.hpp"
+#include "halfvec/shading/brdf.hpp"
+
+namespace hv::render {
+
+const std::array<MaterialFeatureField, 9>& materialFeatureFields() {
+  static const std::array<MaterialFeatureField, 9> fields = {{
+      {"HV_MAT_BASE_COLOR_MAP", "base_color_map", &MaterialFeatures::base_color_map},
+      {"HV_MAT_METAL_ROUGH_MAP", "metal_rough_map", &MaterialFeatures::metal_rough_map},
+      {"HV_MAT_NORMAL_MAP", "normal_map", &MaterialFeatures::normal_map},
+      {"HV_MAT_OCCLUSION_MAP", "occlusion_map", &MaterialFeatures::occlusion_map},
+      {"HV_MAT_EMISSIVE", "emissive", &MaterialFeatures::emissive},
+      {"HV_MAT_EMISSIVE_MAP", "emissive_map", &MaterialFeatures::emissive_map},
+      {"HV_MAT_ALPHA_MASK", "alpha_mask", &MaterialFeatures::alpha_mask},
+      {"HV_MAT_DOUBLE_SIDED", "double_sided", &MaterialFeatures::double_sided},
+      {"HV_MAT_UV1", "uv1", &MaterialFeatures::uv1},
+  }};
+  return fields;
+}
+
+std::string MaterialFeatures::text() const {
+  std::string t;
+  for (const auto& f : materialFeatureFields()) {
+    if (!(this->*f.member)) continue;
+    if (!t.empty()) t += '+';
+    t += f.name;
+  }
+  return t.empty() ? "none" : t;
+}
+
+MaterialFeatures materialFeatures(const Material& m) {
+  MaterialFeatures f;
+  f.base_color_map = m.base_color_tex.valid();
+  f.metal_rough_map = m.metallic_roughness_tex.valid();
+  f.normal_map = m.normal_tex.valid();
+  // cavity *= 1 + strength (ao - 1): strength 0 leaves it unchanged.
+  f.occlusion_map = m.occlusion_tex.valid() && m.occlusion_tex.scale != 0.0f;
+  f.emissive = m.emissive != glm::vec3(0.0f);
+  // The map multiplies the constant: with a zero constant it changes nothing.
+  f.emissive_map = f.emissive && m.emissive_tex.valid();
+  f.alpha_mask = m.alpha_mode == AlphaMode::Mask;
+  f.double_sided = m.double_sided;
+  f.uv1 = (f.base_color_map && m.base_color_tex.texcoord == 1) ||
+          (f.metal_rough_map && m.metallic_roughness_tex.texcoord == 1) ||
+          (f.normal_map && m.normal_tex.texcoord == 1) ||
+          (f.occlusion_map && m.occlusion_tex.texcoord == 1) ||
+          (f.emissive_map && m.emissive_tex.texcoord == 1);
+  return f;
+}
+
+MaterialFeatures allMaterialFeatures() {
+  MaterialFeatures f;
+  for (const auto& field : materialFeatureFields()) f.*field.member = true;
+  return f;
+}
+
+// Karis 2013 eq. 4: the Disney (roughness+1)/2 remap is defined for Schlick-GGX's k with
+// analytic lights, and brdf.glsl applies it to that term only.
+bool remapMeaningful(VisibilityTerm v) {
+  return v == VisibilityTerm::SchlickGGX;
+}
+
+RenderSettings canonicalSettings(const RenderSettings& s, const VariantKey& key) {
+  const RenderSettings d;  // defaults
+  RenderSettings c = s;
+  if (!key.hasLights()) {
+    c.d = d.d;
+    c.v = d.v;
+    c.f = d.f;
+    c.diffuse = d.diffuse;
+    c.remap_roughness = d.remap_roughness;
+    c.falloff_plus_one = d.falloff_plus_one;
+    c.culling = d.culling;
+  }
+  if (!remapMeaningful(c.v)) c.remap_roughness = false;
+  if (!key.sphere_lights) {
+    c.sphere_diffuse = d.sphere_diffuse;
+    c.sphere_normalization = d.sphere_normalization;
+  }
+  if (!key.tube_lights) {
+    c.tube_specular = d.tube_specular;
+    c.tube_normalization = d.tube_normalization;
+  }
+  if (!key.ambientIbl()) {
+    c.env_brdf = d.env_brdf;
+    c.energy_compensation = d.energy_compensation;
+    c.irradiance = d.irradiance;
+    c.specular_occlusion = d.specular_occlusion;
+  }
+  return c;
+}
+
+std::string VariantKey::text() const {
+  std::string lights;
+  if (point_lights) lights += "point";
+  if (sphere_lights) lights += std::string(lights.empty() ? "" : "+") + "sphere";
+  if (tube_lights) lights += std::string(lights.empty() ? "" : "+") + "tube";
+  std::string models;
+  if (default_lit) models += "default_lit";
+  if (unlit) models += std::string(models.empty() ? "" : "+") + "unlit";
+  return "lights " + (lights.empty() ? std::string("none") : lights) + "; models " +
+         (models.empty() ? std::string("none") : models) + "; environment " +
+         std::string(toString(environment)) + "; " + std::to_string(material_variants.size()) +
+         " material variant" + (material_variants.size() == 1 ? "" : "s") + "; " +
+         (uber ? "uber" : "specialized");
+}
+
+VariantKey deriveVariantKey(const Scene& scene) {
+  VariantKey k;
+  k.uber = scene.settings.uber;
+  for (const Light& l : scene.lights) {
+    k.point_lights |= l.type == LightType::Point;
+    k.sphere_lights |= l.type == LightType::Sphere;
+    k.tube_lights |= l.type == LightType::Tube;
+  }
+  k.environment = scene.environment.kind;
+  // Only materials that are drawn count.
+  std::vector<bool> drawn(scene.materials.size(), false);
+  for (const Object& o : scene.objects) {
+    for (int mi : o.meshes) {
+      const int mat = scene.meshes.at(size_t(mi)).material;
+      if (mat >= 0 && size_t(mat) < drawn.size()) drawn[size_t(mat)] = true;
+    }
+  }
+  k.material_variant.assign(scene.materials.size(), -1);
+  for (size_t i = 0; i < scene.materials.size(); ++i) {
+    if (!drawn[i]) continue;
+    const Material& m = scene.materials[i];
+    k.unlit |= m.model == ShadingModel::Unlit;
+    k.default_lit |= m.model == ShadingModel::DefaultLit;
+    if (k.uber) continue;
+    const MaterialFeatures f = materialFeatures(m);
+    auto it = std::find(k.material_variants.begin(), k.material_variants.end(), f);
+    if (it == k.material_variants.end()) it = k.material_variants.insert(it, f);
+    k.material_variant[i] = int(it - k.material_variants.begin());
+  }
+  if (k.uber) {
+    k.point_lights = k.sphere_lights = k.tube_lights = true;
+    k.unlit = k.default_lit = true;
+    k.material_variants = {allMaterialFeatures()};
+    for (size_t i = 0; i < scene.materials.size(); ++i) k.material_variant[i] = drawn[i] ? 0 : -1;
+  }
+  k.settings = canonicalSettings(scene.settings, k);
+  return k;
+}
+
+std::vector<std::string> validateKey(const VariantKey& k) {
+  std::vector<std::string> bad;
+  const RenderSettings d;
+  const RenderSettings& s = k.settings;
+  if (!k.hasEnvironment() && s.irradiance == Irradiance::Cubemap) {
+    bad.push_back("irradiance cubemap without an environment");
+  }
+  if (!k.ambientIbl() &&
+      (s.env_brdf != d.env_brdf || s.energy_compensation != d.energy_compensation ||
+       s.specular_occlusion != d.specular_occlusion || s.irradiance != d.irradiance)) {
+    bad.push_back("ambient IBL options without ambient IBL (no environment or no lit material)");
+  }
+  if (s.remap_roughness && !remapMeaningful(s.v)) {
+    bad.push_back("roughness remap with a visibility term other than Schlick-GGX");
+  }
+  if (!k.sphere_lights &&
+      (s.sphere_diffuse != d.sphere_diffuse || s.sphere_normalization != d.sphere_normalization)) {
+    bad.push_back("sphere-light options without sphere lights");
+  }
+  if (!k.tube_lights &&
+      (s.tube_specular != d.tube_specular || s.tube_normalization != d.tube_normalization)) {
+    bad.push_back("tube-light options without tube lights");
+  }
+  if (!k.hasLights() && (s.d != d.d || s.v != d.v || s.f != d.f || s.diffuse != d.diffuse ||
+                         s.falloff_plus_one != d.falloff_plus_one || s.culling != d.culling)) {
+    bad.push_back("BRDF or light options without lights");
+  }
+  for (size_t i = 0; i < k.material_variants.size(); ++i) {
+    const MaterialFeatures& f = k.material_variants[i];
+    const std::string where = "material variant " + std::to_string(i) + ": ";
+    if (f.emissive_map && !f.emissive) bad.push_back(where + "emissive map without emissive");
+    if (f.uv1 && !(f.base_color_map || f.metal_rough_map || f.normal_map || f.occlusion_map ||
+                   f.emissive_map)) {
+      bad.push_back(where + "second UV set without any map");
+    }
+    if (std::count(k.material_variants.begin(), k.material_variants.end(), f) > 1) {
+      bad.push_back(where + "duplicate feature set");
+    }
+  }
+  if (k.uber && k.material_variants.size() != 1) bad.push_back("uber key with several variants");
+  if (k.uber && !(k.point_lights && k.sphere_lights && k.tube_lights)) {
+    bad.push_back("uber key without every light type");
+  }
+  for (int v : k.material_variant) {
+    if (v < -1 || v >= int(k.material_variants.size())) {
+      bad.push_back("material index into variants out of range");
+      break;
+    }
+  }
+  return bad;
+}
+
+namespace {
+
+std::string flag(bool b) {
+  return b ? "1" : "0";
+}
+
+// "materials a, b, c" (at most 4 names, then "and N more").
+std::string materialList(const Scene& scene, const std::vector<size_t>& ids) {
+  std::string t = ids.size() == 1 ? "material " : "materials ";
+  for (size_t i = 0; i < ids.size() && i < 4; ++i) {
+    const std::string& n = scene.materials[ids[i]].name;
+    if (i) t += ", ";
+    if (n.empty()) {
+      t += '#';
+      t += std::to_string(ids[i]);
+    } else {
+      t += n;
+    }
+  }
+  if (ids.size() > 4) t += " and " + std::to_string(ids.size() - 4) + " more";
+  return t;
+}
+
+size_t countLights(const Scene& scene, LightType t) {
+  return size_t(std::count_if(scene.lights.begin(), scene.lights.end(),
+                              [&](const Light& l) { return l.type == t; }));
+}
+
+// Reason of a setting-derived define: the setting, or why it was reset.
+std::string settingWhy(const std::string& path, std::string_view value, bool reset,
+                       const char* reset_reason) {
+  if (reset)
+    return std::string("default: ") + reset_reason + " (settings." + path + " changes no code)";
+  return "settings." + path + " = " + std::string(value);
+}
+
+}  // namespace
+
+std::vector<KeyDefine> gbufferDefines(const VariantKey& k, size_t variant, const Scene& scene) {
+  const MaterialFeatures& f = k.material_variants.at(variant);
+  std::vector<size_t> members;
+  for (size_t i = 0; i < k.material_variant.size(); ++i) {
+    if (k.material_variant[i] == int(variant)) members.push_back(i);
+  }
+  std::vector<KeyDefine> out;
+  out.push_back({"HV_MAT_RUNTIME_FLAGS", flag(k.uber),
+                 k.uber ? "uber build: every feature compiled in, each material's flags read at "
+                          "run time"
+                        : "specialized: every material drawn with this program has exactly these "
+                          "features (" +
+                              materialList(scene, members) + ")"});
+  for (const auto& field : materialFeatureFields()) {
+    const bool on = f.*field.member;
+    std::string why;
+    if (k.uber) {
+      why = "uber build";
+    } else if (on) {
+      why = materialList(scene, members);
+    } else {
+      why = "no material of this variant uses it";
+    }
+    out.push_back({field.define, flag(on), why});
+  }
+  return out;
+}
+
+std::vector<KeyDefine> lightDefines(const VariantKey& k, const Scene& scene) {
+  const RenderSettings& s = k.settings;
+  const RenderSettings& in = scene.settings;
+  const bool no_lights = !k.hasLights();
+  const char* nl = "no lights";
+  std::vector<KeyDefine> out;
+  // The values come from brdfDefines (the one map from settings to defines); the reasons here.
+  std::map<std::string, std::string> why = {
+      {"HV_BRDF_D", settingWhy("brdf.d", toString(s.d), no_lights && in.d != s.d, nl)},
+      {"HV_BRDF_V", settingWhy("brdf.v", toString(s.v), no_lights && in.v != s.v, nl)},
+      {"HV_BRDF_F", settingWhy("brdf.f", toString(s.f), no_lights && in.f != s.f, nl)},
+      {"HV_BRDF_FD",
+       settingWhy("brdf.diffuse", toString(s.diffuse), no_lights && in.diffuse != s.diffuse, nl)},
+      {"HV_REMAP_ROUGHNESS",
+       settingWhy("brdf.remap_roughness", s.remap_roughness ? "true" : "false",
+                  in.remap_roughness != s.remap_roughness,
+                  no_lights ? nl : "the remap applies to Schlick-GGX only (Karis eq. 4)")},
+      {"HV_FALLOFF_PLUS_ONE", settingWhy("falloff_plus_one", s.falloff_plus_one ? "true" : "false",
+                                         in.falloff_plus_one != s.falloff_plus_one, nl)},
+      {"HV_SPHERE_DIFFUSE", settingWhy("sphere_diffuse", toString(s.sphere_diffuse),
+                                       in.sphere_diffuse != s.sphere_diffuse, "no sphere lights")},
+      {"HV_SPHERE_NORMALIZATION",
+       settingWhy("sphere_normalization", s.sphere_normalization ? "true" : "false",
+                  in.sphere_normalization != s.sphere_normalization, "no sphere lights")},
+      {"HV_TUBE_SPECULAR", settingWhy("tube_specular", toString(s.tube_specular),
+                                      in.tube_specular != s.tube_specular, "no tube lights")},
+      {"HV_TUBE_NORMALIZATION",
+       settingWhy("tube_normalization", s.tube_normalization ? "true" : "false",
+                  in.tube_normalization != s.tube_normalization, "no tube lights")},
+      {"HV_DIRECT_TERMS", s.direct_terms == 3 ? "diffuse and specular (all terms)"
+                                              : "term mask " + std::to_string(int(s.direct_terms)) +
+                                                    " (render --aov, per-term debug view)"},
+  };
+  for (auto& [name, value] : brdfDefines(s)) out.push_back({name, value, why[name]});
+  const struct {
+    const char* define;
+    bool on;
+    LightType type;
+  } types[] = {{"HV_HAS_POINT_LIGHTS", k.point_lights, LightType::Point},
+               {"HV_HAS_SPHERE_LIGHTS", k.sphere_lights, LightType::Sphere},
+               {"HV_HAS_TUBE_LIGHTS", k.tube_lights, LightType::Tube}};
+  for (const auto& t : types) {
+    const size_t n = countLights(scene, t.type);
+    const std::string name(toString(t.type));
+    std::string w = std::to_string(n) + " " + name + " light" + (n == 1 ? "" : "s");
+    if (n == 0) w = "no " + name + " lights";
+    if (k.uber) w = "uber build (" + w + ")";
+    out.push_back({t.define, flag(t.on), w});
+  }
+  out.push_back({"HV_CULLING_BRUTE_FORCE", s.culling == Culling::BruteForce ? "1" : "0",
+                 settingWhy("culling", toString(s.culling), in.culling != s.culling, nl)});
+  return out;
+}
+
+std::vector<KeyDefine> ambientDefines(const VariantKey& k, const Scene& scene) {
+  const RenderSettings& s = k.settings;
+  const RenderSettings& in = scene.settings;
+  const std::string env_name(toString(k.environment));
+  const char* no_ibl = k.hasEnvironment() ? "no default_lit material" : "no environment";
+  std::vector<KeyDefine> out;
+  out.push_back({"HV_ENVIRONMENT", flag(k.hasEnvironment() || k.uber),
+                 k.uber ? "uber build (environment " + env_name + ")"
+                 : k.hasEnvironment()
+                     ? "environment " + env_name
+                     : std::string("no environment: background black, no ambient light")});
+  out.push_back({"HV_ENV_RUNTIME_CHECK", flag(k.uber),
+                 k.uber ? "uber build: environment presence read at run time"
+                        : "specialized: presence known at compile time"});
+  out.push_back({"HV_HAS_DEFAULT_LIT", flag(k.default_lit),
+                 k.uber          ? "uber build"
+                 : k.default_lit ? "default_lit materials present"
+                                 : "no default_lit material: no image-based lighting code"});
+  out.push_back({"HV_ENV_BRDF_ANALYTIC", flag(s.env_brdf == EnvBrdf::Analytic),
+                 settingWhy("env_brdf", toString(s.env_brdf), in.env_brdf != s.env_brdf, no_ibl)});
+  out.push_back({"HV_ENERGY_COMPENSATION", flag(s.energy_compensation),
+                 settingWhy("energy_compensation", s.energy_compensation ? "true" : "false",
+                            in.energy_compensation != s.energy_compensation, no_ibl)});
+  out.push_back(
+      {"HV_IRRADIANCE_CUBEMAP", flag(s.irradiance == Irradiance::Cubemap),
+       settingWhy("irradiance", toString(s.irradiance), in.irradiance != s.irradiance, no_ibl)});
+  out.push_back({"HV_SPECULAR_OCCLUSION", flag(s.specular_occlusion),
+                 settingWhy("specular_occlusion", s.specular_occlusion ? "true" : "false",
+                            in.specular_occlusion != s.specular_occlusion, no_ibl)});
+  out.push_back({"HV_AMBIENT_TERMS", std::to_string(int(s.ambient_terms)),
+                 s.ambient_terms == 3 ? "diffuse and specular (all terms)"
+                                      : "term mask " + std::to_string(int(s.ambient_terms)) +
+                                            " (render --aov, per-term debug view)"});
+  return out;
+}
+
+}  // namespace hv::render

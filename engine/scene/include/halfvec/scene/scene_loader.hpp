@@ -1,0 +1,41 @@
+// Scene files: JSON -> hv::Scene. The format is documented field by field in
+// docs/scene-format.md; samples/scenes/ holds examples.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "halfvec/scene/scene.hpp"
+#include "halfvec/scene/scene_error.hpp"
+
+namespace hv {
+
+// Loads the scene file at `path`. `overrides` are "json.path=value" strings applied to the JSON
+// before validation, e.g. "settings.width=640", "lights.0.intensity=5",
+// "camera.position=[0,1,4]", "environment.type=uniform": the path is split at '.', numeric
+// components index arrays, missing object keys are created; the value is parsed as JSON and
+// taken as a plain string when that fails. Relative glTF/HDR paths resolve against the scene
+// file's folder; "${VAR}" in paths expands environment variables (HV_ASSETS_DIR defaults to the
+// ../shared/assets folder next to the repository). Returns a complete Scene or throws
+// SceneError; warnings (a missing glTF replaced by its fallback, BLEND materials) go to stderr,
+// or to `warnings` when given.
+Scene loadScene(const std::string& path, const std::vector<std::string>& overrides = {},
+                std::vector<std::string>* warnings = nullptr);
+
+// Validates and converts already-parsed JSON. `source_name` is used in error messages and as the
+// base for relative paths (its parent folder).
+Scene parseScene(const nlohmann::json& json, const std::string& source_name,
+                 std::vector<std::string>* warnings = nullptr);
+
+// Applies one "json.path=value" override (see loadScene) to `json`; throws SceneError naming
+// `source_name` and the override on a path that cannot be followed.
+void applyOverride(nlohmann::json& json, const std::string& override_text,
+                   const std::string& source_name);
+
+// Expands "${VAR}" using the environment (HV_ASSETS_DIR has a default, see loadScene); throws
+// SceneError for an unset variable.
+std::string expandEnvVars(const std::string& text);
+
+}  // namespace hv

@@ -1,0 +1,833 @@
+#include "halfvec/scene/scene_loader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <numbers>
+#include <optional>
+#include <sstream>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include "halfvec/scene/enums.hpp"
+#include "halfvec/scene/gltf_loader.hpp"
+#include "halfvec/scene/presets.hpp"
+#include "halfvec/scene/primitives.hpp"
+
+namespace hv {
+
+void sceneWarning(const std::string& message, std::vector<std::string>* sink) {
+  if (sink) {
+    sink->push_back(message);
+  } else {
+    std::cerr << "halfvec: warning: " << message << "\n";
+  }
+}
+
+namespace {
+
+using json = nlohmann::json;
+namespace fs = std::filesystem;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+size_t editDistance(std::string_view a, std::string_view b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diag = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// ", did you mean "x"?" when one candidate is close to `s`, else "".
+std::string didYouMean(std::string_view s, std::span<const std::string_view> candidates) {
+  std::string_view best;
+  size_t best_d = std::numeric_limits<size_t>::max();
+  for (std::string_view c : candidates) {
+    const size_t d = editDistance(s, c);
+    if (d < best_d) best_d = d, best = c;
+  }
+  const size_t limit = std::max<size_t>(2, s.size() / 3);
+  if (best_d <= limit) return "; did you mean \"" + std::string(best) + "\"?";
+  return "";
+}
+
+std::string shortDump(const json& j) {
+  std::string s = j.dump();
+  if (s.size() > 60) s = s.substr(0, 57) + "...";
+  return s;
+}
+
+std::string fmt(double x) {
+  std::ostringstream o;
+  o << x;
+  return o.str();
+}
+
+struct Range {
+  double lo = -kInf, hi = kInf;
+  bool lo_open = false;
+  std::string describe() const {
+    if (lo == -kInf && hi == kInf) return "a number";
+    if (hi == kInf) return std::string("a number ") + (lo_open ? "> " : ">= ") + fmt(lo);
+    if (lo == -kInf) return "a number <= " + fmt(hi);
+    return std::string("a number in ") + (lo_open ? "(" : "[") + fmt(lo) + ", " + fmt(hi) + "]";
+  }
+  bool contains(double x) const {
+    return std::isfinite(x) && (lo_open ? x > lo : x >= lo) && x <= hi;
+  }
+};
+constexpr Range kAny{};
+constexpr Range kUnit{0.0, 1.0};
+constexpr Range kNonNeg{0.0, kInf};
+constexpr Range kPositive{0.0, kInf, true};
+
+struct Ctx {
+  std::string file;  // for messages
+  fs::path dir;      // for relative paths
+  std::vector<std::string>* warnings = nullptr;
+  [[noreturn]] void fail(const std::string& ptr, const std::string& msg) const {
+    throw SceneError(file + ": " + (ptr.empty() ? std::string("/") : ptr) + ": " + msg);
+  }
+  // Expands ${VAR} and resolves relative to the scene file's folder.
+  std::string resolve(const std::string& ptr, const std::string& p) const {
+    std::string expanded;
+    try {
+      expanded = expandEnvVars(p);
+    } catch (const SceneError& e) {
+      fail(ptr, e.what());
+    }
+    fs::path path(expanded);
+    if (path.is_relative()) path = dir / path;
+    return path.lexically_normal().string();
+  }
+};
+
+// A JSON object being read: checks its type and its keys on construction.
+class Obj {
+ public:
+  Obj(const Ctx& ctx, const json& j, std::string ptr, std::vector<std::string_view> allowed)
+      : ctx_(ctx), j_(j), ptr_(std::move(ptr)) {
+    if (!j.is_object()) ctx.fail(ptr_, "expected an object, got " + shortDump(j));
+    for (const auto& [key, value] : j.items()) {
+      if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
+        ctx.fail(at(key), "unknown key \"" + key + "\"" + didYouMean(key, allowed) +
+                              " (allowed here: " + joinNames(allowed) + ")");
+      }
+    }
+  }
+  const Ctx& ctx() const { return ctx_; }
+  const std::string& ptr() const { return ptr_; }
+  std::string at(std::string_view key) const { return ptr_ + "/" + std::string(key); }
+  bool has(const char* key) const { return j_.contains(key); }
+  const json& operator[](const char* key) const { return j_.at(key); }
+  [[noreturn]] void fail(const char* key, const std::string& msg) const { ctx_.fail(at(key), msg); }
+
+  double number(const char* key, double def, Range r = kAny) const {
+    if (!has(key)) return def;
+    return numberAt(ctx_, (*this)[key], at(key), r);
+  }
+  float num(const char* key, float def, Range r = kAny) const { return float(number(key, def, r)); }
+  int integer(const char* key, int def, int lo, int hi) const {
+    if (!has(key)) return def;
+    const json& v = (*this)[key];
+    if (!v.is_number_integer() || v.get<int64_t>() < lo || v.get<int64_t>() > hi) {
+      fail(key, "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                    "], got " + shortDump(v));
+    }
+    return int(v.get<int64_t>());
+  }
+  bool boolean(const char* key, bool def) const {
+    if (!has(key)) return def;
+    const json& v = (*this)[key];
+    if (!v.is_boolean()) fail(key, "expected true or false, got " + shortDump(v));
+    return v.get<bool>();
+  }
+  std::string string(const char* key, const std::string& def) const {
+    if (!has(key)) return def;
+    const json& v = (*this)[key];
+    if (!v.is_string()) fail(key, "expected a string, got " + shortDump(v));
+    return v.get<std::string>();
+  }
+  glm::vec3 vec3(const char* key, glm::vec3 def, Range r = kAny) const {
+    if (!has(key)) return def;
+    return vec3At(ctx_, (*this)[key], at(key), r);
+  }
+  template <class E>
+  E enumeration(const char* key, E def) const {
+    if (!has(key)) return def;
+    return enumAt<E>(ctx_, (*this)[key], at(key));
+  }
+
+  static double numberAt(const Ctx& ctx, const json& v, const std::string& ptr, Range r) {
+    if (!v.is_number() || !r.contains(v.get<double>())) {
+      ctx.fail(ptr, "expected " + r.describe() + ", got " + shortDump(v));
+    }
+    return v.get<double>();
+  }
+  static glm::vec3 vec3At(const Ctx& ctx, const json& v, const std::string& ptr, Range r) {
+    const std::string what = r.lo == -kInf && r.hi == kInf
+                                 ? "an array of 3 numbers"
+                                 : "an array of 3 numbers, each " + r.describe().substr(9);
+    if (!v.is_array() || v.size() != 3) ctx.fail(ptr, "expected " + what + ", got " + shortDump(v));
+    glm::vec3 out;
+    for (int i = 0; i < 3; ++i) {
+      if (!v[size_t(i)].is_number() || !r.contains(v[size_t(i)].get<double>())) {
+        ctx.fail(ptr, "expected " + what + ", got " + shortDump(v));
+      }
+      out[i] = v[size_t(i)].get<float>();
+    }
+    return out;
+  }
+  template <class E>
+  static E enumAt(const Ctx& ctx, const json& v, const std::string& ptr) {
+    if (v.is_string()) {
+      if (auto e = fromString<E>(v.get<std::string>())) return *e;
+    }
+    ctx.fail(ptr, "expected one of " + enumNamesJoined<E>() + ", got " + shortDump(v) +
+                      (v.is_string() ? didYouMean(v.get<std::string>(), enumNames<E>()) : ""));
+  }
+
+ private:
+  const Ctx& ctx_;
+  const json& j_;
+  std::string ptr_;
+};
+
+// [lo, hi] with lo <= hi, or a single number meaning [x, x].
+glm::vec2 rangeAt(const Obj& o, const char* key, glm::vec2 def, Range r) {
+  if (!o.has(key)) return def;
+  const json& v = o[key];
+  if (v.is_number()) {
+    const float x = float(Obj::numberAt(o.ctx(), v, o.at(key), r));
+    return {x, x};
+  }
+  if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number() ||
+      !r.contains(v[0].get<double>()) || !r.contains(v[1].get<double>()) ||
+      v[0].get<double>() > v[1].get<double>()) {
+    o.fail(key, "expected [min, max] with min <= max, each " + r.describe().substr(9) +
+                    ", or a single number, got " + shortDump(v));
+  }
+  return {v[0].get<float>(), v[1].get<float>()};
+}
+
+Camera parseCamera(const Ctx& ctx, const json& j) {
+  Obj o(ctx, j, "/camera", {"position", "target", "up", "fov_y_deg", "near", "far"});
+  Camera c;
+  c.position = o.vec3("position", c.position);
+  c.target = o.vec3("target", c.target);
+  c.up = o.vec3("up", c.up);
+  c.fov_y_deg = o.num("fov_y_deg", c.fov_y_deg, {0.0, 180.0, true});
+  if (c.fov_y_deg >= 180.0f) o.fail("fov_y_deg", "expected a number in (0, 180), got 180");
+  c.near_plane = o.num("near", c.near_plane, kPositive);
+  c.far_plane = o.num("far", c.far_plane, kPositive);
+  if (c.far_plane <= c.near_plane) {
+    o.fail("far", "expected far > near (" + fmt(c.near_plane) + "), got " + fmt(c.far_plane));
+  }
+  const glm::vec3 fwd = c.target - c.position;
+  if (glm::length(fwd) < 1e-6f) o.fail("target", "target must differ from position");
+  if (glm::length(glm::cross(glm::normalize(fwd), c.up)) < 1e-4f) {
+    o.fail("up", "up must not be zero or parallel to the view direction");
+  }
+  return c;
+}
+
+Material parseMaterial(const Ctx& ctx, const json& j, const std::string& ptr, bool allow_name) {
+  std::vector<std::string_view> keys = {"base_color", "metallic",      "roughness",   "cavity",
+                                        "emissive",   "shading_model", "double_sided"};
+  if (allow_name) keys.push_back("name");
+  Obj o(ctx, j, ptr, keys);
+  Material m;
+  m.name = o.string("name", "");
+  m.base_color = o.vec3("base_color", m.base_color, kUnit);
+  m.metallic = o.num("metallic", m.metallic, kUnit);
+  m.roughness = o.num("roughness", m.roughness, kUnit);
+  m.cavity = o.num("cavity", m.cavity, kUnit);
+  m.emissive = o.vec3("emissive", m.emissive, kNonNeg);
+  m.double_sided = o.boolean("double_sided", m.double_sided);
+  if (o.has("shading_model")) {
+    m.model = o.enumeration<ShadingModel>("shading_model", m.model);
+    if (m.model == ShadingModel::Background) {
+      o.fail("shading_model", "expected \"default_lit\" or \"unlit\", got \"background\"");
+    }
+  }
+  return m;
+}
+
+glm::mat4 parseTransform(const Ctx& ctx, const json& j, const std::string& ptr) {
+  Obj o(ctx, j, ptr, {"translation", "rotation_deg", "quaternion", "scale"});
+  const glm::vec3 t = o.vec3("translation", glm::vec3(0.0f));
+  glm::quat q(1.0f, 0.0f, 0.0f, 0.0f);
+  if (o.has("rotation_deg") && o.has("quaternion")) {
+    o.fail("quaternion", "give either rotation_deg or quaternion, not both");
+  }
+  if (o.has("rotation_deg")) {
+    const glm::vec3 e = glm::radians(o.vec3("rotation_deg", glm::vec3(0.0f)));
+    // Extrinsic X, then Y, then Z: R = Rz * Ry * Rx.
+    q = glm::angleAxis(e.z, glm::vec3(0, 0, 1)) * glm::angleAxis(e.y, glm::vec3(0, 1, 0)) *
+        glm::angleAxis(e.x, glm::vec3(1, 0, 0));
+  }
+  if (o.has("quaternion")) {
+    const json& v = o["quaternion"];
+    if (!v.is_array() || v.size() != 4 ||
+        !std::all_of(v.begin(), v.end(), [](const json& x) { return x.is_number(); })) {
+      o.fail("quaternion", "expected [x, y, z, w], got " + shortDump(v));
+    }
+    q = glm::quat(v[3].get<float>(), v[0].get<float>(), v[1].get<float>(), v[2].get<float>());
+    if (glm::length(q) < 1e-6f) o.fail("quaternion", "expected a non-zero quaternion");
+    q = glm::normalize(q);
+  }
+  glm::vec3 s(1.0f);
+  if (o.has("scale")) {
+    if (o["scale"].is_number()) {
+      s = glm::vec3(o.num("scale", 1.0f, kPositive));
+    } else {
+      s = o.vec3("scale", s, kPositive);
+    }
+  }
+  return glm::translate(glm::mat4(1.0f), t) * glm::mat4_cast(q) * glm::scale(glm::mat4(1.0f), s);
+}
+
+Light parseLight(const Ctx& ctx, const json& j, const std::string& ptr) {
+  std::optional<LightType> type;
+  if (j.is_object() && j.contains("type"))
+    type = Obj::enumAt<LightType>(ctx, j["type"], ptr + "/type");
+  if (!type) {
+    if (!j.is_object()) ctx.fail(ptr, "expected an object, got " + shortDump(j));
+    ctx.fail(ptr + "/type", "missing; expected one of " + enumNamesJoined<LightType>());
+  }
+  std::vector<std::string_view> keys = {"type", "position", "color", "intensity", "range"};
+  if (*type != LightType::Point) keys.push_back("radius");
+  if (*type == LightType::Tube) keys.insert(keys.end(), {"length", "axis"});
+  Obj o(ctx, j, ptr, keys);
+  Light l;
+  l.type = *type;
+  l.position = o.vec3("position", l.position);
+  l.color = o.vec3("color", l.color, kNonNeg);
+  l.intensity = o.num("intensity", l.intensity, kNonNeg);
+  l.range = o.num("range", l.range, kPositive);
+  if (l.type == LightType::Sphere) l.radius = o.num("radius", 0.1f, kPositive);
+  if (l.type == LightType::Tube) {
+    l.radius = o.num("radius", 0.05f, kNonNeg);
+    l.length = o.num("length", 1.0f, kPositive);
+    const glm::vec3 a = o.vec3("axis", l.axis);
+    if (glm::length(a) < 1e-6f) o.fail("axis", "expected a non-zero direction, got [0, 0, 0]");
+    l.axis = glm::normalize(a);
+  }
+  return l;
+}
+
+// splitmix64: a tiny, platform-independent generator, so light_generators expand to the same
+// lights everywhere (std distributions are implementation-defined).
+struct Rng {
+  uint64_t s;
+  uint64_t next() {
+    uint64_t z = (s += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+  float uniform() { return float(next() >> 40) * (1.0f / 16777216.0f); }  // [0, 1)
+  float in(glm::vec2 r) { return r.x + (r.y - r.x) * uniform(); }
+};
+
+glm::vec3 hueToRgb(float h) {  // fully saturated HSV hue in [0, 1) -> linear RGB, value 1
+  const float r = std::abs(h * 6.0f - 3.0f) - 1.0f;
+  const float g = 2.0f - std::abs(h * 6.0f - 2.0f);
+  const float b = 2.0f - std::abs(h * 6.0f - 4.0f);
+  return glm::clamp(glm::vec3(r, g, b), 0.0f, 1.0f);
+}
+
+void expandGenerator(const Ctx& ctx, const json& j, const std::string& ptr,
+                     std::vector<Light>& out) {
+  Obj o(ctx, j, ptr,
+        {"count", "seed", "types", "volume", "intensity", "radius", "length", "range", "color_mode",
+         "color", "saturation"});
+  const int count = o.integer("count", 64, 1, 1 << 20);
+  const int seed = o.integer("seed", 1, 0, std::numeric_limits<int>::max());
+  float weights[3] = {1.0f, 1.0f, 1.0f};
+  if (o.has("types")) {
+    Obj t(ctx, o["types"], o.at("types"), {"point", "sphere", "tube"});
+    weights[0] = t.num("point", 0.0f, kNonNeg);
+    weights[1] = t.num("sphere", 0.0f, kNonNeg);
+    weights[2] = t.num("tube", 0.0f, kNonNeg);
+    if (weights[0] + weights[1] + weights[2] <= 0.0f) {
+      t.ctx().fail(t.ptr(), "expected at least one positive weight among point, sphere, tube");
+    }
+  }
+  glm::vec3 vmin(-5.0f, 0.2f, -5.0f), vmax(5.0f, 3.0f, 5.0f);
+  if (o.has("volume")) {
+    Obj v(ctx, o["volume"], o.at("volume"), {"min", "max"});
+    vmin = v.vec3("min", vmin);
+    vmax = v.vec3("max", vmax);
+    if (glm::any(glm::greaterThan(vmin, vmax))) v.fail("max", "expected max >= min componentwise");
+  }
+  const glm::vec2 intensity = rangeAt(o, "intensity", {1.0f, 5.0f}, kNonNeg);
+  const glm::vec2 radius = rangeAt(o, "radius", {0.02f, 0.1f}, kPositive);
+  const glm::vec2 length = rangeAt(o, "length", {0.2f, 1.0f}, kPositive);
+  const glm::vec2 range = rangeAt(o, "range", {1.0f, 3.0f}, kPositive);
+  const std::string mode = o.string("color_mode", "random_hue");
+  static constexpr std::string_view kModes[] = {"white", "random_hue", "fixed"};
+  if (std::find(std::begin(kModes), std::end(kModes), mode) == std::end(kModes)) {
+    o.fail("color_mode", "expected one of " + joinNames(kModes) + ", got \"" + mode + "\"" +
+                             didYouMean(mode, kModes));
+  }
+  if (o.has("color") && mode != "fixed") o.fail("color", "only used with color_mode \"fixed\"");
+  const glm::vec3 fixed = o.vec3("color", glm::vec3(1.0f), kNonNeg);
+  const float saturation = o.num("saturation", 0.7f, kUnit);
+  Rng rng{uint64_t(seed) * 0x2545F4914F6CDD1Dull + 1};
+  const float wsum = weights[0] + weights[1] + weights[2];
+  for (int i = 0; i < count; ++i) {
+    Light l;
+    const float pick = rng.uniform() * wsum;
+    l.type = pick < weights[0]                ? LightType::Point
+             : pick < weights[0] + weights[1] ? LightType::Sphere
+                                              : LightType::Tube;
+    l.position =
+        glm::vec3(rng.in({vmin.x, vmax.x}), rng.in({vmin.y, vmax.y}), rng.in({vmin.z, vmax.z}));
+    l.intensity = rng.in(intensity);
+    l.range = rng.in(range);
+    const float r = rng.in(radius);
+    const float len = rng.in(length);
+    const float z = rng.uniform() * 2.0f - 1.0f,
+                phi = rng.uniform() * 2.0f * std::numbers::pi_v<float>;
+    const float s = std::sqrt(std::max(0.0f, 1.0f - z * z));
+    const glm::vec3 axis(s * std::cos(phi), z, s * std::sin(phi));
+    const float hue = rng.uniform();
+    if (l.type != LightType::Point) l.radius = r;
+    if (l.type == LightType::Tube) {
+      l.length = len;
+      l.axis = axis;
+    }
+    if (mode == "white") {
+      l.color = glm::vec3(1.0f);
+    } else if (mode == "fixed") {
+      l.color = fixed;
+    } else {
+      l.color = glm::mix(glm::vec3(1.0f), hueToRgb(hue), saturation);
+    }
+    out.push_back(l);
+  }
+}
+
+Environment parseEnvironment(const Ctx& ctx, const json& j) {
+  Obj o(ctx, j, "/environment",
+        {"type", "path", "color", "intensity", "rotation_deg", "cube_size", "prefilter_samples"});
+  Environment e;
+  e.kind = o.enumeration<EnvironmentKind>("type", e.kind);
+  if (o.has("path") && e.kind != EnvironmentKind::HdrFile)
+    o.fail("path", "only used with type \"hdr\"");
+  if (o.has("color") && e.kind != EnvironmentKind::Uniform) {
+    o.fail("color", "only used with type \"uniform\"");
+  }
+  if (e.kind == EnvironmentKind::HdrFile) {
+    if (!o.has("path")) o.fail("path", "missing; type \"hdr\" needs the path of an .hdr file");
+    e.path = ctx.resolve(o.at("path"), o.string("path", ""));
+    if (!fs::is_regular_file(e.path)) o.fail("path", "file not found: " + e.path);
+  }
+  e.color = o.vec3("color", e.color, kNonNeg);
+  e.intensity = o.num("intensity", e.intensity, kNonNeg);
+  e.rotation_deg = o.num("rotation_deg", e.rotation_deg);
+  e.cube_size = o.integer("cube_size", e.cube_size, 8, 4096);
+  if ((e.cube_size & (e.cube_size - 1)) != 0) {
+    o.fail("cube_size", "expected a power of two, got " + std::to_string(e.cube_size));
+  }
+  e.prefilter_samples = o.integer("prefilter_samples", e.prefilter_samples, 1, 65536);
+  return e;
+}
+
+RenderSettings parseSettings(const Ctx& ctx, const json& j) {
+  Obj o(ctx, j, "/settings",
+        {"preset", "width", "height", "exposure", "tone_map", "gamma", "dither", "brdf",
+         "falloff_plus_one", "sphere_diffuse", "sphere_normalization", "tube_specular",
+         "tube_normalization", "culling", "env_brdf", "energy_compensation", "irradiance",
+         "specular_occlusion", "uber"});
+  RenderSettings s;
+  if (o.has("preset")) {  // first, so that the explicit settings below override it
+    const std::string name = o.string("preset", "");
+    if (!applySettingsPreset(name, s)) {
+      o.fail("preset", "unknown preset \"" + name + "\"" + didYouMean(name, settingsPresetNames()) +
+                           " (expected one of: " + joinNames(settingsPresetNames()) + ")");
+    }
+  }
+  s.width = o.integer("width", s.width, 1, 16384);
+  s.height = o.integer("height", s.height, 1, 16384);
+  s.exposure = o.num("exposure", s.exposure, kPositive);
+  s.tone_map = o.enumeration("tone_map", s.tone_map);
+  s.gamma = o.enumeration("gamma", s.gamma);
+  s.dither = o.boolean("dither", s.dither);
+  if (o.has("brdf")) {
+    Obj b(ctx, o["brdf"], o.at("brdf"), {"d", "v", "f", "diffuse", "remap_roughness"});
+    s.d = b.enumeration("d", s.d);
+    s.v = b.enumeration("v", s.v);
+    s.f = b.enumeration("f", s.f);
+    s.diffuse = b.enumeration("diffuse", s.diffuse);
+    s.remap_roughness = b.boolean("remap_roughness", s.remap_roughness);
+  }
+  s.falloff_plus_one = o.boolean("falloff_plus_one", s.falloff_plus_one);
+  s.sphere_diffuse = o.enumeration("sphere_diffuse", s.sphere_diffuse);
+  s.sphere_normalization = o.boolean("sphere_normalization", s.sphere_normalization);
+  s.tube_specular = o.enumeration("tube_specular", s.tube_specular);
+  s.tube_normalization = o.boolean("tube_normalization", s.tube_normalization);
+  s.culling = o.enumeration("culling", s.culling);
+  s.env_brdf = o.enumeration("env_brdf", s.env_brdf);
+  s.energy_compensation = o.boolean("energy_compensation", s.energy_compensation);
+  s.irradiance = o.enumeration("irradiance", s.irradiance);
+  s.specular_occlusion = o.boolean("specular_occlusion", s.specular_occlusion);
+  s.uber = o.boolean("uber", s.uber);
+  return s;
+}
+
+class SceneBuilder {
+ public:
+  SceneBuilder(const Ctx& ctx, Scene& scene) : ctx_(ctx), scene_(scene) {}
+
+  void parseMaterials(const json& j) {
+    const std::string ptr = "/materials";
+    if (j.is_object()) {
+      for (const auto& [name, m] : j.items()) addNamed(m, ptr + "/" + name, name, false);
+    } else if (j.is_array()) {
+      for (size_t i = 0; i < j.size(); ++i) {
+        const std::string p = ptr + "/" + std::to_string(i);
+        if (!j[i].is_object() || !j[i].contains("name") || !j[i]["name"].is_string()) {
+          ctx_.fail(p + "/name", "missing; materials given as a list need a \"name\" string");
+        }
+        addNamed(j[i], p, j[i]["name"].get<std::string>(), true);
+      }
+    } else {
+      ctx_.fail(ptr, "expected an object (name -> material) or a list, got " + shortDump(j));
+    }
+  }
+
+  void parseObject(const json& j, const std::string& ptr) {
+    if (!j.is_object()) ctx_.fail(ptr, "expected an object, got " + shortDump(j));
+    const bool has_prim = j.contains("primitive"), has_gltf = j.contains("gltf");
+    if (has_prim == has_gltf) {
+      ctx_.fail(ptr, "expected exactly one of \"primitive\" or \"gltf\"");
+    }
+    const std::string default_name = "object" + std::to_string(object_count_++);
+    if (has_prim) {
+      parsePrimitiveObject(j, ptr, std::nullopt, default_name);
+    } else {
+      parseGltfObject(j, ptr, default_name);
+    }
+  }
+
+ private:
+  void addNamed(const json& j, const std::string& ptr, const std::string& name, bool allow_name) {
+    if (material_names_.size() != scene_.materials.size()) ctx_.fail(ptr, "internal error");
+    if (std::find(material_names_.begin(), material_names_.end(), name) != material_names_.end()) {
+      ctx_.fail(ptr, "duplicate material name \"" + name + "\"");
+    }
+    Material m = parseMaterial(ctx_, j, ptr, allow_name);
+    m.name = name;
+    scene_.materials.push_back(m);
+    material_names_.push_back(name);
+  }
+
+  int materialRef(const json& j, const std::string& ptr, const std::string& object_name) {
+    if (j.is_string()) {
+      const std::string name = j.get<std::string>();
+      for (size_t i = 0; i < material_names_.size(); ++i) {
+        if (material_names_[i] == name) return int(i);
+      }
+      std::vector<std::string_view> names(material_names_.begin(), material_names_.end());
+      ctx_.fail(ptr, "no material named \"" + name + "\"" + didYouMean(name, names));
+    }
+    if (!j.is_object()) {
+      ctx_.fail(ptr, "expected a material name or an inline material object, got " + shortDump(j));
+    }
+    Material m = parseMaterial(ctx_, j, ptr, false);
+    m.name = object_name;
+    scene_.materials.push_back(m);
+    material_names_.push_back("");  // inline materials cannot be referenced by name
+    return int(scene_.materials.size() - 1);
+  }
+
+  int defaultMaterial() {
+    if (default_material_ < 0) {
+      Material m;
+      m.name = "default";
+      scene_.materials.push_back(m);
+      material_names_.push_back("");
+      default_material_ = int(scene_.materials.size() - 1);
+    }
+    return default_material_;
+  }
+
+  // `inherited`: the transform of the gltf object whose fallback this is.
+  void parsePrimitiveObject(const json& j, const std::string& ptr,
+                            std::optional<glm::mat4> inherited, const std::string& default_name) {
+    std::optional<PrimKind> kind;
+    if (j.contains("primitive") && j["primitive"].is_string()) {
+      const std::string s = j["primitive"].get<std::string>();
+      for (size_t i = 0; i < std::size(kPrimNames); ++i) {
+        if (kPrimNames[i] == s) kind = PrimKind(i);
+      }
+    }
+    if (!kind) {
+      ctx_.fail(ptr + "/primitive",
+                "expected one of " + joinNames(kPrimNames) + ", got " +
+                    (j.contains("primitive") ? shortDump(j["primitive"]) : std::string("nothing")) +
+                    (j.contains("primitive") && j["primitive"].is_string()
+                         ? didYouMean(j["primitive"].get<std::string>(), kPrimNames)
+                         : ""));
+    }
+    std::vector<std::string_view> keys = {"name", "primitive", "transform", "material"};
+    switch (*kind) {
+      case PrimKind::Sphere:
+        keys.insert(keys.end(), {"radius", "segments", "rings"});
+        break;
+      case PrimKind::Plane:
+        keys.insert(keys.end(), {"size"});
+        break;
+      case PrimKind::Box:
+        keys.insert(keys.end(), {"half_extents"});
+        break;
+      case PrimKind::Capsule:
+        keys.insert(keys.end(), {"radius", "half_length", "segments", "rings"});
+        break;
+    }
+    Obj o(ctx_, j, ptr, keys);
+    Object obj;
+    obj.name = o.string("name", default_name);
+    obj.transform = o.has("transform") ? parseTransform(ctx_, o["transform"], o.at("transform"))
+                                       : inherited.value_or(glm::mat4(1.0f));
+    Mesh mesh;
+    switch (*kind) {
+      case PrimKind::Sphere:
+        mesh = makeSphere(o.num("radius", 0.5f, kPositive), o.integer("segments", 64, 3, 4096),
+                          o.integer("rings", 32, 2, 4096));
+        break;
+      case PrimKind::Plane: {
+        glm::vec2 size(10.0f);
+        if (o.has("size")) {
+          const json& v = o["size"];
+          if (v.is_number()) {
+            size = glm::vec2(o.num("size", 10.0f, kPositive));
+          } else if (v.is_array() && v.size() == 2 && v[0].is_number() && v[1].is_number() &&
+                     v[0].get<double>() > 0 && v[1].get<double>() > 0) {
+            size = glm::vec2(v[0].get<float>(), v[1].get<float>());
+          } else {
+            o.fail("size",
+                   "expected [size_x, size_z] (each > 0) or a number > 0, got " + shortDump(v));
+          }
+        }
+        mesh = makePlane(size.x, size.y);
+        break;
+      }
+      case PrimKind::Box:
+        mesh = makeBox(o.vec3("half_extents", glm::vec3(0.5f), kPositive));
+        break;
+      case PrimKind::Capsule:
+        mesh = makeCapsule(o.num("radius", 0.25f, kPositive), o.num("half_length", 0.5f, kNonNeg),
+                           o.integer("segments", 48, 3, 4096), o.integer("rings", 24, 2, 4096));
+        break;
+    }
+    mesh.material = o.has("material") ? materialRef(o["material"], o.at("material"), obj.name)
+                                      : defaultMaterial();
+    mesh.name = obj.name + "/" + mesh.name;
+    scene_.meshes.push_back(std::move(mesh));
+    obj.meshes.push_back(int(scene_.meshes.size() - 1));
+    scene_.objects.push_back(std::move(obj));
+  }
+
+  void parseGltfObject(const json& j, const std::string& ptr, const std::string& default_name) {
+    Obj o(ctx_, j, ptr, {"name", "gltf", "transform", "material_override", "fallback"});
+    const std::string name = o.string("name", default_name);
+    const glm::mat4 transform = o.has("transform")
+                                    ? parseTransform(ctx_, o["transform"], o.at("transform"))
+                                    : glm::mat4(1.0f);
+    const std::string file = o.string("gltf", "");
+    if (file.empty()) o.fail("gltf", "expected the path of a .gltf or .glb file");
+    const std::string path = ctx_.resolve(o.at("gltf"), file);
+    if (!fs::is_regular_file(path)) {
+      if (!o.has("fallback")) o.fail("gltf", "file not found: " + path);
+      sceneWarning(ctx_.file + ": " + o.at("gltf") + ": file not found: " + path +
+                       "; using the fallback object",
+                   ctx_.warnings);
+      const json& fb = o["fallback"];
+      if (!fb.is_object() || !fb.contains("primitive")) {
+        o.fail("fallback", "expected an object with a \"primitive\"");
+      }
+      parsePrimitiveObject(fb, o.at("fallback"), transform, name);
+      return;
+    }
+    if (o.has("fallback")) {  // validate it even when unused, so errors do not hide
+      Scene scratch;
+      SceneBuilder check(ctx_, scratch);
+      check.material_names_ = material_names_;
+      check.scene_.materials = scene_.materials;
+      check.parsePrimitiveObject(o["fallback"], o.at("fallback"), transform, name);
+    }
+    GltfOptions opt;
+    opt.name_prefix = name;
+    opt.warnings = ctx_.warnings;
+    if (o.has("material_override")) {
+      opt.material_override = materialRef(o["material_override"], o.at("material_override"), name);
+    }
+    try {
+      loadGltf(path, transform, scene_, opt);
+    } catch (const SceneError& e) {
+      ctx_.fail(o.at("gltf"), e.what());
+    }
+  }
+
+  enum class PrimKind { Sphere, Plane, Box, Capsule };
+  static constexpr std::string_view kPrimNames[] = {"sphere", "plane", "box", "capsule"};
+
+  const Ctx& ctx_;
+  Scene& scene_;
+  std::vector<std::string> material_names_;  // parallel to scene_.materials; "" = unnamed
+  int default_material_ = -1;
+  int object_count_ = 0;
+};
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneError(path + ": cannot open file");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+std::string expandEnvVars(const std::string& text) {
+  std::string out;
+  size_t i = 0;
+  while (i < text.size()) {
+    if (text.compare(i, 2, "${") == 0) {
+      const size_t end = text.find('}', i + 2);
+      if (end == std::string::npos) throw SceneError("unterminated \"${\" in \"" + text + "\"");
+      const std::string var = text.substr(i + 2, end - i - 2);
+      const char* value = std::getenv(var.c_str());
+      if (value && *value) {
+        out += value;
+      } else if (var == "HV_ASSETS_DIR") {
+        out += (fs::path(HV_SOURCE_DIR) / ".." / "shared" / "assets").lexically_normal().string();
+      } else {
+        throw SceneError("environment variable " + var + " (used in \"" + text + "\") is not set");
+      }
+      i = end + 1;
+    } else {
+      out += text[i++];
+    }
+  }
+  return out;
+}
+
+void applyOverride(json& j, const std::string& text, const std::string& source_name) {
+  auto fail = [&](const std::string& msg) -> void {
+    throw SceneError(source_name + ": override \"" + text + "\": " + msg);
+  };
+  const size_t eq = text.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    fail("expected json.path=value");
+  }
+  const std::string path = text.substr(0, eq), value_text = text.substr(eq + 1);
+  json value = json::parse(value_text, nullptr, false);
+  if (value.is_discarded()) value = value_text;
+  std::vector<std::string> parts;
+  for (size_t start = 0;;) {
+    const size_t dot = path.find('.', start);
+    parts.push_back(path.substr(start, dot - start));
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  json* cur = &j;
+  for (size_t k = 0; k < parts.size(); ++k) {
+    const std::string& part = parts[k];
+    if (part.empty()) fail("empty path component");
+    const bool last = k + 1 == parts.size();
+    if (cur->is_array()) {
+      size_t idx = 0;
+      const bool numeric = std::all_of(part.begin(), part.end(), ::isdigit);
+      if (!numeric) fail("\"" + part + "\" is not an array index");
+      idx = std::stoul(part);
+      if (idx > cur->size() || (idx == cur->size() && !last)) {
+        fail("index " + part + " out of range (size " + std::to_string(cur->size()) + ")");
+      }
+      if (idx == cur->size()) {
+        cur->push_back(value);
+        return;
+      }
+      cur = &(*cur)[idx];
+    } else if (cur->is_object() || cur->is_null()) {
+      if (cur->is_null()) *cur = json::object();
+      cur = &(*cur)[part];
+    } else {
+      fail("cannot descend into \"" + part + "\": the value there is " + shortDump(*cur));
+    }
+    if (last) *cur = value;
+  }
+}
+
+Scene parseScene(const json& j, const std::string& source_name,
+                 std::vector<std::string>* warnings) {
+  Ctx ctx;
+  ctx.file = source_name;
+  ctx.dir = fs::path(source_name).parent_path();
+  ctx.warnings = warnings;
+  Obj top(ctx, j, "",
+          {"description", "camera", "materials", "objects", "lights", "light_generators",
+           "environment", "settings"});
+  Scene scene;
+  scene.source_path = source_name;
+  if (top.has("description")) top.string("description", "");
+  if (top.has("camera")) scene.camera = parseCamera(ctx, top["camera"]);
+  SceneBuilder builder(ctx, scene);
+  if (top.has("materials")) builder.parseMaterials(top["materials"]);
+  auto list = [&](const char* key) -> const json& {
+    const json& v = top[key];
+    if (!v.is_array()) top.fail(key, "expected a list, got " + shortDump(v));
+    return v;
+  };
+  if (top.has("objects")) {
+    const json& objs = list("objects");
+    for (size_t i = 0; i < objs.size(); ++i) {
+      builder.parseObject(objs[i], "/objects/" + std::to_string(i));
+    }
+  }
+  if (top.has("lights")) {
+    const json& ls = list("lights");
+    for (size_t i = 0; i < ls.size(); ++i) {
+      scene.lights.push_back(parseLight(ctx, ls[i], "/lights/" + std::to_string(i)));
+    }
+  }
+  if (top.has("light_generators")) {
+    const json& gs = list("light_generators");
+    for (size_t i = 0; i < gs.size(); ++i) {
+      expandGenerator(ctx, gs[i], "/light_generators/" + std::to_string(i), scene.lights);
+    }
+  }
+  if (top.has("environment")) scene.environment = parseEnvironment(ctx, top["environment"]);
+  if (top.has("settings")) scene.settings = parseSettings(ctx, top["settings"]);
+  return scene;
+}
+
+Scene loadScene(const std::string& path, const std::vector<std::string>& overrides,
+                std::vector<std::string>* warnings) {
+  const std::string text = readFile(path);
+  json j;
+  try {
+    j = json::parse(text);
+  } catch (const json::parse_error& e) {
+    throw SceneError(path + ": invalid JSON: " + e.what());
+  }
+  for (const std::string& o : overrides) applyOverride(j, o, path);
+  return parseScene(j, path, warnings);
+}
+
+}  // namespace hv

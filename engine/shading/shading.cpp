@@ -1,1 +1,0 @@
-#include "shading/shading.hpp"

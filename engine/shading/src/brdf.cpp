@@ -1,0 +1,102 @@
+#include "halfvec/shading/brdf.hpp"
+
+namespace hv {
+
+namespace g = hv::glsl;
+
+BrdfConfig BrdfConfig::fromSettings(const RenderSettings& s) {
+  BrdfConfig c;
+  c.d = s.d;
+  c.v = s.v;
+  c.f = s.f;
+  c.diffuse = s.diffuse;
+  c.remap_roughness = s.remap_roughness;
+  return c;
+}
+
+float evalD(const BrdfConfig& c, float alpha, float NoH) {
+  switch (c.d) {
+    case DistributionTerm::GGX:
+      return g::D_GGX(alpha, NoH);
+    case DistributionTerm::Beckmann:
+      return g::D_Beckmann(alpha, NoH);
+    case DistributionTerm::BlinnPhong:
+      return g::D_BlinnPhong(alpha, NoH);
+  }
+  return 0.0f;
+}
+
+float evalVForAlpha(const BrdfConfig& c, float alpha, float NoV, float NoL, float NoH, float VoH) {
+  switch (c.v) {
+    case VisibilityTerm::SchlickGGX:
+      return g::V_SchlickGGX(0.5f * alpha, NoV, NoL);
+    case VisibilityTerm::SmithGGXCorrelated:
+      return g::V_SmithGGXCorrelated(alpha, NoV, NoL);
+    case VisibilityTerm::SmithGGXCorrelatedFast:
+      return g::V_SmithGGXCorrelatedFast(alpha, NoV, NoL);
+    case VisibilityTerm::SmithGGXSeparable:
+      return g::V_SmithGGXSeparable(alpha, NoV, NoL);
+    case VisibilityTerm::SmithBeckmannSeparable:
+      return g::V_SmithBeckmannSeparable(alpha, NoV, NoL);
+    case VisibilityTerm::CookTorrance:
+      return g::V_CookTorrance(NoH, NoV, NoL, VoH);
+    case VisibilityTerm::Implicit:
+      return g::V_Implicit();
+  }
+  return 0.0f;
+}
+
+float evalV(const BrdfConfig& c, float roughness, float alpha, float NoV, float NoL, float NoH,
+            float VoH) {
+  // Karis 2013 eq. 4: the Disney remap applies to Schlick-GGX only (= glsl visibility()).
+  const bool remap = c.remap_roughness && c.v == VisibilityTerm::SchlickGGX;
+  float alpha_v = remap ? g::remappedVisibilityAlpha(roughness) : alpha;
+  return evalVForAlpha(c, alpha_v, NoV, NoL, NoH, VoH);
+}
+
+glm::vec3 evalF(const BrdfConfig& c, const glm::vec3& f0, float VoH) {
+  switch (c.f) {
+    case FresnelTerm::SchlickPow5:
+      return g::F_Schlick(f0, 1.0f, VoH);
+    case FresnelTerm::SchlickSG:
+      return g::F_SchlickSG(f0, 1.0f, VoH);
+    case FresnelTerm::Exact:
+      return g::F_ExactDielectric(f0, VoH);
+    case FresnelTerm::SchlickF90Occlusion:
+      return g::F_SchlickF90Occlusion(f0, VoH);
+  }
+  return glm::vec3(0.0f);
+}
+
+float evalFd(const BrdfConfig& c, float roughness, float NoV, float NoL, float LoH) {
+  switch (c.diffuse) {
+    case DiffuseTerm::Lambert:
+      return g::Fd_Lambert();
+    case DiffuseTerm::Burley:
+      return g::Fd_Burley(roughness, NoV, NoL, LoH);
+  }
+  return 0.0f;
+}
+
+std::vector<std::pair<std::string, std::string>> brdfDefines(const RenderSettings& s) {
+  auto num = [](auto e) { return std::to_string(static_cast<int>(e)); };
+  auto flag = [](bool b) { return std::string(b ? "1" : "0"); };
+  // The define values are the enum values: brdf.glsl's HV_D_* / HV_V_* / HV_F_* / HV_FD_* follow
+  // the enum order of scene.hpp (checked by tests/shading/test_brdf.cpp), likewise
+  // HV_SPHERE_DIFFUSE and HV_TUBE_SPECULAR in lights.glsl.
+  return {
+      {"HV_BRDF_D", num(s.d)},
+      {"HV_BRDF_V", num(s.v)},
+      {"HV_BRDF_F", num(s.f)},
+      {"HV_BRDF_FD", num(s.diffuse)},
+      {"HV_REMAP_ROUGHNESS", flag(s.remap_roughness)},
+      {"HV_FALLOFF_PLUS_ONE", flag(s.falloff_plus_one)},
+      {"HV_SPHERE_DIFFUSE", num(s.sphere_diffuse)},
+      {"HV_SPHERE_NORMALIZATION", flag(s.sphere_normalization)},
+      {"HV_TUBE_SPECULAR", num(s.tube_specular)},
+      {"HV_TUBE_NORMALIZATION", flag(s.tube_normalization)},
+      {"HV_DIRECT_TERMS", std::to_string(int(s.direct_terms))},
+  };
+}
+
+}  // namespace hv

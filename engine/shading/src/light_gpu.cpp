@@ -1,0 +1,37 @@
+#include "halfvec/shading/light_gpu.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hv {
+
+GpuLight packLight(const Light& light) {
+  GpuLight g{};
+  float radius = light.type == LightType::Point ? 0.0f : std::max(light.radius, 0.0f);
+  float len = light.type == LightType::Tube ? std::max(light.length, 0.0f) : 0.0f;
+  glm::vec3 axis = light.axis;
+  float axis_len = glm::length(axis);
+  axis = (std::isfinite(axis_len) && axis_len > 1e-20f) ? axis / axis_len : glm::vec3(1, 0, 0);
+  // 1e-4 m: a smaller (or zero/negative) range would make 1/R infinite; such a light is dark.
+  float range = std::max(light.range, 1e-4f);
+  g.position_radius = glm::vec4(light.position, radius);
+  // 1/R shares the color's texel: what a point or sphere light reads is 2 of the 4 texels.
+  g.color_inv_range = glm::vec4(light.color * light.intensity, 1.0f / range);
+  g.axis_length = glm::vec4(axis, len);
+  // The eq. 9 window is 0 at distance R from the nearest point of the segment (tubes) or from
+  // the center (points, spheres); a tube's segment reaches len/2 from its center.
+  g.params = glm::vec4(range, float(static_cast<int>(light.type)), range + 0.5f * len, 0.0f);
+  return g;
+}
+
+std::vector<std::pair<std::string, std::string>> lightTypeDefines(
+    const std::vector<Light>& lights) {
+  bool has[3] = {false, false, false};
+  for (const Light& l : lights) has[static_cast<int>(l.type)] = true;
+  auto flag = [](bool b) { return std::string(b ? "1" : "0"); };
+  return {{"HV_HAS_POINT_LIGHTS", flag(has[0])},
+          {"HV_HAS_SPHERE_LIGHTS", flag(has[1])},
+          {"HV_HAS_TUBE_LIGHTS", flag(has[2])}};
+}
+
+}  // namespace hv

@@ -1,0 +1,1 @@
+#include "halfvec/shading/shading.hpp"

@@ -1,0 +1,502 @@
+// The panel models: plain C++ over hv::Scene, no ImGui, no GL.
+#include "halfvec/ui/panels.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "halfvec/scene/enums.hpp"
+
+namespace hv::ui {
+
+namespace {
+
+glm::vec3 clamp01(glm::vec3 v) {
+  return glm::clamp(v, glm::vec3(0.0f), glm::vec3(1.0f));
+}
+float clamp01(float v) {
+  return std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f;
+}
+glm::vec3 finiteOr(glm::vec3 v, glm::vec3 fallback) {
+  return (std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)) ? v : fallback;
+}
+
+bool sameMaterial(const Material& a, const Material& b) {
+  return a.base_color == b.base_color && a.metallic == b.metallic && a.roughness == b.roughness &&
+         a.cavity == b.cavity && a.emissive == b.emissive && a.model == b.model;
+}
+
+bool sameLight(const Light& a, const Light& b) {
+  return a.type == b.type && a.position == b.position && a.color == b.color &&
+         a.intensity == b.intensity && a.radius == b.radius && a.length == b.length &&
+         a.axis == b.axis && a.range == b.range;
+}
+
+nlohmann::ordered_json vec3Json(glm::vec3 v) {
+  return nlohmann::ordered_json::array({v.x, v.y, v.z});
+}
+
+void writeMaterialFields(nlohmann::ordered_json& j, const Material& m) {
+  j["base_color"] = vec3Json(m.base_color);
+  j["metallic"] = m.metallic;
+  j["roughness"] = m.roughness;
+  j["cavity"] = m.cavity;
+  j["emissive"] = vec3Json(m.emissive);
+  j["shading_model"] = std::string(toString(m.model));
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+
+void MaterialPanelModel::attach(Scene& scene) {
+  scene_ = &scene;
+  loaded_ = scene.materials;
+  selected_ = std::clamp(selected_, 0, std::max(0, int(loaded_.size()) - 1));
+  dirty_ = false;
+}
+
+void MaterialPanelModel::select(int index) {
+  selected_ = std::clamp(index, 0, std::max(0, int(count()) - 1));
+}
+
+const Material& MaterialPanelModel::current() const {
+  if (!scene_ || scene_->materials.empty()) throw std::out_of_range("no materials");
+  return scene_->materials[size_t(selected_)];
+}
+
+Material* MaterialPanelModel::mut() {
+  if (!scene_ || scene_->materials.empty()) return nullptr;
+  return &scene_->materials[size_t(selected_)];
+}
+
+bool MaterialPanelModel::apply(const Material& before) {
+  const bool changed = !sameMaterial(before, current());
+  dirty_ = dirty_ || changed;
+  return changed;
+}
+
+bool MaterialPanelModel::setBaseColor(glm::vec3 c) {
+  Material* m = mut();
+  if (!m) return false;
+  const Material before = *m;
+  m->base_color = clamp01(finiteOr(c, before.base_color));
+  return apply(before);
+}
+
+bool MaterialPanelModel::setMetallic(float v) {
+  Material* m = mut();
+  if (!m) return false;
+  const Material before = *m;
+  m->metallic = clamp01(v);
+  return apply(before);
+}
+
+bool MaterialPanelModel::setRoughness(float v) {
+  Material* m = mut();
+  if (!m) return false;
+  const Material before = *m;
+  m->roughness = clamp01(v);
+  return apply(before);
+}
+
+bool MaterialPanelModel::setCavity(float v) {
+  Material* m = mut();
+  if (!m) return false;
+  const Material before = *m;
+  m->cavity = clamp01(v);
+  return apply(before);
+}
+
+bool MaterialPanelModel::setEmissive(glm::vec3 e) {
+  Material* m = mut();
+  if (!m) return false;
+  const Material before = *m;
+  m->emissive = glm::clamp(finiteOr(e, before.emissive), glm::vec3(0.0f), glm::vec3(kMaxEmissive));
+  return apply(before);
+}
+
+bool MaterialPanelModel::setShadingModel(ShadingModel model) {
+  Material* m = mut();
+  if (!m || model == ShadingModel::Background) return false;  // background is not a material
+  const Material before = *m;
+  m->model = model;
+  return apply(before);
+}
+
+bool MaterialPanelModel::reset() {
+  Material* m = mut();
+  if (!m || size_t(selected_) >= loaded_.size()) return false;
+  const Material before = *m;
+  *m = loaded_[size_t(selected_)];
+  return apply(before);
+}
+
+bool MaterialPanelModel::resetAll() {
+  if (!scene_) return false;
+  bool changed = false;
+  for (size_t i = 0; i < scene_->materials.size() && i < loaded_.size(); ++i) {
+    if (!sameMaterial(scene_->materials[i], loaded_[i])) {
+      scene_->materials[i] = loaded_[i];
+      changed = true;
+    }
+  }
+  dirty_ = dirty_ || changed;
+  return changed;
+}
+
+bool MaterialPanelModel::modified(int index) const {
+  if (!scene_ || index < 0 || size_t(index) >= loaded_.size() ||
+      size_t(index) >= scene_->materials.size()) {
+    return false;
+  }
+  return !sameMaterial(scene_->materials[size_t(index)], loaded_[size_t(index)]);
+}
+
+int MaterialPanelModel::saveMaterials(const std::string& path) const {
+  if (!scene_) throw std::runtime_error("no scene");
+  nlohmann::ordered_json root;
+  {
+    std::ifstream in(path);
+    if (!in) throw std::runtime_error("cannot open " + path);
+    try {
+      root = nlohmann::ordered_json::parse(in);
+    } catch (const std::exception& e) {
+      throw std::runtime_error(path + ": " + e.what());
+    }
+  }
+  int written = 0;
+  std::vector<bool> done(scene_->materials.size(), false);
+  auto find = [&](const std::string& name) -> const Material* {
+    for (size_t i = 0; i < scene_->materials.size(); ++i) {
+      if (!done[i] && scene_->materials[i].name == name) {
+        done[i] = true;
+        return &scene_->materials[i];
+      }
+    }
+    return nullptr;
+  };
+  if (root.contains("materials")) {
+    auto& mats = root["materials"];
+    if (mats.is_object()) {
+      for (auto& [name, j] : mats.items()) {
+        if (const Material* m = find(name); m && j.is_object()) {
+          writeMaterialFields(j, *m);
+          ++written;
+        }
+      }
+    } else if (mats.is_array()) {
+      for (auto& j : mats) {
+        if (!j.is_object() || !j.contains("name") || !j["name"].is_string()) continue;
+        if (const Material* m = find(j["name"].get<std::string>())) {
+          writeMaterialFields(j, *m);
+          ++written;
+        }
+      }
+    }
+  }
+  // Inline materials carry their object's name (the loader's default "objectN" included).
+  if (root.contains("objects") && root["objects"].is_array()) {
+    auto& objs = root["objects"];
+    for (size_t i = 0; i < objs.size(); ++i) {
+      auto& o = objs[i];
+      if (!o.is_object() || !o.contains("material") || !o["material"].is_object()) continue;
+      const std::string name = o.contains("name") && o["name"].is_string()
+                                   ? o["name"].get<std::string>()
+                                   : "object" + std::to_string(i);
+      if (const Material* m = find(name)) {
+        writeMaterialFields(o["material"], *m);
+        ++written;
+      }
+    }
+  }
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp);
+    if (!out) throw std::runtime_error("cannot write " + tmp);
+    out << root.dump(2) << "\n";
+    if (!out) throw std::runtime_error("write failed: " + tmp);
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    throw std::runtime_error("cannot replace " + path);
+  }
+  return written;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+std::vector<Light> generateLights(const LightGenerator& gen) {
+  std::vector<Light> out;
+  if (gen.count <= 0) return out;
+  std::mt19937 rng(gen.seed);
+  // Own uniform mapping: std::uniform_real_distribution is not specified bit-exactly across
+  // standard libraries, and the generator must be reproducible.
+  auto uni = [&](float a, float b) {
+    const float t = float(rng() >> 8) * (1.0f / 16777216.0f);
+    return a + (b - a) * t;
+  };
+  const float wp = std::max(gen.point_weight, 0.0f), ws = std::max(gen.sphere_weight, 0.0f),
+              wt = std::max(gen.tube_weight, 0.0f);
+  const float total = wp + ws + wt > 0.0f ? wp + ws + wt : 1.0f;
+  const glm::vec3 lo = glm::min(gen.box_min, gen.box_max), hi = glm::max(gen.box_min, gen.box_max);
+  out.reserve(size_t(gen.count));
+  for (int i = 0; i < gen.count; ++i) {
+    Light l;
+    const float pick = uni(0.0f, total);
+    l.type = (wp + ws + wt <= 0.0f || pick < wp) ? LightType::Point
+             : pick < wp + ws                    ? LightType::Sphere
+                                                 : LightType::Tube;
+    l.position = {uni(lo.x, hi.x), uni(lo.y, hi.y), uni(lo.z, hi.z)};
+    // Saturated hue: HSV with s = 0.6, v = 1.
+    const float h = uni(0.0f, 6.0f);
+    const float x = 1.0f - std::abs(std::fmod(h, 2.0f) - 1.0f);
+    glm::vec3 c = h < 1   ? glm::vec3(1, x, 0)
+                  : h < 2 ? glm::vec3(x, 1, 0)
+                  : h < 3 ? glm::vec3(0, 1, x)
+                  : h < 4 ? glm::vec3(0, x, 1)
+                  : h < 5 ? glm::vec3(x, 0, 1)
+                          : glm::vec3(1, 0, x);
+    l.color = glm::mix(glm::vec3(1.0f), c, 0.6f);
+    l.intensity = uni(std::max(gen.intensity_min, 0.0f),
+                      std::max(gen.intensity_max, std::max(gen.intensity_min, 0.0f)));
+    l.range = std::max(gen.range, 0.01f);
+    if (l.type != LightType::Point) l.radius = std::max(gen.radius, 0.0f);
+    if (l.type == LightType::Tube) {
+      l.length = std::max(gen.length, 0.0f);
+      const float phi = uni(0.0f, 6.2831853f);
+      l.axis = {std::cos(phi), 0.0f, std::sin(phi)};
+    }
+    out.push_back(l);
+  }
+  return out;
+}
+
+void LightsPanelModel::attach(Scene& scene) {
+  scene_ = &scene;
+  selected_ = scene.lights.empty() ? -1 : std::clamp(selected_, 0, int(scene.lights.size()) - 1);
+  dirty_ = false;
+}
+
+void LightsPanelModel::select(int index) {
+  selected_ = count() == 0 ? -1 : std::clamp(index, 0, int(count()) - 1);
+}
+
+const Light* LightsPanelModel::current() const {
+  if (!scene_ || selected_ < 0 || size_t(selected_) >= scene_->lights.size()) return nullptr;
+  return &scene_->lights[size_t(selected_)];
+}
+
+Light* LightsPanelModel::mut() {
+  return const_cast<Light*>(current());
+}
+
+int LightsPanelModel::add(LightType type) {
+  if (!scene_) return -1;
+  Light l;
+  l.type = type;
+  l.position = scene_->camera.target + glm::vec3(0.0f, 1.0f, 0.0f);
+  if (type != LightType::Point) l.radius = 0.1f;
+  if (type == LightType::Tube) l.length = 1.0f;
+  scene_->lights.push_back(l);
+  selected_ = int(scene_->lights.size()) - 1;
+  dirty_ = true;
+  return selected_;
+}
+
+bool LightsPanelModel::remove(int index) {
+  if (!scene_ || index < 0 || size_t(index) >= scene_->lights.size()) return false;
+  scene_->lights.erase(scene_->lights.begin() + index);
+  select(selected_ > index ? selected_ - 1 : selected_);
+  dirty_ = true;
+  return true;
+}
+
+void LightsPanelModel::clear() {
+  if (!scene_) return;
+  scene_->lights.clear();
+  selected_ = -1;
+  dirty_ = true;
+}
+
+void LightsPanelModel::generate(const LightGenerator& gen, bool replace) {
+  if (!scene_) return;
+  if (replace) scene_->lights.clear();
+  auto lights = generateLights(gen);
+  scene_->lights.insert(scene_->lights.end(), lights.begin(), lights.end());
+  select(selected_ < 0 ? 0 : selected_);
+  dirty_ = true;
+}
+
+#define HV_LIGHT_SETTER(NAME, ARG, EXPR)    \
+  bool LightsPanelModel::NAME(ARG) {        \
+    Light* l = mut();                       \
+    if (!l) return false;                   \
+    const Light before = *l;                \
+    EXPR;                                   \
+    const bool ch = !sameLight(before, *l); \
+    dirty_ = dirty_ || ch;                  \
+    return ch;                              \
+  }
+
+HV_LIGHT_SETTER(setType, LightType t, l->type = t)
+HV_LIGHT_SETTER(setPosition, glm::vec3 p, l->position = finiteOr(p, before.position))
+HV_LIGHT_SETTER(setColor, glm::vec3 c, l->color = glm::max(finiteOr(c, before.color), glm::vec3(0)))
+HV_LIGHT_SETTER(setIntensity, float v, l->intensity = std::isfinite(v) ? std::max(v, 0.0f) : 0.0f)
+HV_LIGHT_SETTER(setRadius, float v, l->radius = std::isfinite(v) ? std::max(v, 0.0f) : 0.0f)
+HV_LIGHT_SETTER(setLength, float v, l->length = std::isfinite(v) ? std::max(v, 0.0f) : 0.0f)
+HV_LIGHT_SETTER(setAxis, glm::vec3 a,
+                l->axis = glm::length(finiteOr(a, glm::vec3(0))) > 1e-6f ? glm::normalize(a)
+                                                                         : before.axis)
+HV_LIGHT_SETTER(setRange, float v, l->range = std::isfinite(v) ? std::max(v, 0.01f) : before.range)
+#undef HV_LIGHT_SETTER
+
+// ---------------------------------------------------------------------------------------------
+
+namespace {
+template <class E, E RenderSettings::*M>
+RenderSettingsModel::EnumField enumField(const char* label, bool needs_set_scene = false) {
+  return {label, enumNames<E>(), [](const RenderSettings& s) { return int(s.*M); },
+          [](RenderSettings& s, int v) { s.*M = E(v); }, needs_set_scene};
+}
+}  // namespace
+
+RenderSettingsModel::RenderSettingsModel() {
+  using S = RenderSettings;
+  enums_ = {
+      enumField<DistributionTerm, &S::d>("distribution (D)"),
+      enumField<VisibilityTerm, &S::v>("visibility (V)"),
+      enumField<FresnelTerm, &S::f>("fresnel (F)"),
+      enumField<DiffuseTerm, &S::diffuse>("diffuse"),
+      enumField<SphereDiffuse, &S::sphere_diffuse>("sphere diffuse"),
+      enumField<TubeSpecular, &S::tube_specular>("tube specular"),
+      enumField<Culling, &S::culling>("culling"),
+      enumField<EnvBrdf, &S::env_brdf>("env BRDF"),
+      enumField<Irradiance, &S::irradiance>("irradiance", true),
+      enumField<ToneMap, &S::tone_map>("tone map"),
+      enumField<Gamma, &S::gamma>("gamma"),
+  };
+  bools_ = {
+      {"remap roughness (analytic)", &S::remap_roughness},
+      {"falloff 1/(d^2+1)", &S::falloff_plus_one},
+      {"sphere normalization", &S::sphere_normalization},
+      {"tube normalization", &S::tube_normalization},
+      {"energy compensation", &S::energy_compensation},
+      {"specular occlusion", &S::specular_occlusion},
+      {"dither", &S::dither},
+  };
+}
+
+bool RenderSettingsModel::setEnum(size_t field, int value) {
+  if (!scene_ || field >= enums_.size()) return false;
+  const auto& f = enums_[field];
+  if (value < 0 || size_t(value) >= f.names.size() || f.get(scene_->settings) == value) {
+    return false;
+  }
+  f.set(scene_->settings, value);
+  needs_set_scene_ = needs_set_scene_ || f.needs_set_scene;
+  return true;
+}
+
+bool RenderSettingsModel::setBool(size_t field, bool value) {
+  if (!scene_ || field >= bools_.size()) return false;
+  bool& b = scene_->settings.*(bools_[field].member);
+  if (b == value) return false;
+  b = value;
+  return true;
+}
+
+bool RenderSettingsModel::setExposure(float v) {
+  if (!scene_ || !std::isfinite(v)) return false;
+  v = std::clamp(v, 1.0f / 64.0f, 64.0f);
+  if (scene_->settings.exposure == v) return false;
+  scene_->settings.exposure = v;
+  return true;
+}
+
+bool RenderSettingsModel::setEnvironmentIntensity(float v) {
+  if (!scene_ || !std::isfinite(v)) return false;
+  v = std::clamp(v, 0.0f, 1000.0f);
+  if (scene_->environment.intensity == v) return false;
+  scene_->environment.intensity = v;
+  needs_set_scene_ = true;
+  return true;
+}
+
+bool RenderSettingsModel::setEnvironmentRotation(float deg) {
+  if (!scene_ || !std::isfinite(deg)) return false;
+  deg = std::fmod(deg, 360.0f);
+  if (scene_->environment.rotation_deg == deg) return false;
+  scene_->environment.rotation_deg = deg;
+  needs_set_scene_ = true;
+  return true;
+}
+
+bool RenderSettingsModel::setEnvironmentKind(EnvironmentKind k) {
+  if (!scene_ || scene_->environment.kind == k) return false;
+  if (k == EnvironmentKind::HdrFile && scene_->environment.path.empty()) return false;
+  scene_->environment.kind = k;
+  needs_set_scene_ = true;
+  return true;
+}
+
+bool RenderSettingsModel::setEnvironmentColor(glm::vec3 c) {
+  if (!scene_) return false;
+  for (int i = 0; i < 3; ++i) c[i] = std::isfinite(c[i]) ? std::clamp(c[i], 0.0f, 1000.0f) : 0.0f;
+  if (scene_->environment.color == c) return false;
+  scene_->environment.color = c;
+  needs_set_scene_ = needs_set_scene_ || scene_->environment.kind == EnvironmentKind::Uniform;
+  return true;
+}
+
+bool RenderSettingsModel::setEnvironmentHdr(const std::string& path) {
+  if (!scene_ || path.empty()) return false;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return false;
+  Environment& e = scene_->environment;
+  if (e.kind == EnvironmentKind::HdrFile && e.path == path) return false;
+  e.kind = EnvironmentKind::HdrFile;
+  e.path = path;
+  needs_set_scene_ = true;
+  return true;
+}
+
+std::span<const char* const> RenderSettingsModel::debugViewNames() {
+  static const std::array<const char*, render::kDebugViewCount> names = [] {
+    std::array<const char*, render::kDebugViewCount> n{};
+    for (size_t i = 0; i < n.size(); ++i) n[i] = render::toString(render::DebugView(i));
+    return n;
+  }();
+  return names;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+void StatsModel::push(const render::FrameStats& stats, double cpu_frame_ms) {
+  last_ = stats;
+  if (frame_ms_.size() >= kHistory) frame_ms_.erase(frame_ms_.begin());
+  if (gpu_ms_.size() >= kHistory) gpu_ms_.erase(gpu_ms_.begin());
+  frame_ms_.push_back(float(cpu_frame_ms));
+  gpu_ms_.push_back(float(stats.total_ms));
+}
+
+double StatsModel::averageFrameMs() const {
+  if (frame_ms_.empty()) return 0.0;
+  double s = 0;
+  for (float v : frame_ms_) s += v;
+  return s / double(frame_ms_.size());
+}
+
+double StatsModel::averageGpuMs() const {
+  if (gpu_ms_.empty()) return 0.0;
+  double s = 0;
+  for (float v : gpu_ms_) s += v;
+  return s / double(gpu_ms_.size());
+}
+
+}  // namespace hv::ui

@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# Checks that every sample scene renders bit-identically to another revision (default: HEAD):
+# builds REV in a temporary worktree (no tests), renders each sample scene headless with both
+# builds (HDR PFM and tone-mapped PNG at --size, default 320x180) and compares the files byte for
+# byte. Exit 0 when every image is identical, 1 otherwise (the differing files are listed).
+# REV renders each scene twice: an image that differs between those two runs (floating-point
+# sums in a run-dependent order) is reported as NONDETERMINISTIC with the size of both
+# differences and does not fail the check when the tree's difference is no larger.
+# Usage: bash scripts/same_renders.sh [REV] [--size WxH]
+# Behaviour-preserving refactors are checked with it (docs/architecture.md).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+rev=HEAD
+size=320x180
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --size) size="$2"; shift 2 ;;
+    -h|--help) sed -n '2,8p' "$0"; exit 0 ;;
+    *) rev="$1"; shift ;;
+  esac
+done
+root=$(pwd)
+if [ -d ../shared/assets ]; then export HV_ASSETS_DIR="$(cd ../shared/assets && pwd)"; fi
+work=$(mktemp -d)
+cleanup() { git -C "$root" worktree remove --force "$work/base" >/dev/null 2>&1 || true; rm -rf "$work"; }
+trap cleanup EXIT
+launcher=()
+if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
+
+echo "[same_renders] building $rev in a temporary worktree" >&2
+git worktree add --detach "$work/base" "$rev" >/dev/null 2>&1
+cmake -S "$work/base" -B "$work/base/build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DHV_BUILD_TESTS=OFF \
+  "${launcher[@]}" >/dev/null
+cmake --build "$work/base/build" --target halfvec >/dev/null
+echo "[same_renders] building the working tree" >&2
+bash scripts/build.sh >/dev/null
+
+# Largest absolute channel difference of two PFM files (halfvec compare's max_abs).
+maxabs() { "$root/build/halfvec" compare "$1" "$2" | sed -n 's/.*"max_abs": \([^,]*\),.*/\1/p'; }
+
+status=0
+n=0
+for scene in samples/scenes/*.json; do
+  name=$(basename "$scene" .json)
+  for side in base base2 tree; do
+    if [ "$side" = tree ]; then exe="$root/build/halfvec"; dir="$root"; else exe="$work/base/build/halfvec"; dir="$work/base"; fi
+    mkdir -p "$work/out/$side"
+    (cd "$dir" && XDG_CACHE_HOME="$work/cache-$side" "$exe" render "$root/$scene" --size "$size" \
+      --out "$work/out/$side/$name.png" --hdr "$work/out/$side/$name.pfm" >/dev/null 2>"$work/out/$side/$name.err") || {
+      echo "[same_renders] $name: render failed ($side):" >&2; cat "$work/out/$side/$name.err" >&2; status=1; }
+  done
+  for ext in pfm png; do
+    n=$((n + 1))
+    if cmp -s "$work/out/base/$name.$ext" "$work/out/tree/$name.$ext"; then
+      echo "same       $name.$ext"
+    elif [ "$ext" = pfm ] && ! cmp -s "$work/out/base/$name.$ext" "$work/out/base2/$name.$ext"; then
+      self=$(maxabs "$work/out/base/$name.pfm" "$work/out/base2/$name.pfm")
+      tree=$(maxabs "$work/out/base/$name.pfm" "$work/out/tree/$name.pfm")
+      if awk -v a="$tree" -v b="$self" 'BEGIN { exit !(a <= b) }'; then
+        echo "NONDETERMINISTIC $name.$ext: $rev differs from itself by up to $self, the tree by $tree"
+      else
+        echo "DIFFERENT  $name.$ext: by up to $tree ($rev differs from itself by up to $self)"; status=1
+      fi
+    else
+      echo "DIFFERENT  $name.$ext"; status=1
+    fi
+  done
+done
+if [ $status -eq 0 ]; then echo "[same_renders] all $n images identical to $rev" >&2; fi
+exit $status
