@@ -14,12 +14,12 @@
 #include <vector>
 
 #include "app/commands.hpp"
-#include "app/engine_aov.hpp"
+#include "halfvec/eval/engine_aov.hpp"
 #include "halfvec/ibl/ibl.hpp"
 #include "halfvec/ibl/ibl_math.hpp"
 #include "halfvec/image/metrics.hpp"
 #include "halfvec/platform/context.hpp"
-#include "halfvec/reference/light_accuracy.hpp"
+#include "halfvec/eval/light_accuracy.hpp"
 #include "halfvec/reference/reference.hpp"
 #include "halfvec/render/renderer.hpp"
 #include "halfvec/scene/primitives.hpp"
@@ -99,7 +99,7 @@ struct Worst {
   bool headline = true;  // false: configurations where the reference is a sliver (see text)
 };
 
-Worst summarize(const std::string& name, std::vector<std::pair<TermError, std::string>> v) {
+Worst summarize(const std::string& name, std::vector<std::pair<eval::TermError, std::string>> v) {
   Worst w;
   w.name = name;
   std::vector<double> errs;
@@ -123,7 +123,7 @@ Worst summarize(const std::string& name, std::vector<std::pair<TermError, std::s
 // ---- lit-pixel image metrics ----
 
 struct LitStats {
-  double rel_error = 0.0, bias = 0.0, noise = 0.0;  // as TermError, over pixels and channels
+  double rel_error = 0.0, bias = 0.0, noise = 0.0;  // as eval::TermError, over pixels and channels
   // sum of the per-pixel standard errors / sum R: the part of rel_error that noise alone gives
   // (about 0.8 times this for Gaussian noise)
   double pixel_noise = 0.0;
@@ -207,7 +207,7 @@ void pointLightSection(Doc& doc, const Options& opt) {
   const int w = opt.quick ? 64 : 240, h = opt.quick ? 48 : 180;
   render::Renderer r;
   r.setScene(s);
-  const auto aov = renderEngineAovs(r, s, w, h);
+  const auto aov = eval::renderEngineAovs(r, s, w, h);
   const auto g = r.readGBuffer();
   ReferenceOptions ro;
   ro.samples = 4;
@@ -249,7 +249,7 @@ void pointLightSection(Doc& doc, const Options& opt) {
 }
 
 void sphereSection(Doc& doc, const Options& opt) {
-  SphereSweepGrid g;
+  eval::SphereSweepGrid g;
   g.threads = opt.threads;
   // radius/distance 1 would put the shading point exactly on the sphere, where the reference's
   // "inside" and "cone" cases meet; 0.98 is the touching case.
@@ -263,7 +263,7 @@ void sphereSection(Doc& doc, const Options& opt) {
     g.samples = 4096;
   }
   const auto t0 = std::chrono::steady_clock::now();
-  const auto rows = sweepSphere(g);
+  const auto rows = eval::sweepSphere(g);
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   auto& md = doc.md;
   md << "## Sphere lights\n\n"
@@ -288,13 +288,13 @@ void sphereSection(Doc& doc, const Options& opt) {
      << "specular " << pct(max_noise_spec) << ", diffuse " << pct(max_noise_diff) << ".\n\n";
 
   // Entirely above the horizon: elevation >= the sphere's angular radius asin(r/d).
-  auto above = [](const SphereSweepRow& r) {
+  auto above = [](const eval::SphereSweepRow& r) {
     return double(r.elevation_deg) >=
            std::asin(std::min(double(r.radius), 1.0)) * 180.0 / 3.14159265358979;
   };
   // Specular: roughness x radius, worst over elevations, per normalization.
   auto worstOverElevation = [&](float rough, float rad, int sn) {
-    TermError w;
+    eval::TermError w;
     for (auto& r : rows) {
       if (r.roughness != rough || r.radius != rad || !r.specular[sn].valid || !above(r)) continue;
       if (!w.valid || r.specular[sn].rel_error > w.rel_error) w = r.specular[sn];
@@ -311,7 +311,7 @@ void sphereSection(Doc& doc, const Options& opt) {
     for (float rough : g.roughness) {
       std::vector<std::string> cells{num(rough)};
       for (float rad : g.radius) {
-        const TermError t = worstOverElevation(rough, rad, sn);
+        const eval::TermError t = worstOverElevation(rough, rad, sn);
         cells.push_back(t.valid ? pct(t.rel_error) + " (" + spct(t.bias) + ")" : "n/a");
       }
       md << row(cells);
@@ -402,7 +402,7 @@ void sphereSection(Doc& doc, const Options& opt) {
   double max_bias = -1e30, max_peak = 0.0;
   std::string max_bias_where, max_peak_where;
   for (auto& r : rows) {
-    const TermError& t = r.specular[1];
+    const eval::TermError& t = r.specular[1];
     if (!t.valid || !above(r)) continue;
     ++valid;
     if (t.bias > 0.1) ++bright;
@@ -481,11 +481,11 @@ void sphereSection(Doc& doc, const Options& opt) {
   }
   md << "\n";
 
-  auto where = [](const SphereSweepRow& r) {
+  auto where = [](const eval::SphereSweepRow& r) {
     return "sphere, roughness " + num(r.roughness) + ", r/d " + num(r.radius) + ", elevation " +
            num(r.elevation_deg);
   };
-  std::vector<std::pair<TermError, std::string>> s1, s0, s1h, s0h, d0, d1;
+  std::vector<std::pair<eval::TermError, std::string>> s1, s0, s1h, s0h, d0, d1;
   for (auto& r : rows) {
     (above(r) ? s1 : s1h).push_back({r.specular[1], where(r)});
     (above(r) ? s0 : s0h).push_back({r.specular[0], where(r)});
@@ -507,7 +507,7 @@ void sphereSection(Doc& doc, const Options& opt) {
 }
 
 void tubeSection(Doc& doc, const Options& opt) {
-  TubeSweepGrid g;
+  eval::TubeSweepGrid g;
   g.threads = opt.threads;
   if (opt.quick) {
     g.roughness = {0.2f, 0.6f};
@@ -518,7 +518,7 @@ void tubeSection(Doc& doc, const Options& opt) {
     g.samples = 4096;
   }
   const auto t0 = std::chrono::steady_clock::now();
-  const auto rows = sweepTube(g);
+  const auto rows = eval::sweepTube(g);
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   auto& md = doc.md;
   md << "## Tube lights\n\n"
@@ -592,11 +592,11 @@ void tubeSection(Doc& doc, const Options& opt) {
     md << row(cells);
   }
   md << "\n";
-  auto where = [](const TubeSweepRow& r) {
+  auto where = [](const eval::TubeSweepRow& r) {
     return "tube, roughness " + num(r.roughness) + ", len " + num(r.length) + ", r " +
            num(r.radius);
   };
-  std::vector<std::pair<TermError, std::string>> v[2][2], d;
+  std::vector<std::pair<eval::TermError, std::string>> v[2][2], d;
   for (auto& r : rows) {
     for (int ts = 0; ts < 2; ++ts)
       for (int tn = 0; tn < 2; ++tn) v[ts][tn].push_back({r.specular[ts][tn], where(r)});
@@ -684,7 +684,7 @@ void ambientSection(Doc& doc, const Options& opt) {
         "and channels, bias likewise signed, noise = the reference's relative standard error "
         "of the sum (the floor for the bias) / sum of its per-pixel standard errors over sum R "
         "(the floor for the rel. error, which adds per-pixel noise).\n\n";
-  std::vector<std::pair<TermError, std::string>> spec_all, spec_approx_all, diff_all;
+  std::vector<std::pair<eval::TermError, std::string>> spec_all, spec_approx_all, diff_all;
   for (auto& e : envs) {
     md << "### " << e.name << "\n\n";
     if (!e.skipped.empty()) {
@@ -698,9 +698,9 @@ void ambientSection(Doc& doc, const Options& opt) {
     }
     render::Renderer r;
     r.setScene(s);
-    const auto aov = renderEngineAovs(r, s, w, h);
+    const auto aov = eval::renderEngineAovs(r, s, w, h);
     s.settings.env_brdf = EnvBrdf::Analytic;
-    const auto aov_approx = renderEngineAovs(r, s, w, h);
+    const auto aov_approx = eval::renderEngineAovs(r, s, w, h);
     s.settings.env_brdf = EnvBrdf::Table;
     const auto g = r.readGBuffer();
     ReferenceOptions ro;
@@ -726,7 +726,7 @@ void ambientSection(Doc& doc, const Options& opt) {
                  spct(sa.bias), pct(df.rel_error), spct(df.bias), noise(df)});
       // Summarized by |bias| over the sphere: rel. error adds the reference's per-pixel noise.
       auto te = [](const LitStats& l) {
-        TermError t;
+        eval::TermError t;
         t.valid = l.ref_sum > 0.0;
         t.rel_error = std::abs(l.bias);
         t.bias = l.bias;
@@ -815,7 +815,7 @@ void sceneSection(Doc& doc, const Options& opt, const fs::path& out_md) {
         1, int(std::lround(double(width) * s.settings.height / std::max(1, s.settings.width))));
     render::Renderer r;
     r.setScene(s);
-    const auto aov = renderEngineAovs(r, s, w, h);
+    const auto aov = eval::renderEngineAovs(r, s, w, h);
     const auto g = r.readGBuffer();
     ReferenceOptions ro;
     ro.samples = samples;

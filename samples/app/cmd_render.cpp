@@ -8,7 +8,7 @@
 
 #include "app/commands.hpp"
 #include "halfvec/ibl/ibl.hpp"
-#include "app/engine_aov.hpp"
+#include "halfvec/eval/engine_aov.hpp"
 #include "halfvec/platform/context.hpp"
 #include "halfvec/render/renderer.hpp"
 #include "halfvec/scene/enums.hpp"
@@ -154,7 +154,7 @@ int cmdRender(const Args& args) {
   writePng(ra.out, renderer.readLdr());
   if (!ra.hdr.empty()) writePfm(ra.hdr, renderer.readHdr());
   if (!ra.aov.empty()) {
-    const auto aovs = renderEngineAovs(renderer, scene, w, h);
+    const auto aovs = eval::renderEngineAovs(renderer, scene, w, h);
     std::filesystem::create_directories(ra.aov);
     for (int k = 0; k < kReferenceAovCount; ++k) {
       const auto which = static_cast<ReferenceAov>(k);

@@ -2,7 +2,7 @@
 #include <cstdio>
 
 #include "app/commands.hpp"
-#include "app/stability.hpp"
+#include "halfvec/eval/stability.hpp"
 #include "halfvec/platform/context.hpp"
 
 namespace hv::app {
@@ -23,7 +23,7 @@ Options:
 }  // namespace
 
 int cmdStability(const Args& args) {
-  StabilityOptions o;
+  eval::StabilityOptions o;
   for (size_t i = 0; i < args.size(); ++i) {
     if (args[i] == "--help" || args[i] == "-h") {
       std::fputs(kHelp, stdout);
@@ -41,7 +41,7 @@ int cmdStability(const Args& args) {
   std::printf("%-7s %-28s %-36s %6s %6s %6s %12s\n", "light", "geometry", "option", "NaN", "Inf",
               "neg", "max");
   int bad = 0, total = 0;
-  runStabilitySweep(o, [&](const StabilityRow& r) {
+  eval::runStabilitySweep(o, [&](const eval::StabilityRow& r) {
     ++total;
     bad += !r.ok();
     std::printf("%-7s %-28s %-36s %6d %6d %6d %12.4g%s\n", r.light.c_str(), r.geometry.c_str(),

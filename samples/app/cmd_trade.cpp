@@ -1,4 +1,4 @@
-// `halfvec trade`: the speed/accuracy trade report of a scene (samples/app/trade.hpp,
+// `halfvec trade`: the speed/accuracy trade report of a scene (halfvec/eval/trade.hpp,
 // docs/trade.md).
 #include <cstdio>
 #include <filesystem>
@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "app/commands.hpp"
-#include "app/trade.hpp"
+#include "halfvec/eval/trade.hpp"
 #include "halfvec/image/image.hpp"
 #include "halfvec/platform/context.hpp"
 #include "halfvec/scene/presets.hpp"
@@ -48,15 +48,15 @@ constexpr const char* kDocIntro =
 
     %s
 
-(`halfvec trade --help`; the code is samples/app/trade.cpp). For every sample scene it renders the
+(`halfvec trade --help`; the code is engine/eval/src/trade.cpp). For every sample scene it renders the
 scene under one-at-a-time changes of each accuracy/speed option that applies to it, the presets and
 the exact configuration, and measures time and error.
 
 ## What "error" is relative to
 
 The truth is the CPU reference renderer (docs/reference.md) run on the engine's own G-buffer with
-the **exact configuration** of the scene's material model (`truthSettings` in
-samples/app/trade.hpp):
+the **exact configuration** of the scene's material model (`eval::truthSettings` in
+halfvec/eval/trade.hpp):
 
 - the scene's D term, Fresnel (Schlick's SG fit replaced by Schlick's pow5, which it
   approximates), diffuse term, energy compensation and specular occlusion: these define the
@@ -78,7 +78,7 @@ scene.
 Metrics are over lit (`default_lit`) pixels only, on linear HDR radiance before tone mapping:
 relative RMSE = RMSE / mean |reference|, "bias" = the relative RMSE with the reference's own noise
 removed (sqrt(RMSE^2 - noise^2)), p99 = the 99th percentile of the per-pixel relative error, max
-abs = the largest channel difference (engine/image/metrics.hpp). The reference is a Monte Carlo
+abs = the largest channel difference (halfvec/image/metrics.hpp). The reference is a Monte Carlo
 estimate: its standard error, expressed as a relative RMSE, is given per scene; rows within %gx of
 it are marked `~` and cannot be told apart from the exact image. "front" marks the Pareto front of
 (total ms, relative RMSE); the heat maps show the per-pixel relative error on a 0 to %g scale.
@@ -90,7 +90,7 @@ ratios within one scene, not absolute values.
 
 struct SceneRun {
   std::string path;
-  TradeReport report;
+  eval::TradeReport report;
   std::string dir;
 };
 
@@ -99,20 +99,20 @@ std::string stem(const std::string& p) {
 }
 
 void writeDoc(const std::string& file, const std::string& command, const std::string& renderer,
-              const std::vector<SceneRun>& runs, const TradeOptions& opt) {
+              const std::vector<SceneRun>& runs, const eval::TradeOptions& opt) {
   std::ostringstream o;
   char intro[8192];
-  std::snprintf(intro, sizeof intro, kDocIntro, command.c_str(), kNoiseFactor,
+  std::snprintf(intro, sizeof intro, kDocIntro, command.c_str(), eval::kNoiseFactor,
                 double(opt.heatmap_max));
   o << "# Speed/accuracy trade report\n\n" << intro << "\nRenderer: " << renderer << ".\n\n";
-  o << "## Presets\n\n" << presetRationale() << "\n";
+  o << "## Presets\n\n" << eval::presetRationale() << "\n";
   o << "Measured (total GPU ms / relative RMSE against the exact reference):\n\n";
   o << "| scene | size | scene's settings | fast | balanced | accurate | exact |\n";
   o << "|---|---|---:|---:|---:|---:|---:|\n";
   for (const SceneRun& run : runs) {
-    const TradeReport& r = run.report;
+    const eval::TradeReport& r = run.report;
     auto cell = [&](const std::string& name) -> std::string {
-      for (const TradeRow& row : r.rows) {
+      for (const eval::TradeRow& row : r.rows) {
         bool match = row.config.name == name;
         for (const auto& a : row.config.aliases) match |= a == name;
         if (!match) continue;
@@ -132,7 +132,7 @@ void writeDoc(const std::string& file, const std::string& command, const std::st
   for (const SceneRun& run : runs) {
     std::string prefix = fs::relative(fs::absolute(run.dir), doc_dir).generic_string();
     if (!prefix.empty() && prefix.back() != '/') prefix += "/";
-    o << tradeMarkdown(run.report, prefix, 2) << "\n";
+    o << eval::tradeMarkdown(run.report, prefix, 2) << "\n";
   }
   if (fs::absolute(file).has_parent_path()) fs::create_directories(doc_dir);
   std::ofstream(file) << o.str();
@@ -143,7 +143,7 @@ int cmdTrade(const Args& args) {
   std::vector<std::string> scenes;
   std::vector<std::pair<std::string, std::pair<int, int>>> sizes_for;
   std::string report, doc;
-  TradeOptions opt;
+  eval::TradeOptions opt;
   bool size_given = false;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -193,11 +193,11 @@ int cmdTrade(const Args& args) {
     } else if (a == "--heatmaps") {
       const std::string v = value();
       if (v == "all") {
-        opt.heatmaps = TradeOptions::Heatmaps::All;
+        opt.heatmaps = eval::TradeOptions::Heatmaps::All;
       } else if (v == "presets") {
-        opt.heatmaps = TradeOptions::Heatmaps::Presets;
+        opt.heatmaps = eval::TradeOptions::Heatmaps::Presets;
       } else if (v == "none") {
-        opt.heatmaps = TradeOptions::Heatmaps::None;
+        opt.heatmaps = eval::TradeOptions::Heatmaps::None;
       } else {
         throw UsageError{"--heatmaps expects all, presets or none, got '" + v + "'"};
       }
@@ -225,7 +225,7 @@ int cmdTrade(const Args& args) {
   opt.progress = [](const std::string& line) { std::fprintf(stderr, "trade: %s\n", line.c_str()); };
   std::vector<SceneRun> runs;
   for (size_t k = 0; k < scenes.size(); ++k) {
-    TradeOptions o = opt;
+    eval::TradeOptions o = opt;
     if (!size_given) o.height = 0;
     for (const auto& [name, wh] : sizes_for) {
       if (name == stem(scenes[k])) o.width = wh.first, o.height = wh.second;
@@ -236,11 +236,11 @@ int cmdTrade(const Args& args) {
       run.dir = scenes.size() > 1 ? (fs::path(report) / stem(scenes[k])).string() : report;
     o.report_dir = run.dir;
     std::fprintf(stderr, "trade: %s\n", scenes[k].c_str());
-    run.report = runTrade(loaded[k], o);
+    run.report = eval::runTrade(loaded[k], o);
     if (run.dir.empty()) {
-      std::fputs(tradeMarkdown(run.report, "", 1).c_str(), stdout);
+      std::fputs(eval::tradeMarkdown(run.report, "", 1).c_str(), stdout);
     } else {
-      writeTradeReport(run.report, run.dir);
+      eval::writeTradeReport(run.report, run.dir);
       std::printf("%s: %s/trade.md, trade.csv, plot.png\n", scenes[k].c_str(), run.dir.c_str());
     }
     runs.push_back(std::move(run));

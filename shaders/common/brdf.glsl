@@ -1,12 +1,12 @@
 // BRDF terms of the UE4 shading model (Karis 2013, "Real Shading in Unreal Engine 4") and the
-// alternatives it compares, shared by GLSL and C++ (see engine/shading/glsl.hpp for the rules).
+// alternatives it compares, shared by GLSL and C++ (see halfvec/shading/glsl.hpp for the rules).
 //
 // Conventions:
 //  - roughness is perceptual roughness in [0,1]; alpha = roughness^2 (Karis 2013, "Specular D").
 //  - V is the visibility term V = G / (4 NoL NoV), so the specular BRDF is D * V * F.
 //  - Every term is always compiled; the define table below only picks what the dispatchers
 //    (distribution(), visibility(), fresnel(), diffuseLobe()) call, so C++ can switch at run time
-//    over the very same functions (engine/shading/brdf.hpp). Table and defaults: docs/brdf.md.
+//    over the very same functions (halfvec/shading/brdf.hpp). Table and defaults: docs/brdf.md.
 #ifndef HV_BRDF_GLSL
 #define HV_BRDF_GLSL
 

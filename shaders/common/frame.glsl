@@ -1,5 +1,5 @@
 // Per-frame uniforms (binding 0) and the resource bindings every pass agrees on.
-// C++ mirror: engine/render/frame_data.hpp (FrameBlock), checked by static_asserts there.
+// C++ mirror: halfvec/render/frame_data.hpp (FrameBlock), checked by static_asserts there.
 #ifndef HV_FRAME_GLSL
 #define HV_FRAME_GLSL
 

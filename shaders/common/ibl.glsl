@@ -1,5 +1,5 @@
 // Image-based lighting math shared by the ambient pass and the CPU bake (engine/ibl). See
-// engine/shading/glsl.hpp for the GLSL/C++ rules. Roughness is perceptual (the material value);
+// halfvec/shading/glsl.hpp for the GLSL/C++ rules. Roughness is perceptual (the material value);
 // alpha = roughness^2 (Karis 2013).
 #ifndef HV_IBL_GLSL
 #define HV_IBL_GLSL

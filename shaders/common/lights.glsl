@@ -1,7 +1,7 @@
 // Analytic lights of the UE4 shading model (Karis 2013, "Real Shading in Unreal Engine 4",
 // section "Lighting"): point, sphere and tube (capsule) lights, shared by GLSL and C++ (see
-// engine/shading/glsl.hpp). Physical definition of each light (units, emitted power, emitter
-// radiance): docs/lights.md. C++ mirror of GpuLight and packing: engine/shading/light_gpu.hpp.
+// halfvec/shading/glsl.hpp). Physical definition of each light (units, emitted power, emitter
+// radiance): docs/lights.md. C++ mirror of GpuLight and packing: halfvec/shading/light_gpu.hpp.
 //
 // Defines (defaults first; the C++ side sets them from RenderSettings in hv::brdfDefines):
 //  HV_FALLOFF_PLUS_ONE 1|0      Karis eq. 9 1/(d^2+1), or physical 1/d^2 (accuracy comparisons)

@@ -1,5 +1,5 @@
 // Material feature switches of the G-buffer program (docs/variants.md), set per material variant
-// by engine/render/variant_key.cpp. A feature at 0 compiles no code for it. The defaults (every
+// by engine/render/src/variant_key.cpp. A feature at 0 compiles no code for it. The defaults (every
 // feature in, flags read at run time) are the uber build.
 //   HV_MAT_RUNTIME_FLAGS 1|0: 1 = test each material's flags at run time (uber); 0 = every
 //     material drawn with the program has exactly the features switched on (no tests).

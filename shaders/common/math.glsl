@@ -1,4 +1,4 @@
-// Small math helpers shared by GLSL and C++ (see engine/shading/glsl.hpp for the rules).
+// Small math helpers shared by GLSL and C++ (see halfvec/shading/glsl.hpp for the rules).
 #ifndef HV_MATH_GLSL
 #define HV_MATH_GLSL
 

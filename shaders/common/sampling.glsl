@@ -1,5 +1,5 @@
 // Sample generation and pdfs for image-based lighting and the CPU reference, shared by GLSL and C++
-// (see engine/shading/glsl.hpp). Tangent space: z = normal.
+// (see halfvec/shading/glsl.hpp). Tangent space: z = normal.
 #ifndef HV_SAMPLING_GLSL
 #define HV_SAMPLING_GLSL
 

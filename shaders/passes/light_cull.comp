@@ -21,7 +21,7 @@
 // Every test is a necessary condition for the sphere to touch a surface point of the tile, so no
 // light that lights a pixel is ever dropped (tested: tiled == brute force, 4,096 lights). No
 // per-tile cap: the renderer reads the total back after the scan and grows the list before the
-// fill (engine/render/light_pass.cpp). Plain GLSL 4.50 (shared memory atomics and barriers only;
+// fill (engine/render/src/light_pass.cpp). Plain GLSL 4.50 (shared memory atomics and barriers only;
 // no subgroup operations).
 #include "../common/frame.glsl"
 #include "../common/lights.glsl"

@@ -1,4 +1,4 @@
-// The scatter-plot writer of engine/image/plot.hpp: tick rules, text and the marked front.
+// The scatter-plot writer of halfvec/image/plot.hpp: tick rules, text and the marked front.
 #include <gtest/gtest.h>
 
 #include <cmath>

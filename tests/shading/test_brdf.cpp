@@ -1,4 +1,4 @@
-// BRDF terms of shaders/common/brdf.glsl, run as C++ (engine/shading/brdf.hpp).
+// BRDF terms of shaders/common/brdf.glsl, run as C++ (halfvec/shading/brdf.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>

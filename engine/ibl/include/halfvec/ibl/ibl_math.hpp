@@ -1,5 +1,5 @@
 // shaders/common/ibl.glsl and sampling.glsl compiled as C++ (hv::glsl::EnvBRDFApprox,
-// evalSH9Irradiance, ...), the same way engine/shading/shading.hpp compiles the other shared
+// evalSH9Irradiance, ...), the same way halfvec/shading/shading.hpp compiles the other shared
 // headers.
 #pragma once
 

@@ -67,7 +67,7 @@ struct ReferenceResult {
   const ImageRGBf& stdError(ReferenceAov a) const { return aov_std_error[static_cast<int>(a)]; }
 };
 
-// The world-from-clip matrix of the engine's camera (engine/render/frame_data.cpp
+// The world-from-clip matrix of the engine's camera (engine/render/src/frame_data.cpp
 // makeFrameBlock: glm::lookAt view, reversed-Z infinite perspective), recomputed here so this
 // module needs no GL library. Pixel (x, y) (row 0 = top) has uv = ((x + 0.5) / w, 1 - (y + 0.5) /
 // h).

@@ -47,7 +47,7 @@ const char* toString(DebugView v);
 // What a per-term debug view renders: the frame with the term masks of RenderSettings
 // (HV_DIRECT_TERMS / HV_AMBIENT_TERMS; bit 1 diffuse, bit 2 specular) set to that one term, the
 // background left black and the G-buffer's emissive left out, so the HDR target holds exactly
-// the term as defined for the engine's AOVs (samples/app/engine_aov.hpp). The Emissive view is
+// the term as defined for the engine's AOVs (halfvec/eval/engine_aov.hpp). The Emissive view is
 // the other way round: no light term, only the emissive. Over the pixels of lit surfaces, the
 // four light terms plus Emissive sum to the normal frame (up to half-float rounding).
 struct TermView {

@@ -1,4 +1,4 @@
-// The trade report (samples/app/trade.hpp) on a tiny scene: which rows it plans, that its rows
+// The trade report (halfvec/eval/trade.hpp) on a tiny scene: which rows it plans, that its rows
 // are internally consistent (finite images, the exact configuration lowest within noise, the
 // Pareto marks, the named picks satisfy their bounds), the reference cache, and the files.
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 #include <fstream>
 #include <string>
 
-#include "app/trade.hpp"
+#include "halfvec/eval/trade.hpp"
 #include "halfvec/image/image.hpp"
 #include "halfvec/platform/context.hpp"
 #include "halfvec/scene/presets.hpp"
@@ -47,7 +47,7 @@ hv::Scene tinyScene() {
   return s;
 }
 
-const hv::app::TradeRow* find(const hv::app::TradeReport& r, const std::string& name) {
+const hv::eval::TradeRow* find(const hv::eval::TradeReport& r, const std::string& name) {
   for (const auto& row : r.rows) {
     if (row.config.name == name) return &row;
     for (const auto& a : row.config.aliases)
@@ -56,9 +56,9 @@ const hv::app::TradeRow* find(const hv::app::TradeReport& r, const std::string& 
   return nullptr;
 }
 
-bool hasRow(const hv::app::TradePlan& p, const std::string& prefix) {
+bool hasRow(const hv::eval::TradePlan& p, const std::string& prefix) {
   return std::any_of(p.configs.begin(), p.configs.end(),
-                     [&](const hv::app::TradeConfig& c) { return c.name.rfind(prefix, 0) == 0; });
+                     [&](const hv::eval::TradeConfig& c) { return c.name.rfind(prefix, 0) == 0; });
 }
 
 struct TempDir {
@@ -77,7 +77,7 @@ struct TempDir {
 
 TEST(TradePlan, SkipsOptionsThatDoNotApply) {
   hv::Scene s = tinyScene();
-  hv::app::TradePlan p = hv::app::tradePlan(s);
+  hv::eval::TradePlan p = hv::eval::tradePlan(s);
   ASSERT_FALSE(p.configs.empty());
   EXPECT_EQ(p.configs.front().name, "scene");
   EXPECT_TRUE(hasRow(p, "sphere_diffuse="));
@@ -92,7 +92,7 @@ TEST(TradePlan, SkipsOptionsThatDoNotApply) {
 
   s.environment.kind = hv::EnvironmentKind::None;
   s.lights.assign(100, s.lights[0]);  // point lights only
-  p = hv::app::tradePlan(s, 64);
+  p = hv::eval::tradePlan(s, 64);
   EXPECT_FALSE(hasRow(p, "env_brdf"));
   EXPECT_FALSE(hasRow(p, "irradiance"));
   EXPECT_FALSE(hasRow(p, "culling"));  // 100 lights > 64
@@ -103,7 +103,7 @@ TEST(TradePlan, SkipsOptionsThatDoNotApply) {
   for (size_t i = 0; i < p.configs.size(); ++i)
     for (size_t j = i + 1; j < p.configs.size(); ++j)
       EXPECT_FALSE(p.configs[i].prefilter_samples == p.configs[j].prefilter_samples &&
-                   hv::app::sameSettings(p.configs[i].settings, p.configs[j].settings))
+                   hv::eval::sameSettings(p.configs[i].settings, p.configs[j].settings))
           << p.configs[i].name << " / " << p.configs[j].name;
 }
 
@@ -112,7 +112,7 @@ TEST(TradePlan, TruthReplacesApproximationsOnly) {
   s.f = hv::FresnelTerm::SchlickSG;
   s.diffuse = hv::DiffuseTerm::Burley;
   s.energy_compensation = true;
-  const hv::RenderSettings t = hv::app::truthSettings(s);
+  const hv::RenderSettings t = hv::eval::truthSettings(s);
   EXPECT_EQ(t.v, hv::VisibilityTerm::SmithGGXCorrelated);
   EXPECT_EQ(t.f, hv::FresnelTerm::SchlickPow5);
   EXPECT_FALSE(t.remap_roughness);
@@ -126,7 +126,7 @@ TEST(Trade, TinySceneRowsAreConsistent) {
   auto ctx = hv::createHeadlessContext();
   TempDir dir;
   hv::Scene scene = tinyScene();
-  hv::app::TradeOptions o;
+  hv::eval::TradeOptions o;
   o.width = 64;
   o.height = 48;
   o.frames = 1;
@@ -135,8 +135,8 @@ TEST(Trade, TinySceneRowsAreConsistent) {
   o.threads = 2;
   o.cache_dir = (dir.path / "cache").string();
   o.report_dir = (dir.path / "report").string();
-  o.heatmaps = hv::app::TradeOptions::Heatmaps::Presets;
-  const hv::app::TradeReport r = hv::app::runTrade(scene, o);
+  o.heatmaps = hv::eval::TradeOptions::Heatmaps::Presets;
+  const hv::eval::TradeReport r = hv::eval::runTrade(scene, o);
 
   ASSERT_GE(r.rows.size(), 10u);
   EXPECT_FALSE(r.reference_cached);
@@ -155,7 +155,7 @@ TEST(Trade, TinySceneRowsAreConsistent) {
   const auto& exact = r.rows[size_t(r.exact_row)];
   double lowest = 1e30;
   for (const auto& row : r.rows) lowest = std::min(lowest, row.error.rel_rmse);
-  EXPECT_LE(exact.error.rel_rmse, lowest + hv::app::kNoiseFactor * r.noise_rel_rmse);
+  EXPECT_LE(exact.error.rel_rmse, lowest + hv::eval::kNoiseFactor * r.noise_rel_rmse);
   // ... and the scene's own settings (falloff +1, remap, Schlick V) are measurably worse.
   EXPECT_GT(r.rows.front().error.rel_rmse, exact.error.rel_rmse + r.noise_rel_rmse);
   // Culling changes the speed, not the image.
@@ -190,20 +190,20 @@ TEST(Trade, TinySceneRowsAreConsistent) {
       EXPECT_GE(row.total_ms, r.rows[size_t(r.cheapest_within_error)].total_ms);
     }
   }
-  hv::app::TradeReport tight = r;  // a bound nothing meets names nothing
+  hv::eval::TradeReport tight = r;  // a bound nothing meets names nothing
   tight.max_error = 1e-9;
   tight.max_ms = 1e-9;
-  hv::app::pickConfigurations(tight);
+  hv::eval::pickConfigurations(tight);
   EXPECT_EQ(tight.cheapest_within_error, -1);
   EXPECT_EQ(tight.most_accurate_within_ms, -1);
 
   // Files: CSV (header + a line per row), markdown naming every row, the plot, heat maps.
-  hv::app::writeTradeReport(r, o.report_dir);
+  hv::eval::writeTradeReport(r, o.report_dir);
   std::ifstream csv(fs::path(o.report_dir) / "trade.csv");
   size_t lines = 0;
   for (std::string line; std::getline(csv, line);) ++lines;
   EXPECT_EQ(lines, r.rows.size() + 1);
-  const std::string md = hv::app::tradeMarkdown(r, "", 1);
+  const std::string md = hv::eval::tradeMarkdown(r, "", 1);
   for (const auto& row : r.rows) EXPECT_NE(md.find("`" + row.config.name + "`"), std::string::npos);
   const hv::ImageRGBA8 plot = hv::readPng((fs::path(o.report_dir) / "plot.png").string());
   EXPECT_EQ(plot.width, 960);
@@ -211,9 +211,9 @@ TEST(Trade, TinySceneRowsAreConsistent) {
   EXPECT_FALSE(fs::exists(fs::path(o.report_dir) / "heatmaps" / "culling-brute_force.png"));
 
   // Second run: the reference comes from the cache, bit for bit.
-  hv::app::TradeOptions o2 = o;
+  hv::eval::TradeOptions o2 = o;
   o2.report_dir.clear();
-  const hv::app::TradeReport again = hv::app::runTrade(scene, o2);
+  const hv::eval::TradeReport again = hv::eval::runTrade(scene, o2);
   EXPECT_TRUE(again.reference_cached);
   EXPECT_EQ(again.noise_rmse, r.noise_rmse);
   EXPECT_NEAR(again.rows.front().error.rel_rmse, r.rows.front().error.rel_rmse, 1e-6);

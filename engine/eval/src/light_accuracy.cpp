@@ -1,4 +1,4 @@
-#include "halfvec/reference/light_accuracy.hpp"
+#include "halfvec/eval/light_accuracy.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include "halfvec/shading/brdf.hpp"
 #include "halfvec/shading/shading.hpp"
 
-namespace hv {
+namespace hv::eval {
 
 namespace {
 
@@ -279,4 +279,4 @@ std::vector<TubeSweepRow> sweepTube(const TubeSweepGrid& g) {
   return rows;
 }
 
-}  // namespace hv
+}  // namespace hv::eval

@@ -13,7 +13,7 @@
 
 #include "halfvec/scene/scene.hpp"
 
-namespace hv {
+namespace hv::eval {
 
 enum class LightTerm { Diffuse, Specular };
 
@@ -102,4 +102,4 @@ struct TubeSweepRow {
 };
 std::vector<TubeSweepRow> sweepTube(const TubeSweepGrid& grid);
 
-}  // namespace hv
+}  // namespace hv::eval

@@ -1,15 +1,15 @@
 // The CI-sized stability sweep: zero NaN/Inf/negative HDR pixels, read back from the GPU.
 #include <gtest/gtest.h>
 
-#include "app/stability.hpp"
+#include "halfvec/eval/stability.hpp"
 #include "halfvec/platform/context.hpp"
 
 TEST(Stability, SmallSweepHasNoBadPixels) {
   auto ctx = hv::createHeadlessContext();
-  hv::app::StabilityOptions o;
+  hv::eval::StabilityOptions o;
   o.small = true;
   o.size = 32;
-  const auto rows = hv::app::runStabilitySweep(o);
+  const auto rows = hv::eval::runStabilitySweep(o);
   ASSERT_GT(rows.size(), 100u);
   for (const auto& r : rows) {
     EXPECT_TRUE(r.ok()) << r.light << " / " << r.geometry << " / " << r.option << ": NaN " << r.nan

@@ -1,4 +1,4 @@
-// The accuracy sweep's machinery (reference/light_accuracy.hpp, the reference's environment
+// The accuracy sweep's machinery (eval/light_accuracy.hpp, the reference's environment
 // sampling) and what the sweep found (docs/accuracy.md, written by `halfvec accuracy`): each test
 // reruns a small part of the sweep with the same geometry and states the number it came from.
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 #include "halfvec/ibl/ibl_math.hpp"
 #include "halfvec/reference/emitters.hpp"
 #include "halfvec/reference/env_sampling.hpp"
-#include "halfvec/reference/light_accuracy.hpp"
+#include "halfvec/eval/light_accuracy.hpp"
 #include "halfvec/reference/lobes.hpp"
 #include "halfvec/reference/reference.hpp"
 #include "halfvec/platform/context.hpp"
@@ -17,6 +17,7 @@
 #include "halfvec/scene/primitives.hpp"
 
 using namespace hv;
+using namespace hv::eval;
 
 namespace {
 

@@ -15,7 +15,7 @@
 #include "halfvec/reference/reference.hpp"
 #include "halfvec/scene/scene.hpp"
 
-namespace hv::app {
+namespace hv::eval {
 
 // A configuration is "within noise" when its relative RMSE is at most this many times the
 // reference's own noise (its standard error expressed as a relative RMSE, TradeReport::noise).
@@ -121,10 +121,10 @@ std::string tradeCsv(const TradeReport& report);
 std::string tradeMarkdown(const TradeReport& report, const std::string& image_prefix,
                           int heading_level = 1);
 ImageRGBA8 tradePlot(const TradeReport& report);
-// Why the presets (engine/scene/presets.cpp) set what they set: markdown, for docs/trade.md.
+// Why the presets (engine/scene/src/presets.cpp) set what they set: markdown, for docs/trade.md.
 std::string presetRationale();
 
 // Writes trade.md, trade.csv and plot.png into `dir` (created if needed).
 void writeTradeReport(const TradeReport& report, const std::string& dir);
 
-}  // namespace hv::app
+}  // namespace hv::eval

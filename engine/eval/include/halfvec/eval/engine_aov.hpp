@@ -10,7 +10,7 @@
 #include "halfvec/render/renderer.hpp"
 #include "halfvec/scene/scene.hpp"
 
-namespace hv::app {
+namespace hv::eval {
 
 // Renders `scene` (already set on `renderer`) once per term with the term masks of
 // RenderSettings (HV_DIRECT_TERMS / HV_AMBIENT_TERMS: that one term, the others 0) and once with
@@ -21,4 +21,4 @@ namespace hv::app {
 std::array<ImageRGBf, kReferenceAovCount> renderEngineAovs(render::Renderer& renderer, Scene& scene,
                                                            int width, int height);
 
-}  // namespace hv::app
+}  // namespace hv::eval

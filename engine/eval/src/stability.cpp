@@ -1,4 +1,4 @@
-#include "app/stability.hpp"
+#include "halfvec/eval/stability.hpp"
 
 #include <cmath>
 
@@ -6,7 +6,7 @@
 #include "halfvec/scene/enums.hpp"
 #include "halfvec/scene/primitives.hpp"
 
-namespace hv::app {
+namespace hv::eval {
 
 namespace {
 
@@ -175,4 +175,4 @@ std::vector<StabilityRow> runStabilitySweep(
   return rows;
 }
 
-}  // namespace hv::app
+}  // namespace hv::eval

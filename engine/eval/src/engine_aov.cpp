@@ -1,6 +1,6 @@
-#include "app/engine_aov.hpp"
+#include "halfvec/eval/engine_aov.hpp"
 
-namespace hv::app {
+namespace hv::eval {
 
 std::array<ImageRGBf, kReferenceAovCount> renderEngineAovs(render::Renderer& renderer, Scene& scene,
                                                            int width, int height) {
@@ -37,4 +37,4 @@ std::array<ImageRGBf, kReferenceAovCount> renderEngineAovs(render::Renderer& ren
   return aov;
 }
 
-}  // namespace hv::app
+}  // namespace hv::eval

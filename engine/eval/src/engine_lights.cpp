@@ -1,7 +1,7 @@
 // The engine's light formulas (shaders/common/lights.glsl, compiled as C++) for every option the
 // accuracy sweep compares, each term on its own (HV_DIRECT_TERMS), with the physical falloff.
 // Each block compiles the shared headers once more with other defines (light_variant.inc).
-#include "halfvec/reference/light_accuracy.hpp"
+#include "halfvec/eval/light_accuracy.hpp"
 
 #include <stdexcept>
 
@@ -77,7 +77,7 @@
 #define HV_VARIANT_TN 1
 #include "light_variant.inc"
 
-namespace hv {
+namespace hv::eval {
 
 glm::vec3 engineLightTerm(const EngineLightOptions& o, LightTerm term, const Light& light,
                           const glm::vec3& P, const glm::vec3& N, const glm::vec3& V,
@@ -113,4 +113,4 @@ glm::vec3 engineLightTerm(const EngineLightOptions& o, LightTerm term, const Lig
   throw std::logic_error("engineLightTerm: bad option key");
 }
 
-}  // namespace hv
+}  // namespace hv::eval

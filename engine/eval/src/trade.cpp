@@ -1,4 +1,4 @@
-#include "app/trade.hpp"
+#include "halfvec/eval/trade.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -18,7 +18,7 @@
 #include "halfvec/scene/enums.hpp"
 #include "halfvec/scene/presets.hpp"
 
-namespace hv::app {
+namespace hv::eval {
 
 namespace fs = std::filesystem;
 
@@ -632,7 +632,7 @@ ImageRGBA8 tradePlot(const TradeReport& r) {
 }
 
 std::string presetRationale() {
-  return R"(The presets (engine/scene/presets.cpp; `"settings": {"preset": "fast"}`, explicit keys
+  return R"(The presets (engine/scene/src/presets.cpp; `"settings": {"preset": "fast"}`, explicit keys
 override) set only approximation options: the V term and roughness remap, the falloff, the sphere
 and tube methods, the environment BRDF and the irradiance. They never change the material model
 (D, F, diffuse term, energy compensation, specular occlusion) or the culling. They were chosen
@@ -658,7 +658,7 @@ many_lights both are lower. For the same reason the lowest-error rows of several
 terms that do not belong to GGX (`implicit`, `smith_beckmann_separable`, `cook_torrance`): they
 darken glossy highlights and so offset the overestimate, which is no reason to choose them. The
 `exact` row is the lowest only where such highlights do not dominate (the CI scene of
-tests/app/test_trade.cpp).
+tests/eval/test_trade.cpp).
 
 Times: on llvmpipe the spread between runs of one configuration is larger than any difference
 between configurations (compare the identical-cost rows `sphere_diffuse`, `culling`,
@@ -674,4 +674,4 @@ void writeTradeReport(const TradeReport& r, const std::string& dir) {
   writePng((fs::path(dir) / "plot.png").string(), tradePlot(r));
 }
 
-}  // namespace hv::app
+}  // namespace hv::eval

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace hv::app {
+namespace hv::eval {
 
 struct StabilityRow {
   std::string light;     // point / sphere / tube
@@ -27,4 +27,4 @@ struct StabilityOptions {
 std::vector<StabilityRow> runStabilitySweep(
     const StabilityOptions& options, const std::function<void(const StabilityRow&)>& progress = {});
 
-}  // namespace hv::app
+}  // namespace hv::eval
