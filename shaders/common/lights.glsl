@@ -190,8 +190,11 @@ vec3 shadeLight(Surface s, ShadingPoint sp, vec3 Ld, vec3 Ls, vec3 radiant, floa
   vec3 H = safeNormalize(sp.V + Ls);
   float NoL = saturate(dot(s.N, Ls));
   float NoH = saturate(dot(s.N, H));
+  // 1 - NoH^2 from |N x H|^2: exact near the mirror direction, where 1 - NoH^2 cancels (D_GGX).
+  vec3 NxH = cross(s.N, H);
   float VoH = saturate(dot(sp.V, H));
-  vec3 specular = specularLobe(s, sp.NoV, NoL, NoH, VoH, spec_norm) * (spec_irr * NoL);
+  vec3 specular =
+      specularLobe(s, sp.NoV, NoL, NoH, dot(NxH, NxH), VoH, spec_norm) * (spec_irr * NoL);
   // Term mask (HV_DIRECT_TERMS): a term left out is 0; the compiler drops its code.
 #if (HV_DIRECT_TERMS & 1) == 0
   diffuse = vec3(0.0f);

@@ -14,16 +14,20 @@ BrdfConfig BrdfConfig::fromSettings(const RenderSettings& s) {
   return c;
 }
 
-float evalD(const BrdfConfig& c, float alpha, float NoH) {
+float evalD(const BrdfConfig& c, float alpha, float NoH, float sin2_NH) {
   switch (c.d) {
     case DistributionTerm::GGX:
-      return g::D_GGX(alpha, NoH);
+      return g::D_GGX(alpha, NoH, sin2_NH);
     case DistributionTerm::Beckmann:
-      return g::D_Beckmann(alpha, NoH);
+      return g::D_Beckmann(alpha, NoH, sin2_NH);
     case DistributionTerm::BlinnPhong:
-      return g::D_BlinnPhong(alpha, NoH);
+      return g::D_BlinnPhong(alpha, NoH, sin2_NH);
   }
   return 0.0f;
+}
+
+float evalD(const BrdfConfig& c, float alpha, float NoH) {
+  return evalD(c, alpha, NoH, (1.0f - NoH) * (1.0f + NoH));
 }
 
 float evalVForAlpha(const BrdfConfig& c, float alpha, float NoV, float NoL, float NoH, float VoH) {
