@@ -21,6 +21,7 @@ Commands:
   view SCENE.json       interactive viewer: orbit camera, material/lights/rendering panels
   accuracy              sweep of every approximation vs the reference -> docs/accuracy.md
   trade SCENE.json      speed/accuracy trade report: ms per pass and error per option, presets
+  ltc-fit               fit the LTC table of the ltc light modes -> engine/shading/src/ltc_table.cpp
 
 Run `halfvec <command> --help` for the options of each command.
 )";
@@ -59,6 +60,7 @@ int runCli(const std::vector<std::string>& args) {
     if (cmd == "view") return cmdView(rest);
     if (cmd == "accuracy") return cmdAccuracy(rest);
     if (cmd == "trade") return cmdTrade(rest);
+    if (cmd == "ltc-fit") return cmdLtcFit(rest);
     std::fprintf(stderr, "halfvec: unknown command '%s' (see halfvec --help)\n", cmd.c_str());
     return 2;
   } catch (const UsageError& e) {

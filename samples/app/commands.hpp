@@ -18,6 +18,7 @@ int cmdView(const Args&);
 int benchVariants(int width, int height, int frames);
 int cmdAccuracy(const Args& args);
 int cmdTrade(const Args& args);
+int cmdLtcFit(const Args& args);
 
 // Parses a --size value "WxH" (1..16384 each); throws UsageError naming the bad value.
 void parseSize(const std::string& value, int& width, int& height);

@@ -19,6 +19,7 @@
 
 #include "math.glsl"
 #include "brdf.glsl"
+#include "ltc_integrals.glsl"
 
 #ifndef HV_FALLOFF_PLUS_ONE
 #define HV_FALLOFF_PLUS_ONE 1
@@ -90,28 +91,8 @@ float distanceFalloff(float d2, float radius, float inv_range) {
   return falloffWindow(d2, inv_range) / (d2c + float(HV_FALLOFF_PLUS_ONE));
 }
 
-// Lagarde & de Rousiers 2014, "Moving Frostbite to PBR", section 4.7.2 listing 7
-// (illuminanceSphereOrDisk, after Snyder 1996): integral of cos over the visible part of a sphere
-// of sin^2(half-angle) = sin_sigma2 whose center is at angle theta from the normal, horizon
-// clipped. Returned divided by pi sin_sigma2, so it equals saturate(cos_theta) when the sphere is
-// entirely above or below the horizon; the caller multiplies by I / d^2.
-// Branch-free: both cases are computed with guarded inputs and selected with step().
-float sphereHorizonFactor(float cos_theta, float sin_sigma2) {
-  // sin_sigma2 in [1e-8, 1]: 1 means the point is inside the sphere; 1e-8 (radius 1e-4 d) keeps
-  // 1/sin_sigma2 finite for radius 0, where the result is the point light's saturate(cos_theta).
-  float s2 = clamp(sin_sigma2, 1e-8f, 1.0f);
-  float above = saturate(cos_theta);
-  // Straddling the horizon. sin_theta >= 1e-4 and x >= 1e-4 only guard 0/0 at cos_theta = +-1 or
-  // inside the sphere (s2 = 1); there the other case is selected or the value is bounded anyway.
-  float sin_theta = sqrt(max(1.0f - cos_theta * cos_theta, 1e-8f));
-  float x = sqrt(max(1.0f / s2 - 1.0f, 1e-8f));
-  float y = clamp(-x * cos_theta / sin_theta, -1.0f, 1.0f);
-  float sin_theta_sqrt_y = sin_theta * sqrt(1.0f - y * y);
-  float straddle = ((cos_theta * acos(y) - x * sin_theta_sqrt_y) * s2 +
-                    atan(sin_theta_sqrt_y / x)) / (PI * s2);
-  // cos^2 >= sin^2(sigma): the sphere does not cross the horizon.
-  return max(mix(straddle, above, step(s2, cos_theta * cos_theta)), 0.0f);
-}
+// sphereHorizonFactor (Lagarde & de Rousiers 2014 section 4.7.2, horizon-clipped sphere
+// irradiance): ltc_integrals.glsl, where the LTC integrals use it for the horizon as well.
 
 // Karis 2013 eq. 11: the point of a sphere (center Lc relative to the shading point, radius r)
 // closest to the reflection ray R. Returns the unnormalized vector to it.
