@@ -12,8 +12,10 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "halfvec/eval/light_methods.hpp"
 #include "halfvec/platform/context.hpp"
 #include "halfvec/render/renderer.hpp"
+#include "halfvec/scene/enums.hpp"
 #include "halfvec/scene/primitives.hpp"
 #include "halfvec/scene/scene_loader.hpp"
 
@@ -53,6 +55,10 @@ ratios.
                shading arithmetic, each measured by a probe build of the pass with frames
                interleaved (Renderer::LightPassProbe); "if only shading" is the rate the pass
                would reach were setup and fetching free
+  --methods    instead: table (e) alone: per light type (sphere, tube), the light pass of each
+               method (representative point, ltc) at 1024 lights (or --lights N), frames
+               interleaved, with the FetchOnly probe's time subtracted as "shading"; the ratio
+               ltc / representative point of the pass and of its shading arithmetic
   --variants   instead: programs specialized to the scene vs the uber build, GPU ms per pass on
                every scene of samples/scenes, as a markdown table (--quick: at most 640x360)
 )";
@@ -252,6 +258,29 @@ void breakdownRow(const char* type, const Breakdown& b) {
   std::fflush(stdout);
 }
 
+// Table (e): the light methods of each area-light type (eval/light_methods.hpp), frames
+// interleaved; shading = the method's light ms minus the FetchOnly probe's.
+void methodsTable(int n, float range, int w, int h, int frames) {
+  std::printf(
+      "\n(e) light methods, %d lights of one type, constant density (median light ms of %d "
+      "interleaved frames; shading = light - lists+fetch; ratio: to representative_point)\n",
+      n, frames);
+  std::printf("%8s %-32s %9s %9s %11s %12s %14s\n", "type", "method", "light ms", "Mevals/s",
+              "shading ms", "light ratio", "shading ratio");
+  for (LightType t : {LightType::Sphere, LightType::Tube}) {
+    const Scene s = benchScene(n, range, int(t));
+    const auto rows = eval::timeLightMethods(s, eval::lightMethodsFor(t, s.settings), w, h, frames);
+    const double fetch = rows[0].light_ms, rp = rows[1].light_ms;
+    for (size_t i = 1; i < rows.size(); ++i) {
+      std::printf("%8s %-32s %9.2f %9.1f %11.2f %12.2f %14.2f\n", i == 1 ? toString(t).data() : "",
+                  rows[i].name.c_str(), rows[i].light_ms, rows[i].mevals_per_s,
+                  rows[i].light_ms - fetch, rows[i].light_ms / rp,
+                  (rows[i].light_ms - fetch) / std::max(rp - fetch, 1e-9));
+    }
+    std::fflush(stdout);
+  }
+}
+
 void header() {
   std::printf("%8s %8s %10s %10s %12s %14s\n", "lights", "range m", "cull ms", "light ms",
               "lights/px", "Mevals/s");
@@ -265,6 +294,7 @@ int cmdBench(const Args& args) {
   bool quick = false;
   bool variants = false;
   bool show_breakdown = false;
+  bool methods = false;
   int types = -1;  // --types: -1 mixed, else a hv::LightType
   std::vector<std::string> shader_dirs;
   std::string scene_path;
@@ -308,6 +338,8 @@ int cmdBench(const Args& args) {
       variants = true;
     } else if (a == "--breakdown") {
       show_breakdown = true;
+    } else if (a == "--methods") {
+      methods = true;
     } else {
       throw UsageError{"unknown option '" + a + "'"};
     }
@@ -352,6 +384,11 @@ int cmdBench(const Args& args) {
     }
     return mixed;
   };
+  if (methods) {
+    const int n = only > 0 ? only : 1024;
+    methodsTable(n, densityRange(n), w, h, frames);
+    return 0;
+  }
   if (show_breakdown) {
     if (!shader_dirs.empty()) throw UsageError{"--breakdown does not take --shaders"};
     breakdownTable(only > 0 ? only : 1024);
@@ -394,6 +431,7 @@ int cmdBench(const Args& args) {
   }
   double shading_only_rate = 0.0;
   if (types < 0) shading_only_rate = breakdownTable(1024).shadingOnlyRate();
+  if (types < 0) methodsTable(1024, densityRange(1024), w, h, frames);
   std::printf("\ntiled vs brute force, 1024 lights, constant-density range\n");
   header();
   const float range = densityRange(1024);

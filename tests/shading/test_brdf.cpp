@@ -354,12 +354,23 @@ TEST(Brdf, DefinesMapEveryEnumValue) {
                           "HV_TUBE_NORMALIZATION"})
       EXPECT_EQ(m[k], b ? "1" : "0") << k;
   }
+  const int sd[] = {HV_SPHERE_DIFFUSE_KARIS_POINT, HV_SPHERE_DIFFUSE_HORIZON};
+  const int ss[] = {HV_SPHERE_SPECULAR_REPRESENTATIVE_POINT, HV_SPHERE_SPECULAR_LTC};
+  const int td[] = {HV_TUBE_DIFFUSE_KARIS_EQ16, HV_TUBE_DIFFUSE_LTC};
   for (int i = 0; i < 2; ++i) {
     rs.sphere_diffuse = hv::SphereDiffuse(i);
-    rs.tube_specular = hv::TubeSpecular(i);
+    rs.sphere_specular = hv::SphereSpecular(i);
+    rs.tube_diffuse = hv::TubeDiffuse(i);
     auto m = lookup(rs);
-    EXPECT_EQ(m["HV_SPHERE_DIFFUSE"], std::to_string(i));
-    EXPECT_EQ(m["HV_TUBE_SPECULAR"], std::to_string(i));
+    EXPECT_EQ(m["HV_SPHERE_DIFFUSE"], std::to_string(sd[i]));
+    EXPECT_EQ(m["HV_SPHERE_SPECULAR"], std::to_string(ss[i]));
+    EXPECT_EQ(m["HV_TUBE_DIFFUSE"], std::to_string(td[i]));
+  }
+  const int ts[] = {HV_TUBE_SPECULAR_CLOSEST_POINT, HV_TUBE_SPECULAR_SMALLEST_ANGLE,
+                    HV_TUBE_SPECULAR_LTC};
+  for (int i = 0; i < 3; ++i) {
+    rs.tube_specular = hv::TubeSpecular(i);
+    EXPECT_EQ(lookup(rs)["HV_TUBE_SPECULAR"], std::to_string(ts[i]));
   }
 }
 

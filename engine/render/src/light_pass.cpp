@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <string>
 
+#include "ltc_textures.hpp"
 #include "pipeline_state.hpp"
 #include "halfvec/render/renderer.hpp"
 #include "targets.hpp"
@@ -174,9 +175,15 @@ void Renderer::lightPass(const FrameBlock& frame) {
     glBindTextureUnit(4, light_texels_.id());
     glBindTextureUnit(5, tile_index_texels_.id());
   }
+  const bool ltc = lightPassNeedsLtc();
+  if (ltc) {
+    if (!ltc_) ltc_ = std::make_unique<LtcTextures>();
+    ltc_->bind();
+  }
   glDispatchCompute(frame.viewport.z, (frame.viewport.w + kLightGroupTiles - 1) / kLightGroupTiles,
                     1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+  if (ltc) LtcTextures::unbind();
   for (GLuint u = 0; u < 4; ++u) glBindSampler(u, 0);
   if (use_textures) {
     glBindTextureUnit(4, 0);
@@ -184,6 +191,14 @@ void Renderer::lightPass(const FrameBlock& frame) {
   }
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
   glUseProgram(0);
+}
+
+// The light program reads the LTC table (lights.glsl HV_LTC_TABLE) when a light type it compiles
+// shades its specular with it.
+bool Renderer::lightPassNeedsLtc() const {
+  const RenderSettings& s = key_.settings;
+  return (key_.sphere_lights && s.sphere_specular == SphereSpecular::Ltc) ||
+         (key_.tube_lights && s.tube_specular == TubeSpecular::Ltc);
 }
 
 }  // namespace hv::render

@@ -1,4 +1,5 @@
 #include "halfvec/render/renderer.hpp"
+#include "ltc_textures.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -21,8 +21,10 @@ bool applySettingsPreset(std::string_view name, RenderSettings& s) {
     s.falloff_plus_one = true;
     s.sphere_diffuse = SphereDiffuse::KarisPoint;
     s.sphere_normalization = true;
+    s.sphere_specular = SphereSpecular::RepresentativePoint;
     s.tube_specular = TubeSpecular::ClosestPointEq19;
     s.tube_normalization = true;
+    s.tube_diffuse = TubeDiffuse::KarisEq16;
     s.env_brdf = EnvBrdf::Table;
     s.irradiance = Irradiance::SH9;
   };

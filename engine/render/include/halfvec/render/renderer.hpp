@@ -189,6 +189,8 @@ class Renderer {
   gl::Sampler nearest_;
   gl::Texture fallback_cube_;
   GLuint fallbackCube();
+  std::unique_ptr<class LtcTextures> ltc_;  // the LTC table, for the LTC light modes
+  bool lightPassNeedsLtc() const;
   struct Environment;
   std::unique_ptr<Environment> env_;
 };
