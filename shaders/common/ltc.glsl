@@ -161,7 +161,20 @@ vec3 ltcSphereFormFactor(Ltc l, vec3 c, float r) {
   // det Q / t^6 = det(B')^4 / t^6 with det B' = det(alpha M^-1) t^2 det[e1 e2 cn] = det_inv t^2.
   float di2 = l.det_inv * l.det_inv;
   float det_q = di2 * di2 * t * t;
-  return coneFormFactor(q00, q01, q02, q11, q12, q22, det_q, cc);
+  vec3 F = coneFormFactor(q00, q01, q02, q11, q12, q22, det_q, cc);
+  // A cone small next to the LTC's lobe (u^2 = pi t^2 peak < 1: its solid angle below the lobe's,
+  // the scale 1 / sqrt(pi peak) = alpha sqrt(a_x a_y)) has the form factor of its center
+  // direction: solid angle in cosine space (omega det(alpha M^-1) / |x|^3, x = alpha M^-1 cn) /
+  // pi along x, whose z is omega times the density at cn. There the eigenvalues above can lose
+  // all precision when the cone's image is thin and elongated (the lobe's far tail at roughness
+  // <= 0.1, lights of r/d <= 1e-3: |F| 1e5 times too large, a firefly of 1e4 x the point light's
+  // value, found by `halfvec stability`); the cone is replaced by that estimate when it exceeds
+  // it 4 times (a legitimate cone of that size deviates from it by a few %).
+  float omega = 2.0f * PI * t * t / (1.0f + t * t + sqrt(1.0f + t * t));  // 2 pi (1 - cos sigma)
+  float cc2 = max(dot(cc, cc), 1e-30f);
+  vec3 F_small = cc * (omega * l.det_inv * INV_PI / (cc2 * cc2));
+  bool garbage = PI * t * t * l.peak < 1.0f && dot(F, F) > 16.0f * dot(F_small, F_small);
+  return mix(F, F_small, bvec3(garbage));
 }
 
 // Integral of the LTC over the sphere light, clipped at the horizon in cosine space (the sphere-cap
