@@ -44,7 +44,8 @@ std::string summaryRow(const eval::MethodSummary& m) {
 std::string goalRow(const std::string& goal, const eval::GoalCheck& c, double tol) {
   const bool met = c.count > 0 && c.within == c.count;
   return row({goal, std::to_string(c.within) + " of " + std::to_string(c.count),
-              pct(c.worst_peak) + " (" + c.worst_peak_where + ")",
+              c.worst_peak_where.empty() ? std::string("-")  // bias-only goal (diffuse)
+                                         : pct(c.worst_peak) + " (" + c.worst_peak_where + ")",
               pct(c.worst_bias) + " (" + c.worst_bias_where + ")",
               met ? "met"
                   : (c.worst_peak <= 2.0 * tol && c.worst_bias <= 2.0 * tol ? "missed (within 2x)"
