@@ -1,9 +1,13 @@
 #include "app/cli.hpp"
 
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
+#include <filesystem>
+#include <system_error>
 
 #include "app/commands.hpp"
+#include "halfvec/gl/shader_source.hpp"
 
 namespace hv::app {
 
@@ -41,6 +45,28 @@ void takeScenePath(const std::string& arg, std::string& scene) {
   if (!arg.empty() && arg[0] == '-') throw UsageError{"unknown option '" + arg + "'"};
   if (!scene.empty()) throw UsageError{"more than one scene file given"};
   scene = arg;
+}
+
+void applyProgramDefaults() {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path exe_dir = fs::read_symlink("/proc/self/exe", ec).parent_path();
+  if (!ec) {
+    for (const fs::path& dir :
+         {exe_dir / "share/halfvec/shaders", exe_dir / "../share/halfvec/shaders"}) {
+      if (fs::is_directory(dir / "passes", ec)) {
+        gl::setShaderDir(dir.lexically_normal());
+        break;
+      }
+    }
+  }
+#ifdef HV_DEFAULT_ASSETS_DIR
+  const char* assets = std::getenv("HV_ASSETS_DIR");
+  if ((!assets || !*assets) && *HV_DEFAULT_ASSETS_DIR &&
+      fs::is_directory(HV_DEFAULT_ASSETS_DIR, ec)) {
+    ::setenv("HV_ASSETS_DIR", HV_DEFAULT_ASSETS_DIR, 0);
+  }
+#endif
 }
 
 int runCli(const std::vector<std::string>& args) {

@@ -154,7 +154,7 @@ int cmdRender(const Args& args) {
   writePng(ra.out, renderer.readLdr());
   if (!ra.hdr.empty()) writePfm(ra.hdr, renderer.readHdr());
   if (!ra.aov.empty()) {
-    const auto aovs = eval::renderEngineAovs(renderer, scene, w, h);
+    const auto aovs = eval::renderEngineAovs(renderer, w, h);
     std::filesystem::create_directories(ra.aov);
     for (int k = 0; k < kReferenceAovCount; ++k) {
       const auto which = static_cast<ReferenceAov>(k);

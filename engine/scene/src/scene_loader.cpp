@@ -651,12 +651,23 @@ class SceneBuilder {
                                     : glm::mat4(1.0f);
     const std::string file = o.string("gltf", "");
     if (file.empty()) o.fail("gltf", "expected the path of a .gltf or .glb file");
-    const std::string path = ctx_.resolve(o.at("gltf"), file);
-    if (!fs::is_regular_file(path)) {
-      if (!o.has("fallback")) o.fail("gltf", "file not found: " + path);
-      sceneWarning(ctx_.file + ": " + o.at("gltf") + ": file not found: " + path +
-                       "; using the fallback object",
-                   ctx_.warnings);
+    // A model that cannot be found (a missing file, or a ${VAR} in its path that is not set) is
+    // replaced by the fallback object when there is one.
+    std::string path, missing;
+    try {
+      path = ctx_.resolve(o.at("gltf"), file);
+      if (!fs::is_regular_file(path)) missing = "file not found: " + path;
+    } catch (const SceneError& e) {
+      if (!o.has("fallback")) throw;
+      missing = e.what();
+    }
+    if (!missing.empty()) {
+      if (!o.has("fallback")) o.fail("gltf", missing);
+      sceneWarning(
+          (missing.rfind(ctx_.file, 0) == 0 ? missing
+                                            : ctx_.file + ": " + o.at("gltf") + ": " + missing) +
+              "; using the fallback object",
+          ctx_.warnings);
       const json& fb = o["fallback"];
       if (!fb.is_object() || !fb.contains("primitive")) {
         o.fail("fallback", "expected an object with a \"primitive\"");
@@ -715,8 +726,6 @@ std::string expandEnvVars(const std::string& text) {
       const char* value = std::getenv(var.c_str());
       if (value && *value) {
         out += value;
-      } else if (var == "HV_ASSETS_DIR") {
-        out += (fs::path(HV_SOURCE_DIR) / ".." / "shared" / "assets").lexically_normal().string();
       } else {
         throw SceneError("environment variable " + var + " (used in \"" + text + "\") is not set");
       }

@@ -17,8 +17,8 @@ namespace hv {
 // "camera.position=[0,1,4]", "environment.type=uniform": the path is split at '.', numeric
 // components index arrays, missing object keys are created; the value is parsed as JSON and
 // taken as a plain string when that fails. Relative glTF/HDR paths resolve against the scene
-// file's folder; "${VAR}" in paths expands environment variables (HV_ASSETS_DIR defaults to the
-// ../shared/assets folder next to the repository). Returns a complete Scene or throws
+// file's folder; "${VAR}" in paths expands environment variables (an unset one is an error,
+// except in a glTF object's path when the object has a "fallback"). Returns a complete Scene or throws
 // SceneError; warnings (a missing glTF replaced by its fallback, BLEND materials) go to stderr,
 // or to `warnings` when given.
 Scene loadScene(const std::string& path, const std::vector<std::string>& overrides = {},
@@ -34,8 +34,7 @@ Scene parseScene(const nlohmann::json& json, const std::string& source_name,
 void applyOverride(nlohmann::json& json, const std::string& override_text,
                    const std::string& source_name);
 
-// Expands "${VAR}" using the environment (HV_ASSETS_DIR has a default, see loadScene); throws
-// SceneError for an unset variable.
+// Expands "${VAR}" using the environment; throws SceneError for an unset variable.
 std::string expandEnvVars(const std::string& text);
 
 }  // namespace hv
