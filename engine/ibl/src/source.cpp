@@ -121,7 +121,7 @@ float luminance(glm::vec3 c) {
 
 }  // namespace
 
-ImageRGBf decodeHdr(const uint8_t* b, size_t size, const std::string& path) {
+ImageRGBf decodeHdr(const uint8_t* b, size_t size, const std::string& path, int max_width) {
   size_t pos = 0;
   auto line = [&]() -> std::string {
     std::string s;
@@ -149,9 +149,9 @@ ImageRGBf decodeHdr(const uint8_t* b, size_t size, const std::string& path) {
   char tail = 0;
   if (std::sscanf(res.c_str(), "-Y %ld +X %ld%c", &h, &w, &tail) != 2)
     fail(path, "unsupported resolution line '" + res.substr(0, 64) + "' (need '-Y H +X W')");
-  if (w <= 0 || h <= 0 || w > kMaxHdrWidth || h > kMaxHdrWidth / 2) {
+  if (w <= 0 || h <= 0 || w > max_width || h > max_width / 2) {
     fail(path, "dimensions " + std::to_string(w) + "x" + std::to_string(h) + " outside 1.." +
-                   std::to_string(kMaxHdrWidth) + " x 1.." + std::to_string(kMaxHdrWidth / 2) +
+                   std::to_string(max_width) + " x 1.." + std::to_string(max_width / 2) +
                    " (kMaxHdrWidth)");
   }
   if (w != 2 * h)

@@ -75,7 +75,7 @@ void writePng(const std::string& path, const ImageRGBA8& img) {
     throw ImageError("writePng '" + path + "': write failed (directory missing or not writable?)");
 }
 
-ImageRGBA8 decodePng(const uint8_t* bytes, size_t size, const std::string& path) {
+ImageRGBA8 decodePng(const uint8_t* bytes, size_t size, const std::string& path, int max_side) {
   static const uint8_t kSig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   if (size < 8 || std::memcmp(bytes, kSig, 8) != 0)
     throw ImageError("readPng '" + path + "': bad header (not a PNG file)");
@@ -88,9 +88,9 @@ ImageRGBA8 decodePng(const uint8_t* bytes, size_t size, const std::string& path)
     throw ImageError("readPng '" + path + "': corrupt or truncated PNG (" +
                      (why ? why : "unknown") + ")");
   }
-  if (w <= 0 || h <= 0 || w > kMaxImageSide || h > kMaxImageSide) {
+  if (w <= 0 || h <= 0 || w > max_side || h > max_side) {
     throw ImageError("readPng '" + path + "': " + std::to_string(w) + "x" + std::to_string(h) +
-                     " outside 1.." + std::to_string(kMaxImageSide) + " per side (kMaxImageSide)");
+                     " outside 1.." + std::to_string(max_side) + " per side (kMaxImageSide)");
   }
   int dw = 0, dh = 0;
   stbi_uc* data = stbi_load_from_memory(bytes, int(size), &dw, &dh, &n, 4);
@@ -140,7 +140,7 @@ ImageRGBf readPfm(const std::string& path) {
   return decodePfm(bytes.data(), bytes.size(), path);
 }
 
-ImageRGBf decodePfm(const uint8_t* data, size_t size, const std::string& path) {
+ImageRGBf decodePfm(const uint8_t* data, size_t size, const std::string& path, int max_side) {
   const std::span<const uint8_t> bytes(data, size);
   // Header: three whitespace-separated tokens ("PF"/"Pf", "W H", scale), then exactly one
   // whitespace byte before the raster.
@@ -171,8 +171,7 @@ ImageRGBf decodePfm(const uint8_t* data, size_t size, const std::string& path) {
     throw ImageError("readPfm '" + path + "': bad header (dimensions/scale '" + ws + " " + hs +
                      " " + ss + "')");
   }
-  if (w <= 0 || h <= 0 || w > kMaxImageSide || h > kMaxImageSide || scale == 0.0 ||
-      !std::isfinite(scale))
+  if (w <= 0 || h <= 0 || w > max_side || h > max_side || scale == 0.0 || !std::isfinite(scale))
     throw ImageError("readPfm '" + path + "': bad header (size " + std::to_string(w) + "x" +
                      std::to_string(h) + ", scale " + ss + ")");
   if (pos >= bytes.size() || !std::isspace(bytes[pos]))

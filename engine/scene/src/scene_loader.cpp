@@ -694,6 +694,16 @@ class SceneBuilder {
   int object_count_ = 0;
 };
 
+// nlohmann's message without its "[json.exception.parse_error.101] " prefix.
+std::string jsonErrorText(const json::exception& e) {
+  std::string m = e.what();
+  if (m.rfind("[json.exception.", 0) == 0) {
+    const size_t end = m.find("] ");
+    if (end != std::string::npos) m = m.substr(end + 2);
+  }
+  return m;
+}
+
 std::string readFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(path + ": cannot open file");
@@ -817,17 +827,31 @@ Scene parseScene(const json& j, const std::string& source_name,
   return scene;
 }
 
-Scene loadScene(const std::string& path, const std::vector<std::string>& overrides,
-                std::vector<std::string>* warnings) {
-  const std::string text = readFile(path);
+Scene loadSceneFromString(std::string_view text, const std::string& source_name,
+                          const std::vector<std::string>& overrides,
+                          std::vector<std::string>* warnings) {
   json j;
   try {
     j = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw SceneError(path + ": invalid JSON: " + e.what());
+  } catch (const json::exception& e) {
+    // parse_error (syntax) and out_of_range (a number beyond double range, e.g. 1e400).
+    throw SceneError(source_name + ": invalid JSON: " + jsonErrorText(e));
   }
-  for (const std::string& o : overrides) applyOverride(j, o, path);
-  return parseScene(j, path, warnings);
+  for (const std::string& o : overrides) applyOverride(j, o, source_name);
+  try {
+    return parseScene(j, source_name, warnings);
+  } catch (const SceneError&) {
+    throw;
+  } catch (const std::bad_alloc&) {
+    throw SceneError(source_name + ": out of memory while building the scene");
+  } catch (const std::exception& e) {
+    throw SceneError(source_name + ": " + e.what());
+  }
+}
+
+Scene loadScene(const std::string& path, const std::vector<std::string>& overrides,
+                std::vector<std::string>* warnings) {
+  return loadSceneFromString(readFile(path), path, overrides, warnings);
 }
 
 }  // namespace hv

@@ -81,8 +81,10 @@ constexpr int kMaxHdrWidth = 16384;
 // allocated, and every run against the data and the scanline, so a missing, truncated, oversized
 // or corrupt file gives an IblError naming the file and the problem.
 ImageRGBf loadHdr(const std::string& path);
-// The same from the file's bytes (`path` names it in messages). For fuzzers and tests.
-ImageRGBf decodeHdr(const uint8_t* bytes, size_t size, const std::string& path);
+// The same from the file's bytes (`path` names it in messages), at most `max_width` wide (fuzzers
+// lower it to keep each run small).
+ImageRGBf decodeHdr(const uint8_t* bytes, size_t size, const std::string& path,
+                    int max_width = kMaxHdrWidth);
 
 // Source of an Environment (loads the .hdr for HdrFile). Throws IblError for kind None.
 EnvSource makeEnvSource(const Environment& env, const SkyParams& sky = {});

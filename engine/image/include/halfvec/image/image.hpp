@@ -45,14 +45,17 @@ constexpr int kMaxImageSide = 16384;
 // PNG through libstb (stb_image_write / stb_image). readPng always returns 4 channels.
 void writePng(const std::string& path, const ImageRGBA8& img);
 ImageRGBA8 readPng(const std::string& path);
-// The same from the file's bytes (`path` names it in messages). For fuzzers and tests.
-ImageRGBA8 decodePng(const uint8_t* bytes, size_t size, const std::string& path);
+// The same from the file's bytes (`path` names it in messages), at most `max_side` pixels wide
+// and high (fuzzers lower it to keep each run small).
+ImageRGBA8 decodePng(const uint8_t* bytes, size_t size, const std::string& path,
+                     int max_side = kMaxImageSide);
 
 // Portable float map, color ("PF") only on write; reads "PF" and grayscale "Pf" (expanded to
 // RGB), either byte order (negative scale = little-endian). Bit-exact round trip.
 void writePfm(const std::string& path, const ImageRGBf& img);
 ImageRGBf readPfm(const std::string& path);
-ImageRGBf decodePfm(const uint8_t* bytes, size_t size, const std::string& path);
+ImageRGBf decodePfm(const uint8_t* bytes, size_t size, const std::string& path,
+                    int max_side = kMaxImageSide);
 
 // Linear float -> 8-bit sRGB-encoded (IEC 61966-2-1 curve), after multiplying by exposure and
 // clamping to [0, 1]; alpha = 255. NaN maps to magenta so it is visible.

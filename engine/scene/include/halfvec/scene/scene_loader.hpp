@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -23,6 +24,12 @@ namespace hv {
 // or to `warnings` when given.
 Scene loadScene(const std::string& path, const std::vector<std::string>& overrides = {},
                 std::vector<std::string>* warnings = nullptr);
+
+// The same from the file's text; `source_name` names it in messages and is the base of relative
+// paths. For fuzzers and tests.
+Scene loadSceneFromString(std::string_view text, const std::string& source_name,
+                          const std::vector<std::string>& overrides = {},
+                          std::vector<std::string>* warnings = nullptr);
 
 // Validates and converts already-parsed JSON. `source_name` is used in error messages and as the
 // base for relative paths (its parent folder).
