@@ -274,8 +274,7 @@ struct ElementRange {
 
 class Importer {
  public:
-  Importer(std::string path, const tinygltf::Model& model, const Scene& scene,
-           const GltfOptions& opt)
+  Importer(std::string path, tinygltf::Model& model, const Scene& scene, const GltfOptions& opt)
       : path_(std::move(path)), m_(model), opt_(opt), lim_(opt.limits) {
     image_base_ = int(scene.images.size());
     material_base_ = int(scene.materials.size());
@@ -558,7 +557,7 @@ class Importer {
 
   // ---- images, materials ---------------------------------------------------------------------
   void importImage(int i) {
-    const tinygltf::Image& im = m_.images[size_t(i)];
+    tinygltf::Image& im = m_.images[size_t(i)];
     const std::string el = idx("images", size_t(i));
     ImageData out;
     out.name = im.name.empty() ? (im.uri.empty() || im.uri.size() > 256 ? el : im.uri) : im.name;
@@ -570,7 +569,7 @@ class Importer {
     }
     out.width = im.width;
     out.height = im.height;
-    out.rgba = im.image;
+    out.rgba = std::move(im.image);
     images.push_back(std::move(out));
   }
 
@@ -997,7 +996,7 @@ class Importer {
   }
 
   std::string path_;
-  const tinygltf::Model& m_;
+  tinygltf::Model& m_;  // images are moved out of it
   const GltfOptions& opt_;
   const GltfLimits& lim_;
   int image_base_ = 0, material_base_ = 0, mesh_base_ = 0;
