@@ -1,7 +1,11 @@
 #include "app/cli.hpp"
 
+#include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <cstdio>
 #include <cstdlib>
+#include <string_view>
 #include <exception>
 #include <filesystem>
 #include <system_error>
@@ -31,9 +35,19 @@ Run `halfvec <command> --help` for the options of each command.
 }  // namespace
 
 void parseSize(const std::string& v, int& w, int& h) {
-  if (std::sscanf(v.c_str(), "%dx%d", &w, &h) != 2 || w <= 0 || h <= 0 || w > 16384 || h > 16384) {
+  // Exactly "WxH": decimal digits only (no sign, space or trailing text), each in 1..16384.
+  auto number = [](std::string_view s, int& out) {
+    if (s.empty() || s.size() > 5 || !std::all_of(s.begin(), s.end(), ::isdigit)) return false;
+    std::from_chars(s.data(), s.data() + s.size(), out);
+    return out >= 1 && out <= 16384;
+  };
+  const size_t x = v.find('x');
+  int pw = 0, ph = 0;
+  if (x == std::string::npos || !number(std::string_view(v).substr(0, x), pw) ||
+      !number(std::string_view(v).substr(x + 1), ph)) {
     throw UsageError{"--size expects WxH with 1 <= W,H <= 16384, got '" + v + "'"};
   }
+  w = pw, h = ph;
 }
 
 std::string optionValue(const Args& args, size_t& i) {

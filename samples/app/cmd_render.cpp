@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
+#include "halfvec/core/output_files.hpp"
 #include "halfvec/ibl/ibl.hpp"
 #include "halfvec/eval/engine_aov.hpp"
 #include "halfvec/platform/context.hpp"
@@ -111,6 +112,124 @@ nlohmann::ordered_json manifestJson(const render::Manifest& m) {
   return j;
 }
 
+// The files a render writes, reserved before the render: every folder is checked (and --out's
+// and --aov's created) first, so an unwritable path fails before any GL work, and nothing of a
+// run appears unless every output was written (hv::OutputFiles).
+struct RenderOutputs {
+  OutputFiles files;
+  std::filesystem::path out, hdr, stats;
+  std::vector<std::filesystem::path> aov;  // kReferenceAovCount files when --aov is given
+};
+
+void reserveOutputs(const RenderArgs& ra, RenderOutputs& o) {
+  const auto out_dir = std::filesystem::path(ra.out).parent_path();
+  if (!out_dir.empty()) std::filesystem::create_directories(out_dir);
+  o.out = o.files.add(ra.out);
+  if (!ra.hdr.empty()) o.hdr = o.files.add(ra.hdr);
+  if (!ra.stats.empty()) o.stats = o.files.add(ra.stats);
+  if (!ra.aov.empty()) {
+    std::filesystem::create_directories(ra.aov);
+    for (int k = 0; k < kReferenceAovCount; ++k) {
+      const auto which = static_cast<ReferenceAov>(k);
+      o.aov.push_back(
+          o.files.add(std::filesystem::path(ra.aov) / (std::string(toString(which)) + ".pfm")));
+    }
+  }
+}
+
+// Median per pass over the frames.
+render::FrameStats medianStats(const std::vector<render::FrameStats>& frames) {
+  render::FrameStats stats = frames.back();
+  for (size_t p = 0; p < stats.passes.size(); ++p) {
+    std::vector<double> v;
+    for (auto& fr : frames) v.push_back(fr.passes[p].second);
+    std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+    stats.passes[p].second = v[v.size() / 2];
+  }
+  stats.total_ms = 0;
+  for (auto& [n, ms] : stats.passes) stats.total_ms += ms;
+  return stats;
+}
+
+struct RenderReport {
+  const RenderArgs& ra;
+  const Scene& scene;
+  int w, h;
+  const render::FrameStats& stats;
+  double setup_ms;
+  size_t triangles;
+};
+
+void printReport(const RenderReport& r, const Context& ctx, const render::Renderer& renderer) {
+  std::printf("renderer: %s (%s)\n", ctx.renderer().c_str(), ctx.platform().c_str());
+  std::printf("scene: %s, %dx%d, %zu lights, %zu triangles\n", r.ra.scene.c_str(), r.w, r.h,
+              r.scene.lights.size(), r.triangles);
+  std::printf("%-14s %10s\n", "pass", "GPU ms");
+  for (auto& [name, ms] : r.stats.passes) std::printf("%-14s %10.3f\n", name.c_str(), ms);
+  std::printf("%-14s %10.3f\n", "total", r.stats.total_ms);
+  std::printf("setup (upload + environment bake): %.1f ms\n", r.setup_ms);
+  if (const BakeTimings* bake = renderer.environmentTimings()) {
+    std::printf(
+        "environment bake (%s): load %.1f, convert %.1f, prefilter %.1f, env BRDF %.1f, "
+        "SH9 %.1f, irradiance %.1f, cache %.1f, total %.1f ms\n",
+        bake->cache_hit ? "cache hit" : "computed", bake->load_ms, bake->convert_ms,
+        bake->prefilter_ms, bake->env_brdf_ms, bake->sh_ms, bake->irradiance_ms, bake->cache_ms,
+        bake->total_ms);
+  }
+  const render::Manifest manifest = renderer.manifest();
+  double compile_ms = 0.0;
+  for (const auto& v : manifest.programs) compile_ms += v.compile_ms + v.link_ms + v.cache_load_ms;
+  std::printf("programs: %zu (%s), %.1f ms compile+link, binary cache %zu hits / %zu misses\n",
+              manifest.programs.size(), manifest.key.c_str(), compile_ms, manifest.binary_hits,
+              manifest.binary_misses);
+}
+
+nlohmann::ordered_json statsJson(const RenderReport& r, const Context& ctx,
+                                 const render::Renderer& renderer) {
+  nlohmann::ordered_json j;
+  j["renderer"] = ctx.renderer();
+  j["platform"] = ctx.platform();
+  j["gl_version"] = ctx.version();
+  j["scene"] = r.ra.scene;
+  j["width"] = r.w;
+  j["height"] = r.h;
+  j["frames"] = r.ra.frames;
+  nlohmann::ordered_json passes;
+  for (auto& [name, ms] : r.stats.passes) passes[name] = ms;
+  j["passes"] = passes;
+  j["total_ms"] = r.stats.total_ms;
+  j["setup_ms"] = r.setup_ms;
+  j["gbuffer_bytes_per_pixel"] = render::kGBufferBytesPerPixel;
+  j["triangles"] = r.triangles;
+  if (const BakeTimings* bake = renderer.environmentTimings()) {
+    j["environment_bake_ms"] = {{"cache_hit", bake->cache_hit},
+                                {"load", bake->load_ms},
+                                {"convert", bake->convert_ms},
+                                {"prefilter", bake->prefilter_ms},
+                                {"env_brdf", bake->env_brdf_ms},
+                                {"sh9", bake->sh_ms},
+                                {"irradiance", bake->irradiance_ms},
+                                {"cache", bake->cache_ms},
+                                {"total", bake->total_ms}};
+  }
+  nlohmann::ordered_json counts;
+  for (auto t : {LightType::Point, LightType::Sphere, LightType::Tube}) {
+    counts[std::string(toString(t))] = std::count_if(r.scene.lights.begin(), r.scene.lights.end(),
+                                                     [&](const Light& l) { return l.type == t; });
+  }
+  j["light_counts"] = counts;
+  j["tile_light_entries"] = r.stats.tile_light_entries;
+  j["tile_list_capacity"] = renderer.tileListCapacity();  // sized from the CPU bound
+  j["tile_list_readbacks"] = renderer.tileListReadbacks();
+  nlohmann::ordered_json vars = nlohmann::ordered_json::array();
+  for (const auto& v : renderer.programs().variants()) {
+    vars.push_back({{"program", v.name}, {"defines", v.defines}, {"compile_ms", v.compile_ms}});
+  }
+  j["program_variants"] = vars;
+  j["manifest"] = manifestJson(renderer.manifest());
+  return j;
+}
+
 }  // namespace
 
 int cmdRender(const Args& args) {
@@ -128,6 +247,8 @@ int cmdRender(const Args& args) {
   if (ra.out.empty()) {
     ra.out = "out/" + std::filesystem::path(ra.scene).stem().string() + ".png";
   }
+  RenderOutputs outputs;
+  reserveOutputs(ra, outputs);
 
   auto ctx = createHeadlessContext();
   render::Renderer renderer;
@@ -138,104 +259,32 @@ int cmdRender(const Args& args) {
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   std::vector<render::FrameStats> frames;
   for (int f = 0; f < ra.frames; ++f) frames.push_back(renderer.render(w, h, ra.view));
-  // Median per pass over the frames.
-  render::FrameStats stats = frames.back();
-  for (size_t p = 0; p < stats.passes.size(); ++p) {
-    std::vector<double> v;
-    for (auto& fr : frames) v.push_back(fr.passes[p].second);
-    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-    stats.passes[p].second = v[v.size() / 2];
-  }
-  stats.total_ms = 0;
-  for (auto& [n, ms] : stats.passes) stats.total_ms += ms;
+  const render::FrameStats stats = medianStats(frames);
 
-  const auto out_dir = std::filesystem::path(ra.out).parent_path();
-  if (!out_dir.empty()) std::filesystem::create_directories(out_dir);
-  writePng(ra.out, renderer.readLdr());
-  if (!ra.hdr.empty()) writePfm(ra.hdr, renderer.readHdr());
+  writePng(outputs.out.string(), renderer.readLdr());
+  if (!ra.hdr.empty()) writePfm(outputs.hdr.string(), renderer.readHdr());
   if (!ra.aov.empty()) {
     const auto aovs = eval::renderEngineAovs(renderer, w, h);
-    std::filesystem::create_directories(ra.aov);
     for (int k = 0; k < kReferenceAovCount; ++k) {
-      const auto which = static_cast<ReferenceAov>(k);
-      writePfm((std::filesystem::path(ra.aov) / (std::string(toString(which)) + ".pfm")).string(),
-               aovs[size_t(k)]);
+      writePfm(outputs.aov[size_t(k)].string(), aovs[size_t(k)]);
     }
   }
-
   size_t triangles = 0;
   for (const Object& o : scene.objects) {
-    for (int m : o.meshes) triangles += scene.meshes[m].indices.size() / 3;
+    for (int m : o.meshes) triangles += scene.meshes[size_t(m)].indices.size() / 3;
   }
-  std::printf("renderer: %s (%s)\n", ctx->renderer().c_str(), ctx->platform().c_str());
-  std::printf("scene: %s, %dx%d, %zu lights, %zu triangles\n", ra.scene.c_str(), w, h,
-              scene.lights.size(), triangles);
-  std::printf("%-14s %10s\n", "pass", "GPU ms");
-  for (auto& [name, ms] : stats.passes) std::printf("%-14s %10.3f\n", name.c_str(), ms);
-  std::printf("%-14s %10.3f\n", "total", stats.total_ms);
-  std::printf("setup (upload + environment bake): %.1f ms\n", setup_ms);
-  const BakeTimings* bake = renderer.environmentTimings();
-  if (bake) {
-    std::printf(
-        "environment bake (%s): load %.1f, convert %.1f, prefilter %.1f, env BRDF %.1f, "
-        "SH9 %.1f, irradiance %.1f, cache %.1f, total %.1f ms\n",
-        bake->cache_hit ? "cache hit" : "computed", bake->load_ms, bake->convert_ms,
-        bake->prefilter_ms, bake->env_brdf_ms, bake->sh_ms, bake->irradiance_ms, bake->cache_ms,
-        bake->total_ms);
+  const RenderReport report{ra, scene, w, h, stats, setup_ms, triangles};
+  printReport(report, *ctx, renderer);
+  if (!ra.stats.empty()) {
+    std::ofstream f(outputs.stats);
+    f << statsJson(report, *ctx, renderer).dump(2) << "\n";
+    if (!f.flush()) throw OutputError(ra.stats + ": cannot write");
   }
-  const render::Manifest manifest = renderer.manifest();
-  double compile_ms = 0.0;
-  for (const auto& v : manifest.programs) compile_ms += v.compile_ms + v.link_ms + v.cache_load_ms;
-  std::printf("programs: %zu (%s), %.1f ms compile+link, binary cache %zu hits / %zu misses\n",
-              manifest.programs.size(), manifest.key.c_str(), compile_ms, manifest.binary_hits,
-              manifest.binary_misses);
+  outputs.files.commit();
   std::printf("image: %s\n", std::filesystem::absolute(ra.out).string().c_str());
   if (!ra.hdr.empty()) std::printf("hdr: %s\n", std::filesystem::absolute(ra.hdr).string().c_str());
   if (!ra.aov.empty()) std::printf("aov: %s\n", std::filesystem::absolute(ra.aov).string().c_str());
-
   if (!ra.stats.empty()) {
-    nlohmann::ordered_json j;
-    j["renderer"] = ctx->renderer();
-    j["platform"] = ctx->platform();
-    j["gl_version"] = ctx->version();
-    j["scene"] = ra.scene;
-    j["width"] = w;
-    j["height"] = h;
-    j["frames"] = ra.frames;
-    nlohmann::ordered_json passes;
-    for (auto& [name, ms] : stats.passes) passes[name] = ms;
-    j["passes"] = passes;
-    j["total_ms"] = stats.total_ms;
-    j["setup_ms"] = setup_ms;
-    j["gbuffer_bytes_per_pixel"] = render::kGBufferBytesPerPixel;
-    j["triangles"] = triangles;
-    if (bake) {
-      j["environment_bake_ms"] = {{"cache_hit", bake->cache_hit},
-                                  {"load", bake->load_ms},
-                                  {"convert", bake->convert_ms},
-                                  {"prefilter", bake->prefilter_ms},
-                                  {"env_brdf", bake->env_brdf_ms},
-                                  {"sh9", bake->sh_ms},
-                                  {"irradiance", bake->irradiance_ms},
-                                  {"cache", bake->cache_ms},
-                                  {"total", bake->total_ms}};
-    }
-    nlohmann::ordered_json counts;
-    for (auto t : {LightType::Point, LightType::Sphere, LightType::Tube}) {
-      counts[std::string(toString(t))] = std::count_if(scene.lights.begin(), scene.lights.end(),
-                                                       [&](const Light& l) { return l.type == t; });
-    }
-    j["light_counts"] = counts;
-    j["tile_light_entries"] = stats.tile_light_entries;
-    j["tile_list_capacity"] = renderer.tileListCapacity();  // sized from the CPU bound
-    j["tile_list_readbacks"] = renderer.tileListReadbacks();
-    nlohmann::ordered_json vars = nlohmann::ordered_json::array();
-    for (const auto& v : renderer.programs().variants()) {
-      vars.push_back({{"program", v.name}, {"defines", v.defines}, {"compile_ms", v.compile_ms}});
-    }
-    j["program_variants"] = vars;
-    j["manifest"] = manifestJson(renderer.manifest());
-    std::ofstream(ra.stats) << j.dump(2) << "\n";
     std::printf("stats: %s\n", std::filesystem::absolute(ra.stats).string().c_str());
   }
   return 0;
