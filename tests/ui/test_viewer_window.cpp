@@ -174,10 +174,15 @@ TEST_F(ViewerWindow, EverySampleSceneOpens) {
         std::filesystem::temp_directory_path() / numbered("hv_view_sample_", int(getpid()), ".png");
     std::ostringstream os;
     os << "DISPLAY=" << server->display() << " '" << exe << "' view '" << e.path().string()
-       << "' --size 640x360 --frames 2 --screenshot '" << shot.string() << "' > /dev/null 2>&1";
+       << "' --size 640x360 --frames 2 --screenshot '" << shot.string() << "' > '" << shot.string()
+       << ".log' 2>&1";
     const int rc = std::system(os.str().c_str());
-    ASSERT_TRUE(WIFEXITED(rc)) << e.path();
-    EXPECT_EQ(WEXITSTATUS(rc), 0) << e.path();
+    std::ifstream log_file(shot.string() + ".log");
+    const std::string log((std::istreambuf_iterator<char>(log_file)),
+                          std::istreambuf_iterator<char>());
+    std::filesystem::remove(shot.string() + ".log");
+    ASSERT_TRUE(WIFEXITED(rc)) << e.path() << "\n" << log;
+    EXPECT_EQ(WEXITSTATUS(rc), 0) << e.path() << "\n" << log;
     ASSERT_TRUE(std::filesystem::exists(shot)) << e.path();
     hv::ImageRGBA8 img = hv::readPng(shot.string());
     std::filesystem::remove(shot);
