@@ -128,6 +128,8 @@ void checkJsonDepth(const std::string& name, const uint8_t* text, size_t size, i
 // buffer: that range is checked here on the JSON (a buffer's data always has its declared
 // byteLength once tinygltf has loaded it, or loading fails).
 void checkImageViews(const std::string& name, const uint8_t* text, size_t size) {
+  const std::string_view view(reinterpret_cast<const char*>(text), size);
+  if (view.find("\"images\"") == std::string_view::npos) return;  // no second parse needed
   const nlohmann::json j = nlohmann::json::parse(text, text + size, nullptr, false);
   if (j.is_discarded() || !j.is_object() || !j.contains("images")) return;  // tinygltf reports
   auto fail = [&](const std::string& element, const std::string& msg) {
