@@ -1,10 +1,9 @@
 // Hostile glTF/GLB files (issue 18): offsets and counts near 2^64, node chains deeper than any
 // stack, node graphs that reuse nodes into billions of instances, images that decode into
-// gigabytes, broken GLB containers. Each must be rejected quickly with a SceneError that names
-// the file and the element, leaving the scene unchanged.
+// gigabytes, broken GLB containers. Each must be rejected with a SceneError that names the file
+// and the element, leaving the scene unchanged (how fast: scripts/fuzz.sh replays them timed).
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -26,7 +25,6 @@ std::string loadError(const std::string& bytes, const std::string& name,
   const fs::path p = tempDir() / name;
   std::ofstream(p, std::ios::binary) << bytes;
   hv::Scene scene;
-  const auto t0 = std::chrono::steady_clock::now();
   std::string err;
   try {
     hv::loadGltf(p.string(), glm::mat4(1.0f), scene, opt);
@@ -37,8 +35,6 @@ std::string loadError(const std::string& bytes, const std::string& name,
         << "half-loaded scene";
     EXPECT_NE(err.find(p.string()), std::string::npos) << "the message must name the file: " << err;
   }
-  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  EXPECT_LT(s, 10.0) << name << " took " << s << " s";
   return err;
 }
 

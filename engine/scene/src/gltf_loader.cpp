@@ -128,6 +128,8 @@ void checkJsonDepth(const std::string& name, const uint8_t* text, size_t size, i
 // buffer: that range is checked here on the JSON (a buffer's data always has its declared
 // byteLength once tinygltf has loaded it, or loading fails).
 void checkImageViews(const std::string& name, const uint8_t* text, size_t size) {
+  const std::string_view view(reinterpret_cast<const char*>(text), size);
+  if (view.find("\"images\"") == std::string_view::npos) return;  // no second parse needed
   const nlohmann::json j = nlohmann::json::parse(text, text + size, nullptr, false);
   if (j.is_discarded() || !j.is_object() || !j.contains("images")) return;  // tinygltf reports
   auto fail = [&](const std::string& element, const std::string& msg) {
@@ -752,6 +754,14 @@ class Importer {
     };
     const int pos_acc = attr("POSITION");
     if (pos_acc < 0) fail(el, "primitive has no POSITION attribute");
+    // The vertex budget before any attribute is read (they may have no bufferView: zeros).
+    const uint64_t pos_count = accessor(pos_acc, el + ".POSITION").count;
+    if (pos_count > lim_.max_vertices - std::min(total_vertices_, lim_.max_vertices)) {
+      fail(idx("accessors", size_t(pos_acc)) + ".count",
+           std::to_string(pos_count) + " vertices (" + el +
+               ".POSITION) exceed the file's budget of " + std::to_string(lim_.max_vertices) +
+               " (GltfLimits::max_vertices)");
+    }
     using std::initializer_list;
     constexpr int kF = TINYGLTF_COMPONENT_TYPE_FLOAT, kUB = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
                   kB = TINYGLTF_COMPONENT_TYPE_BYTE, kUS = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
