@@ -86,6 +86,8 @@ TEST(SceneHostile, ParseErrorsNameFileAndPosition) {
   e = loadError("{\"camera\": ");
   EXPECT_TRUE(has(e, "hostile.json") && has(e, "invalid JSON")) << e;
   EXPECT_FALSE(has(loadError("{}", {"settings.exposure=1e400"}), "internal error"));
+  e = loadError(std::string("{}\0{\"garbage\"", 14));  // nlohmann would stop at the NUL
+  EXPECT_TRUE(has(e, "hostile.json") && has(e, "NUL byte at offset 2")) << e;
 }
 
 TEST(SceneHostile, OverrideIndicesParsedStrictly) {

@@ -1055,6 +1055,10 @@ void loadGltfFromMemory(const uint8_t* bytes, size_t size, bool binary, const st
     }
   } catch (const std::bad_alloc&) {
     throw SceneError(name + ": cannot load glTF: out of memory");
+  } catch (const std::out_of_range& e) {  // tinygltf 2.7 indexes by .at() on some bad sizes
+    err = std::string("a size or index out of range (") + e.what() +
+          "), e.g. a buffer of byteLength 0";
+    ok = false;
   } catch (const std::exception& e) {
     err = e.what();
     ok = false;

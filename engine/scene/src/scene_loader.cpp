@@ -908,6 +908,11 @@ Scene parseScene(const json& j, const std::string& source_name,
 Scene loadSceneFromString(std::string_view text, const std::string& source_name,
                           const std::vector<std::string>& overrides,
                           std::vector<std::string>* warnings) {
+  // nlohmann's lexer ends the input at a NUL byte: whatever follows would be ignored silently.
+  if (const size_t nul = text.find('\0'); nul != std::string_view::npos) {
+    throw SceneError(source_name + ": invalid JSON: NUL byte at offset " + std::to_string(nul) +
+                     " (not a text file?)");
+  }
   json j;
   try {
     j = json::parse(text);
