@@ -50,6 +50,8 @@ The scene file is reloaded when it changes on disk.
 
 struct ViewArgs {
   std::string scene, screenshot;
+  SceneOpenOptions open;
+  bool print_scene = false;
   int width = 1280, height = 720, frames = 0;
   std::optional<glm::dvec2> click;  // scripted click, window coordinates
 };
@@ -59,7 +61,9 @@ ViewArgs parse(const Args& args) {
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&] { return optionValue(args, i); };
-    if (a == "--size") {
+    if (takeSceneOption(args, i, r.open, r.print_scene)) {
+      continue;
+    } else if (a == "--size") {
       parseSize(value(), r.width, r.height);
     } else if (a == "--frames") {
       r.frames = std::atoi(value().c_str());
@@ -258,8 +262,9 @@ int cmdView(const Args& args) {
     }
   }
   const ViewArgs va = parse(args);
+  if (va.print_scene) return printScene(va.scene, va.open);
   // Load before opening a window: a bad scene file fails without one.
-  SceneReloader reloader(va.scene);
+  SceneReloader reloader(va.scene, va.open);
 
   auto ctx = createWindowContext(va.width, va.height, "halfvec view - " + va.scene);
   GLFWwindow* win = ctx->window();

@@ -82,6 +82,7 @@ class Importer {
   std::vector<Material> materials;
   std::vector<Mesh> meshes;
   std::vector<Object> objects;
+  std::vector<GltfCamera> cameras;
 
  private:
   // ---- accessors ---------------------------------------------------------------------------
@@ -591,8 +592,26 @@ class Importer {
         objects.push_back(std::move(o));
       }
     }
+    if (n.camera >= 0 && n.camera < int(m_.cameras.size()))
+      addCamera(m_.cameras[size_t(n.camera)], world);
     for (int c : n.children) visit(c, world, on_path, el + ".children");
     on_path[size_t(ni)] = false;
+  }
+
+  void addCamera(const tinygltf::Camera& c, const glm::mat4& world) {
+    GltfCamera cam;
+    cam.name = c.name;
+    cam.world = world;
+    cam.perspective = c.type != "orthographic";
+    if (cam.perspective) {
+      if (c.perspective.yfov > 0.0) cam.yfov_rad = float(c.perspective.yfov);
+      if (c.perspective.znear > 0.0) cam.znear = float(c.perspective.znear);
+      cam.zfar = float(std::max(c.perspective.zfar, 0.0));
+    } else {
+      cam.znear = float(std::max(c.orthographic.znear, 1e-4));
+      cam.zfar = float(std::max(c.orthographic.zfar, 0.0));
+    }
+    cameras.push_back(cam);
   }
 
   std::string path_;
@@ -613,6 +632,11 @@ void loadGltf(const std::string& path, const glm::mat4& transform, Scene& scene,
   tinygltf::Model model;
   std::string err, warn;
   const std::string ext = fs::path(path).extension().string();
+  if (options.material_override >= 0) {  // no glTF materials: their images are not decoded
+    loader.SetImageLoader([](tinygltf::Image*, const int, std::string*, std::string*, int, int,
+                             const unsigned char*, int, void*) { return true; },
+                          nullptr);
+  }
   bool ok;
   if (ext == ".glb" || ext == ".GLB") {
     ok = loader.LoadBinaryFromFile(&model, &err, &warn, path);
@@ -631,6 +655,9 @@ void loadGltf(const std::string& path, const glm::mat4& transform, Scene& scene,
   for (auto& x : imp.materials) scene.materials.push_back(std::move(x));
   for (auto& x : imp.meshes) scene.meshes.push_back(std::move(x));
   for (auto& x : imp.objects) scene.objects.push_back(std::move(x));
+  if (options.cameras) {
+    for (auto& c : imp.cameras) options.cameras->push_back(std::move(c));
+  }
 }
 
 }  // namespace hv

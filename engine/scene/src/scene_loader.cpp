@@ -249,6 +249,7 @@ Material parseMaterial(const Ctx& ctx, const json& j, const std::string& ptr, bo
   if (allow_name) keys.push_back("name");
   Obj o(ctx, j, ptr, keys);
   Material m;
+  m.source = ptr;
   m.name = o.string("name", "");
   m.base_color = o.vec3("base_color", m.base_color, kUnit);
   m.metallic = o.num("metallic", m.metallic, kUnit);

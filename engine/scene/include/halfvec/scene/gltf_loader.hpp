@@ -25,6 +25,16 @@
 
 namespace hv {
 
+// A camera node of a glTF file (glTF 2.0 section 3.10): it looks down its local -Z with +Y up.
+struct GltfCamera {
+  std::string name;
+  glm::mat4 world{1.0f};  // `transform` * the node's world matrix
+  bool perspective = true;
+  float yfov_rad = 0.7853982f;  // perspective only
+  float znear = 0.05f;
+  float zfar = 0.0f;  // 0 = infinite
+};
+
 struct GltfOptions {
   // >= 0: every imported primitive uses scene.materials[material_override] and no glTF
   // materials or images are imported.
@@ -33,6 +43,8 @@ struct GltfOptions {
   std::string name_prefix;
   // Warnings go here if set, else to stderr.
   std::vector<std::string>* warnings = nullptr;
+  // Camera nodes go here, in the order they are visited (depth first from the scene's roots).
+  std::vector<GltfCamera>* cameras = nullptr;
 };
 
 // Appends the meshes, materials, images and objects (one per node with a mesh, transform =

@@ -56,6 +56,10 @@ enum class AlphaMode : uint8_t { Opaque, Mask, Blend };
 
 struct Material {
   std::string name;
+  // Where the material is defined in its scene file, as the loader's JSON pointer
+  // (/materials/gold, /objects/3/material); empty for glTF and default materials. Scene save
+  // (scene_writer.hpp) writes edits there.
+  std::string source;
   glm::vec3 base_color{0.8f};  // linear
   float metallic = 0.0f;
   float roughness = 0.5f;    // perceptual; alpha = roughness^2 (Karis 2013)
