@@ -33,6 +33,10 @@ Options:
   --env FILE.hdr        replace the scene's environment with this equirectangular HDR
   --camera N            a model's own camera N (glTF cameras, in node order) instead of framing
   --print-scene         print the scene JSON (for a model: the one made for it) and exit
+  --aa fxaa|none        post-process anti-aliasing of the 8-bit image (default fxaa; the HDR
+                        image of --hdr is never anti-aliased)
+  --emitters on|off     draw sphere and tube lights as emissive geometry of their color (default
+                        on; --hdr then holds them too: use off to compare with the reference)
   --view NAME           debug view: basecolor|metallic|roughness|cavity|normal|depth|
                         shading_model|lights_per_tile (G-buffer and culling, shown as stored),
                         or one term, tone-mapped as the normal image (--hdr writes the term):
@@ -53,6 +57,7 @@ struct RenderArgs {
   SceneOpenOptions open;
   int width = 0, height = 0, frames = 1;
   bool binary_cache = true, print_scene = false;
+  render::ViewOptions view_options{render::PostAA::Fxaa, true, -1};
   render::DebugView view = render::DebugView::None;
 };
 
@@ -76,6 +81,16 @@ RenderArgs parse(const Args& args) {
     } else if (a == "--frames") {
       r.frames = std::atoi(value().c_str());
       if (r.frames < 1 || r.frames > 1000) throw UsageError{"--frames expects 1..1000"};
+    } else if (a == "--aa") {
+      const std::string v = value();
+      const auto aa = render::postAAFromString(v);
+      if (!aa) throw UsageError{"--aa expects fxaa or none, got '" + v + "'"};
+      r.view_options.aa = *aa;
+    } else if (a == "--emitters") {
+      const std::string v = value();
+      if (v != "on" && v != "off")
+        throw UsageError{"--emitters expects on or off, got '" + v + "'"};
+      r.view_options.emitters = v == "on";
     } else if (a == "--uber") {
       r.open.overrides.push_back("settings.uber=true");
     } else if (a == "--no-binary-cache") {
@@ -138,6 +153,7 @@ int cmdRender(const Args& args) {
   auto ctx = createHeadlessContext();
   render::Renderer renderer;
   if (!ra.binary_cache) renderer.programs().setBinaryCacheDir({});
+  renderer.setViewOptions(ra.view_options);
   const auto t0 = std::chrono::steady_clock::now();
   renderer.setScene(scene);
   const double setup_ms =
@@ -160,6 +176,7 @@ int cmdRender(const Args& args) {
   writePng(ra.out, renderer.readLdr());
   if (!ra.hdr.empty()) writePfm(ra.hdr, renderer.readHdr());
   if (!ra.aov.empty()) {
+    renderer.setViewOptions({});  // the AOVs are the shading's terms: no emitter geometry
     const auto aovs = eval::renderEngineAovs(renderer, scene, w, h);
     std::filesystem::create_directories(ra.aov);
     for (int k = 0; k < kReferenceAovCount; ++k) {

@@ -141,7 +141,8 @@ enum class DiffuseTerm : uint8_t { Lambert, Burley };
 enum class SphereDiffuse : uint8_t { KarisPoint, HorizonCorrect };
 enum class TubeSpecular : uint8_t { ClosestPointEq19, SmallestAngleEq18 };
 enum class Culling : uint8_t { Tiled, BruteForce };
-enum class ToneMap : uint8_t { Reinhard, ReinhardLuminance, None };
+// HV_TONEMAP in shaders/common/tonemap.glsl (same values).
+enum class ToneMap : uint8_t { Reinhard, ReinhardLuminance, None, PbrNeutral, Aces };
 enum class Gamma : uint8_t { Gamma22, SRGB };
 enum class EnvBrdf : uint8_t { Table, Analytic };
 enum class Irradiance : uint8_t { SH9, Cubemap };
