@@ -111,11 +111,11 @@ Bounds sceneBounds(const Scene& scene) {
 }
 
 Camera frameBounds(const std::vector<glm::vec3>& points, const Bounds& bounds, float azimuth_deg,
-                   float elevation_deg) {
+                   float elevation_deg, float fov_y_deg, float aspect) {
   Camera cam;
-  cam.fov_y_deg = kFramingFovDeg;
-  const float tan_v = std::tan(glm::radians(kFramingFovDeg) * 0.5f);
-  const float tan_h = tan_v * kFramingAspect;
+  cam.fov_y_deg = fov_y_deg;
+  const float tan_v = std::tan(glm::radians(fov_y_deg) * 0.5f);
+  const float tan_h = tan_v * aspect;
   const Basis b(-directionFrom(azimuth_deg, elevation_deg));
   glm::vec3 target = bounds.center();
   const float r = std::max(bounds.radius(), 1e-6f);

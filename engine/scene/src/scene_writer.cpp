@@ -362,6 +362,7 @@ void lightEdits(const nlohmann::json& file, const Scene& loaded, const Scene& ed
                 Collector& c) {
   const size_t explicit_count =
       file.contains("lights") && file["lights"].is_array() ? file["lights"].size() : 0;
+  if (loaded.lights.size() < explicit_count) return;  // not loaded from this file: nothing to map
   bool per_field = edited.lights.size() == loaded.lights.size();
   for (size_t i = explicit_count; per_field && i < loaded.lights.size(); ++i) {
     per_field = sameLight(loaded.lights[i], edited.lights[i]);  // generated lights untouched

@@ -49,9 +49,12 @@ Bounds sceneBounds(const Scene& scene);
 // azimuth/elevation, with near/far from the bounds. Points in `points` (world space; the model's
 // vertices, or the bounds' corners) set the distance and centering: they all project inside
 // kFramingFill of the frame at aspect kFramingAspect.
+// `fov_y_deg` and `aspect` default to the model scenes' 45 degrees and 16:9 (the viewer's F passes
+// the window's).
 Camera frameBounds(const std::vector<glm::vec3>& points, const Bounds& bounds,
                    float azimuth_deg = kFramingAzimuthDeg,
-                   float elevation_deg = kFramingElevationDeg);
+                   float elevation_deg = kFramingElevationDeg, float fov_y_deg = kFramingFovDeg,
+                   float aspect = kFramingAspect);
 
 // The default key light of a model scene: a sphere light of radius 0.05 * the bounds' radius at
 // 2.5 radii from the center (azimuth kFramingAzimuthDeg - 60, elevation 50 degrees: above and
