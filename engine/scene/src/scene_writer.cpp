@@ -48,11 +48,24 @@ std::string oneLine(const ojson& j) {
   return s;
 }
 
+// An object of scalars and lists of scalars (a light, a material, a transform).
+bool isFlat(const ojson& j) {
+  return j.is_object() && std::all_of(j.begin(), j.end(), [](const ojson& v) {
+           return isScalar(v) || (v.is_array() && std::all_of(v.begin(), v.end(), isScalar));
+         });
+}
+
 // `j` written at indentation `indent`, the first line starting after `used` columns of that line.
-std::string formatValue(const ojson& j, int indent, int used, int width, bool top) {
+// `element`: j is an element of a list (a flat element then stays on one line whatever its
+// length: one light, one object per line).
+std::string formatValue(const ojson& j, int indent, int used, int width, bool top,
+                        bool element = false) {
   const std::string line = oneLine(j);
   const bool numbers = j.is_array() && std::all_of(j.begin(), j.end(), isScalar);
-  if (isScalar(j) || numbers || (!top && used + int(line.size()) <= width)) return line;
+  if (isScalar(j) || numbers || (element && isFlat(j)) ||
+      (!top && used + int(line.size()) <= width)) {
+    return line;
+  }
   if (j.empty()) return line;
   const std::string pad(size_t(indent + 2), ' ');
   std::string s(j.is_object() ? "{\n" : "[\n");
@@ -64,7 +77,7 @@ std::string formatValue(const ojson& j, int indent, int used, int width, bool to
       head += ": ";
     }
     s += head;
-    s += formatValue(*it, indent + 2, int(head.size()), width - 1, false);
+    s += formatValue(*it, indent + 2, int(head.size()), width - 1, false, j.is_array());
     s += k + 1 < j.size() ? ",\n" : "\n";
   }
   s.append(size_t(indent), ' ');
