@@ -32,6 +32,8 @@ than REFERENCE):
 
 Outputs (written whole or not at all):
   --heatmap FILE.png    color-mapped per-pixel relative error with a legend
+  --heatmap-max X       the relative error at the top of its scale (default: the 99th
+                        percentile; set it to compare several heat maps)
   --json FILE.json      the metrics and the verdict as JSON
 
 Exit status: 0 within the tolerances (or none given), 1 outside them, 2 bad input (missing or
@@ -42,6 +44,7 @@ written.
 struct CompareArgs {
   std::string test, ref, heatmap, json;
   Tolerances tol;
+  float heatmap_max = 0.0f;  // 0: the p99
 };
 
 double parseTolerance(const std::string& option, const std::string& v) {
@@ -60,6 +63,8 @@ CompareArgs parse(const Args& args) {
     auto value = [&] { return optionValue(args, i); };
     if (s == "--heatmap") {
       r.heatmap = value();
+    } else if (s == "--heatmap-max") {
+      r.heatmap_max = float(parseTolerance(s, value()));
     } else if (s == "--json") {
       r.json = value();
     } else if (s == "--max-rel-rmse") {
@@ -146,7 +151,8 @@ int cmdCompare(const Args& args) {
     const ErrorMetrics m = compareImages(test, ref);
     const std::vector<std::string> violations = toleranceViolations(m, a.tol);
     const nlohmann::ordered_json j = report(a, m, violations);
-    if (!heat_tmp.empty()) writePng(heat_tmp.string(), relativeErrorHeatMap(test, ref));
+    if (!heat_tmp.empty())
+      writePng(heat_tmp.string(), relativeErrorHeatMap(test, ref, a.heatmap_max));
     if (!json_tmp.empty()) {
       std::ofstream out(json_tmp);
       out << j.dump(2) << "\n";
