@@ -6,7 +6,6 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -73,15 +72,6 @@ struct ViewArgs {
   std::vector<std::string> drops;   // scripted drops
 };
 
-int keyCode(const std::string& name) {
-  if (name == "F12") return GLFW_KEY_F12;
-  if (name == "Esc" || name == "Escape") return GLFW_KEY_ESCAPE;
-  if (name.size() == 1 && std::isalpha(static_cast<unsigned char>(name[0]))) {
-    return GLFW_KEY_A + (std::toupper(static_cast<unsigned char>(name[0])) - 'A');
-  }
-  throw UsageError{"--press expects a letter, F12 or Esc, got '" + name + "'"};
-}
-
 ViewArgs parse(const Args& args) {
   ViewArgs r;
   for (size_t i = 0; i < args.size(); ++i) {
@@ -96,7 +86,10 @@ ViewArgs parse(const Args& args) {
     } else if (a == "--screenshot") {
       r.screenshot = value();
     } else if (a == "--press") {
-      r.presses.push_back(keyCode(value()));
+      const std::string k = value();
+      if (ui::keyCode(k) < 0)
+        throw UsageError{"--press expects a letter, F12 or Esc, got '" + k + "'"};
+      r.presses.push_back(ui::keyCode(k));
     } else if (a == "--drop") {
       r.drops.push_back(value());
     } else if (a == "--click") {
@@ -154,7 +147,7 @@ class Viewer {
   void openDropped(const std::string& path);
   void pickAt(glm::dvec2 at, glm::ivec2 fb);
   void applyPanels(const ui::SidebarActions& act);
-  void renderFrame(glm::ivec2 fb, double frame_ms);
+  void renderFrame(glm::ivec2 view, glm::ivec2 fb, double frame_ms);
   void save();
   void saveShot();
   void printSummary(int frames) const;
@@ -243,8 +236,10 @@ void Viewer::handleDrops() {
   for (const std::string& p : input_.takeDrops()) openDropped(p);
 }
 
+// `fb`: the size of the scene view (left of the side bar).
 void Viewer::pickAt(glm::dvec2 at, glm::ivec2 fb) {
-  const auto hit = render::pick(*scene_, fb.x, fb.y, ui::windowToFramebuffer(win_, at, fb));
+  const glm::vec2 px = ui::windowToFramebuffer(win_, at, ctx_.framebufferSize());
+  const auto hit = render::pick(*scene_, fb.x, fb.y, px);
   ui_.view.highlight_object = hit ? hit->object : -1;
   if (!hit) {
     ui_.status = "picked: background (no material)";
@@ -288,18 +283,19 @@ void Viewer::applyPanels(const ui::SidebarActions& act) {
   }
 }
 
-void Viewer::renderFrame(glm::ivec2 fb, double frame_ms) {
+// The scene into the `view` part of the window (left of the side bar), the UI over all of it.
+void Viewer::renderFrame(glm::ivec2 view, glm::ivec2 fb, double frame_ms) {
+  ui::clearWindow(fb, glm::vec3(0.08f, 0.08f, 0.1f));
   if (shaders_ok_) {
     try {
       renderer_.setViewOptions(ui_.view);
-      ui_.stats.push(renderer_.render(fb.x, fb.y, ui_.settings.view, GLuint(0)), frame_ms);
+      ui_.stats.push(renderer_.render(view.x, view.y, ui_.settings.view, GLuint(0)), frame_ms);
     } catch (const std::exception& e) {  // a shader error included: retried after the next R
       shaders_ok_ = false;
       ui_.shader_error = e.what();
       std::fprintf(stderr, "render error: %s\n", e.what());
     }
   }
-  if (!shaders_ok_) ui::clearWindow(fb, glm::vec3(0.08f, 0.08f, 0.1f));
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, fb.x, fb.y);
   imgui_->endFrame();
@@ -327,6 +323,7 @@ int Viewer::run() {
   while (!ctx_.shouldClose() && !quit_) {
     ctx_.pollEvents();
     const glm::ivec2 fb = ctx_.framebufferSize();
+    const glm::ivec2 view = ui::sceneViewSize(ui_, ui::windowSize(win_), fb);
     if (fb.x <= 0 || fb.y <= 0) {  // minimized: nothing to draw into
       glfwWaitEventsTimeout(0.1);
       last = std::chrono::steady_clock::now();
@@ -349,16 +346,16 @@ int Viewer::run() {
     const ui::PointerState pointer = ui::readPointer(win_);
     std::optional<glm::dvec2> click = clicks_.update(pointer, imgui_->wantsMouse());
     if (frame == 0 && va_.click) click = va_.click;
-    if (click) pickAt(*click, fb);
-    handleKeys(fb);
+    if (click) pickAt(*click, view);
+    handleKeys(view);
     controller_.update(pointer, ui::windowSize(win_), input_.takeScroll(), ui::flyKeys(input_),
                        imgui_->wantsMouse(), imgui_->wantsKeyboard(),
                        float(std::min(frame_ms, 100.0) / 1000.0), scene_->camera);
     const render::Manifest manifest = renderer_.manifest();
     const ui::SidebarInfo info{gpu_, scene_->lights.size(),
-                               render::countLightsInView(*scene_, fb.x, fb.y), &manifest};
+                               render::countLightsInView(*scene_, view.x, view.y), &manifest};
     applyPanels(ui::drawSidebar(ui_, info));
-    renderFrame(fb, frame_ms);
+    renderFrame(view, fb, frame_ms);
     if (shot_) saveShot();
     ++frame;
     const bool last_frame = va_.frames > 0 && frame >= va_.frames;

@@ -31,11 +31,12 @@ TEST_F(ViewerWindow, WindowShowsSceneAndPanelsUnderXvfb) {
   const auto log =
       std::filesystem::temp_directory_path() / numbered("hv_view_", int(getpid()), ".log");
   // (ostringstream: GCC 12's -Wrestrict misfires on long std::string + chains)
-  // --click 359,186: a scripted left click where the red sphere's center (0.6, 0.5, 0) lands in
-  // the 640x360 window, through the same path as a mouse click.
+  // --click 206,187: a scripted left click where the red sphere's center (0.6, 0.5, 0) lands in
+  // the 640x360 window (the scene is drawn in the 340x360 left of the side bar), through the same
+  // path as a mouse click.
   std::ostringstream os;
   os << "DISPLAY=" << server->display() << " '" << exe << "' view '" << HV_SOURCE_DIR
-     << "/samples/scenes/default.json' --size 640x360 --frames 5 --click 359,186 --screenshot '"
+     << "/samples/scenes/default.json' --size 640x360 --frames 5 --click 206,187 --screenshot '"
      << shot.string() << "' > '" << log.string() << "' 2>&1";
   const std::string cmd = os.str();
   const int rc = std::system(cmd.c_str());

@@ -2,6 +2,7 @@
 #include "halfvec/ui/sidebar.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "imgui.h"
 #include "imgui_internal.h"  // the window's content extent, for the overflow check
@@ -25,6 +26,13 @@ SidebarRect sidebarRect(glm::vec2 display, float scale) {
   r.x = display.x - r.width;
   r.y = 0.0f;
   return r;
+}
+
+glm::ivec2 sceneViewSize(const ViewerUi& ui, glm::ivec2 window, glm::ivec2 framebuffer) {
+  if (!ui.visible || window.x <= 0) return framebuffer;
+  const SidebarRect r = sidebarRect(glm::vec2(window), ui.scale);
+  const int bar = int(std::ceil(r.width * float(framebuffer.x) / float(window.x)));
+  return {std::max(framebuffer.x - bar, 1), framebuffer.y};
 }
 
 SidebarActions drawSidebar(ViewerUi& ui, const SidebarInfo& info, int tab) {

@@ -44,6 +44,15 @@ FlyKeys flyKeys(const ViewerInput& in) {
   return k;
 }
 
+int keyCode(const std::string& name) {
+  if (name == "F12") return GLFW_KEY_F12;
+  if (name == "Esc" || name == "Escape") return GLFW_KEY_ESCAPE;
+  if (name.size() == 1 && std::isalpha(static_cast<unsigned char>(name[0]))) {
+    return GLFW_KEY_A + (std::toupper(static_cast<unsigned char>(name[0])) - 'A');
+  }
+  return -1;
+}
+
 DropKind dropKind(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));

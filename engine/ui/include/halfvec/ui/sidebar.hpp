@@ -23,6 +23,12 @@ struct SidebarRect {
 // edge, full height, kSidebarWidth * scale wide (at most the whole display).
 SidebarRect sidebarRect(glm::vec2 display, float scale);
 
+struct ViewerUi;
+// The part of the framebuffer the scene is rendered into: left of the side bar while it is shown
+// (the 3D view stays free: the side bar never covers the scene), the whole framebuffer when it
+// is hidden. `window` is the window's size in window coordinates (the side bar's units).
+glm::ivec2 sceneViewSize(const ViewerUi& ui, glm::ivec2 window, glm::ivec2 framebuffer);
+
 // Everything the UI edits or shows.
 struct ViewerUi {
   MaterialPanelModel materials;

@@ -27,6 +27,9 @@ glm::vec2 windowToFramebuffer(GLFWwindow* window, glm::dvec2 at, glm::ivec2 fram
 // The fly keys held now (W/S, A/D, E/Q, Shift), from the input's events.
 FlyKeys flyKeys(const ViewerInput& input);
 
+// The GLFW key of a name a user can type (a letter, "F12", "Esc"), or -1 (`view --press`).
+int keyCode(const std::string& name);
+
 // What a file dropped on the window does: open it as the scene (.json, .gltf, .glb), light the
 // scene with it (.hdr), or nothing.
 enum class DropKind { Scene, Environment, Unsupported };
