@@ -341,6 +341,7 @@ int Viewer::run() {
       for (const std::string& d : va_.drops) input_.onDrop({d});
     }
     handleDrops();
+    if (const float s = input_.takeContentScale(); s > 0.0f) ui::applyContentScale(ui_.scale = s);
     imgui_->beginFrame();
     // Before the camera moves: a click picks in the frame the user clicked on.
     const ui::PointerState pointer = ui::readPointer(win_);

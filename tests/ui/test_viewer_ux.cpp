@@ -59,6 +59,9 @@ TEST(ViewerInput, PressAndReleaseInOneFrameIsOneTap) {
   in.onScroll(2.0);
   EXPECT_DOUBLE_EQ(in.takeScroll(), 3.0);
   EXPECT_DOUBLE_EQ(in.takeScroll(), 0.0);
+  in.onContentScale(1.5f);  // moved to a denser monitor
+  EXPECT_FLOAT_EQ(in.takeContentScale(), 1.5f);
+  EXPECT_FLOAT_EQ(in.takeContentScale(), 0.0f);
   in.onDrop({"a.glb", "b.hdr"});
   EXPECT_EQ(in.takeDrops(), (std::vector<std::string>{"a.glb", "b.hdr"}));
 }

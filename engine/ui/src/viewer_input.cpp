@@ -2,6 +2,8 @@
 
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
+
 namespace hv::ui {
 
 namespace {
@@ -20,6 +22,9 @@ ViewerInput::ViewerInput(GLFWwindow* window) {
   });
   glfwSetDropCallback(window, [](GLFWwindow* w, int count, const char** paths) {
     if (ViewerInput* in = self(w)) in->onDrop(std::vector<std::string>(paths, paths + count));
+  });
+  glfwSetWindowContentScaleCallback(window, [](GLFWwindow* w, float x, float y) {
+    if (ViewerInput* in = self(w)) in->onContentScale(std::max(x, y));
   });
 }
 
