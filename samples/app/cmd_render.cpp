@@ -18,9 +18,11 @@
 namespace hv::app {
 
 namespace {
-constexpr const char* kRenderHelp = R"(Usage: halfvec render SCENE.json [options]
+constexpr const char* kRenderHelp = R"(Usage: halfvec render SCENE [options]
 
-Renders SCENE.json headless (EGL) and writes the tone-mapped image.
+Renders SCENE headless (EGL) and writes the tone-mapped image. SCENE is a scene file (.json,
+docs/scene-format.md) or a glTF model (.gltf, .glb): a model is framed from a three-quarter view
+under the procedural sky with a default key light (docs/scene-format.md, "Models opened by path").
 
 Options:
   --size WxH            output size (default: the scene's settings.width x settings.height)
@@ -29,6 +31,13 @@ Options:
   --stats FILE.json     per-pass GPU times, renderer, sizes, light counts, compiled variants
   --set PATH=VALUE      override a scene field before validation, e.g. --set settings.exposure=2
                         or --set lights.0.intensity=50 (repeatable; VALUE is JSON)
+  --env FILE.hdr        replace the scene's environment with this equirectangular HDR
+  --camera N            a model's own camera N (glTF cameras, in node order) instead of framing
+  --print-scene         print the scene JSON (for a model: the one made for it) and exit
+  --aa fxaa|none        post-process anti-aliasing of the 8-bit image (default fxaa; the HDR
+                        image of --hdr is never anti-aliased)
+  --emitters on|off     draw sphere and tube lights as emissive geometry of their color (default
+                        on; --hdr then holds them too: use off to compare with the reference)
   --view NAME           debug view: basecolor|metallic|roughness|cavity|normal|depth|
                         shading_model|lights_per_tile (G-buffer and culling, shown as stored),
                         or one term, tone-mapped as the normal image (--hdr writes the term):
@@ -46,9 +55,10 @@ Options:
 
 struct RenderArgs {
   std::string scene, out, hdr, stats, aov;
-  std::vector<std::string> overrides;
+  SceneOpenOptions open;
   int width = 0, height = 0, frames = 1;
-  bool binary_cache = true;
+  bool binary_cache = true, print_scene = false;
+  render::ViewOptions view_options{render::PostAA::Fxaa, true, -1};
   render::DebugView view = render::DebugView::None;
 };
 
@@ -57,7 +67,9 @@ RenderArgs parse(const Args& args) {
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&] { return optionValue(args, i); };
-    if (a == "--size") {
+    if (takeSceneOption(args, i, r.open, r.print_scene)) {
+      continue;
+    } else if (a == "--size") {
       parseSize(value(), r.width, r.height);
     } else if (a == "--out") {
       r.out = value();
@@ -67,19 +79,27 @@ RenderArgs parse(const Args& args) {
       r.stats = value();
     } else if (a == "--aov") {
       r.aov = value();
-    } else if (a == "--set") {
-      r.overrides.push_back(value());
     } else if (a == "--frames") {
       r.frames = std::atoi(value().c_str());
       if (r.frames < 1 || r.frames > 1000) throw UsageError{"--frames expects 1..1000"};
+    } else if (a == "--aa") {
+      const std::string v = value();
+      const auto aa = render::postAAFromString(v);
+      if (!aa) throw UsageError{"--aa expects fxaa or none, got '" + v + "'"};
+      r.view_options.aa = *aa;
+    } else if (a == "--emitters") {
+      const std::string v = value();
+      if (v != "on" && v != "off")
+        throw UsageError{"--emitters expects on or off, got '" + v + "'"};
+      r.view_options.emitters = v == "on";
     } else if (a == "--uber") {
-      r.overrides.push_back("settings.uber=true");
+      r.open.overrides.push_back("settings.uber=true");
     } else if (a == "--no-binary-cache") {
       r.binary_cache = false;
     } else if (a == "--view") {
       const std::string v = value();
       auto dv = render::debugViewFromString(v);
-      if (!dv) throw UsageError{"unknown --view '" + v + "'"};
+      if (!dv) throw UsageError{"unknown --view '" + v + "'" + debugViewSuggestion(v)};
       r.view = *dv;
     } else {
       takeScenePath(a, r.scene);
@@ -240,8 +260,9 @@ int cmdRender(const Args& args) {
     }
   }
   RenderArgs ra = parse(args);
+  if (ra.print_scene) return printScene(ra.scene, ra.open);
   // Load and validate everything before any GL work: bad input renders nothing.
-  Scene scene = loadScene(ra.scene, ra.overrides);
+  Scene scene = openScene(ra.scene, ra.open);
   const int w = ra.width ? ra.width : scene.settings.width;
   const int h = ra.height ? ra.height : scene.settings.height;
   if (ra.out.empty()) {
@@ -253,6 +274,7 @@ int cmdRender(const Args& args) {
   auto ctx = createHeadlessContext();
   render::Renderer renderer;
   if (!ra.binary_cache) renderer.programs().setBinaryCacheDir({});
+  renderer.setViewOptions(ra.view_options);
   const auto t0 = std::chrono::steady_clock::now();
   renderer.setScene(scene);
   const double setup_ms =

@@ -45,10 +45,11 @@ void releaseFreedMemory() {
 
 }  // namespace
 
-SceneReloader::SceneReloader(std::string path) : path_(std::move(path)) {
+SceneReloader::SceneReloader(std::string path, SceneOpenOptions options)
+    : path_(std::move(path)), options_(std::move(options)) {
   keepLargeBlocksMapped();
   file_time_ = mtimeOf(path_);
-  scene_ = std::make_unique<Scene>(loadScene(path_));
+  scene_ = std::make_unique<Scene>(openScene(path_, options_));
   loaded_camera_ = scene_->camera;
 }
 
@@ -67,7 +68,7 @@ bool SceneReloader::poll() {
 bool SceneReloader::reload() {
   if (!renderer_) throw std::logic_error("SceneReloader::reload before attach");
   try {
-    auto fresh = std::make_unique<Scene>(loadScene(path_));
+    auto fresh = std::make_unique<Scene>(openScene(path_, options_));
     const bool camera_edited = !sameCamera(fresh->camera, loaded_camera_);
     if (!camera_edited) fresh->camera = scene_->camera;  // keep the user's view
     try {

@@ -325,6 +325,7 @@ class Importer {
   std::vector<Material> materials;
   std::vector<Mesh> meshes;
   std::vector<Object> objects;
+  std::vector<GltfCamera> cameras;
 
  private:
   // ---- accessors ---------------------------------------------------------------------------
@@ -984,6 +985,9 @@ class Importer {
           objects.push_back(std::move(o));
         }
       }
+      if (n.camera >= 0 && size_t(n.camera) < m_.cameras.size()) {
+        addCamera(m_.cameras[size_t(n.camera)], world);
+      }
       on_path[size_t(ni)] = true;
       stack.push_back({ni, world, 0});
     };
@@ -1003,6 +1007,22 @@ class Importer {
         stack.pop_back();
       }
     }
+  }
+
+  void addCamera(const tinygltf::Camera& c, const glm::mat4& world) {
+    GltfCamera cam;
+    cam.name = c.name;
+    cam.world = world;
+    cam.perspective = c.type != "orthographic";
+    if (cam.perspective) {
+      if (c.perspective.yfov > 0.0) cam.yfov_rad = float(c.perspective.yfov);
+      if (c.perspective.znear > 0.0) cam.znear = float(c.perspective.znear);
+      cam.zfar = float(std::max(c.perspective.zfar, 0.0));
+    } else {
+      cam.znear = float(std::max(c.orthographic.znear, 1e-4));
+      cam.zfar = float(std::max(c.orthographic.zfar, 0.0));
+    }
+    cameras.push_back(cam);
   }
 
   std::string path_;
@@ -1079,6 +1099,9 @@ void loadGltfFromMemory(const uint8_t* bytes, size_t size, bool binary, const st
   for (auto& x : imp.materials) scene.materials.push_back(std::move(x));
   for (auto& x : imp.meshes) scene.meshes.push_back(std::move(x));
   for (auto& x : imp.objects) scene.objects.push_back(std::move(x));
+  if (options.cameras) {
+    for (auto& c : imp.cameras) options.cameras->push_back(std::move(c));
+  }
 }
 
 void loadGltf(const std::string& path, const glm::mat4& transform, Scene& scene,

@@ -274,6 +274,7 @@ Material parseMaterial(const Ctx& ctx, const json& j, const std::string& ptr, bo
   if (allow_name) keys.push_back("name");
   Obj o(ctx, j, ptr, keys);
   Material m;
+  m.source = ptr;
   m.name = o.string("name", "");
   m.base_color = o.vec3("base_color", m.base_color, kUnit);
   m.metallic = o.num("metallic", m.metallic, kUnit);
@@ -454,9 +455,11 @@ void expandGenerator(const Ctx& ctx, const json& j, const std::string& ptr,
   }
 }
 
-Environment parseEnvironment(const Ctx& ctx, const json& j) {
-  Obj o(ctx, j, "/environment",
-        {"type", "path", "color", "intensity", "rotation_deg", "cube_size", "prefilter_samples"});
+Environment parseEnvironment(const Ctx& ctx, const json& j,
+                             const std::string& ptr = "/environment") {
+  Obj o(ctx, j, ptr,
+        {"type", "path", "color", "intensity", "rotation_deg", "cube_size", "prefilter_samples",
+         "fallback"});
   Environment e;
   e.kind = o.enumeration<EnvironmentKind>("type", e.kind);
   if (o.has("path") && e.kind != EnvironmentKind::HdrFile)
@@ -467,7 +470,14 @@ Environment parseEnvironment(const Ctx& ctx, const json& j) {
   if (e.kind == EnvironmentKind::HdrFile) {
     if (!o.has("path")) o.fail("path", "missing; type \"hdr\" needs the path of an .hdr file");
     e.path = ctx.resolve(o.at("path"), o.string("path", ""));
+    if (!fs::is_regular_file(e.path) && o.has("fallback")) {  // as a glTF object's fallback
+      sceneWarning(ctx.file + ": " + o.at("path") + ": file not found: " + e.path +
+                       "; using the fallback environment",
+                   ctx.warnings);
+      return parseEnvironment(ctx, o["fallback"], o.at("fallback"));
+    }
     if (!fs::is_regular_file(e.path)) o.fail("path", "file not found: " + e.path);
+    if (o.has("fallback")) parseEnvironment(ctx, o["fallback"], o.at("fallback"));  // validated
   }
   e.color = o.vec3("color", e.color, kNonNeg);
   e.intensity = o.num("intensity", e.intensity, kNonNeg);

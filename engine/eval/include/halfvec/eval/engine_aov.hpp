@@ -13,7 +13,8 @@ namespace hv::eval {
 
 // Renders the renderer's scene once per term through the Renderer's per-term debug views
 // (render::DebugView::DirectDiffuse ... AmbientSpecular, render::termView: that one term, no
-// emissive, black background) and reads back each HDR image; pixels that are not
+// emissive, black background; no emitter geometry whatever the renderer's ViewOptions) and
+// reads back each HDR image; pixels that are not
 // ShadingModel::DefaultLit are set to 0, as in the reference's AOVs. The next plain render()
 // renders the normal image again.
 std::array<ImageRGBf, kReferenceAovCount> renderEngineAovs(render::Renderer& renderer, int width,

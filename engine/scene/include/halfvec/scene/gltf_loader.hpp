@@ -49,6 +49,16 @@ struct GltfLimits {
   uint64_t max_image_pixels = uint64_t(1) << 28;  // all images of the file together
 };
 
+// A camera node of a glTF file (glTF 2.0 section 3.10): it looks down its local -Z with +Y up.
+struct GltfCamera {
+  std::string name;
+  glm::mat4 world{1.0f};  // `transform` * the node's world matrix
+  bool perspective = true;
+  float yfov_rad = 0.7853982f;  // perspective only
+  float znear = 0.05f;
+  float zfar = 0.0f;  // 0 = infinite
+};
+
 struct GltfOptions {
   // >= 0: every imported primitive uses scene.materials[material_override] and no glTF
   // materials or images are imported.
@@ -58,6 +68,8 @@ struct GltfOptions {
   // Warnings go here if set, else to stderr.
   std::vector<std::string>* warnings = nullptr;
   GltfLimits limits;
+  // Camera nodes go here, in the order they are visited (depth first from the scene's roots).
+  std::vector<GltfCamera>* cameras = nullptr;
 };
 
 // Appends the meshes, materials, images and objects (one per node with a mesh, transform =
