@@ -65,8 +65,10 @@ Options parseArgs(const Args& args) {
     }
   }
   if (o.out.empty()) throw UsageError{"--out needs a file name"};
+  // The shared assets folder (the CLI sets its default), empty when HV_ASSETS_DIR is not set: the
+  // sections that need it say they were skipped.
   const char* env = std::getenv("HV_ASSETS_DIR");
-  o.eval.assets_dir = env && *env ? env : expandEnvVars("${HV_ASSETS_DIR}");
+  o.eval.assets_dir = env ? env : "";
   o.eval.scenes_dir = HV_SAMPLES_DIR;
   return o;
 }

@@ -151,9 +151,9 @@ void measureAmbientEnv(const AccuracyOptions& o, const Environment& env,
   }
   render::Renderer r;
   r.setScene(s);
-  const auto aov = renderEngineAovs(r, s, a.width, a.height);
+  const auto aov = renderEngineAovs(r, a.width, a.height);
   s.settings.env_brdf = EnvBrdf::Analytic;
-  const auto aov_approx = renderEngineAovs(r, s, a.width, a.height);
+  const auto aov_approx = renderEngineAovs(r, a.width, a.height);
   s.settings.env_brdf = EnvBrdf::Table;
   const auto g = r.readGBuffer();
   ReferenceOptions ro;
@@ -285,7 +285,7 @@ PointLightAccuracy measurePointLights(const AccuracyOptions& o) {
   a.height = o.quick ? 48 : 180;
   render::Renderer r;
   r.setScene(s);
-  const auto aov = renderEngineAovs(r, s, a.width, a.height);
+  const auto aov = renderEngineAovs(r, a.width, a.height);
   const auto g = r.readGBuffer();
   ReferenceOptions ro;
   ro.samples = 4;
@@ -381,7 +381,7 @@ std::vector<SceneAccuracy> measureScenes(const AccuracyOptions& o) {
         1, int(std::lround(double(a.width) * s.settings.height / std::max(1, s.settings.width))));
     render::Renderer r;
     r.setScene(s);
-    const auto aov = renderEngineAovs(r, s, a.width, a.height);
+    const auto aov = renderEngineAovs(r, a.width, a.height);
     const auto g = r.readGBuffer();
     ReferenceOptions ro;
     ro.samples = a.samples;

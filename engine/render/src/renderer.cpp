@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "pipeline_state.hpp"
+#include "post_stages.hpp"
 #include "targets.hpp"
 #include "halfvec/scene/enums.hpp"
 #include "halfvec/shading/light_gpu.hpp"
@@ -81,6 +82,7 @@ Renderer::~Renderer() = default;
 
 void Renderer::setScene(const Scene& scene) {
   scene_ = &scene;
+  ++lights_version_;
   gpu_ = std::make_unique<GpuScene>(scene);
   setEnvironment(scene);
   refreshVariants();
@@ -92,6 +94,7 @@ void Renderer::updateMaterials() {
 }
 
 void Renderer::updateLights() {
+  ++lights_version_;
   if (gpu_) gpu_->updateLights(*scene_);
   if (scene_) refreshVariants();
 }
@@ -208,7 +211,11 @@ FrameStats Renderer::render(int width, int height, DebugView view,
   if (culled) cullLightsPass(frame);
   lightPass(frame);
   ambientPass();
-  tonemapPass(view, present_fbo, width, height);
+  emitterPass(view);
+  const bool post = postPassesActive(view);
+  final_ldr_ = 0;
+  tonemapPass(view, post ? std::nullopt : present_fbo, width, height);
+  if (post) postPasses(view, present_fbo, width, height);
   applyState(PipelineState{});
 
   FrameStats stats;
@@ -255,8 +262,8 @@ ImageRGBf Renderer::readHdr() const {
 ImageRGBA8 Renderer::readLdr() const {
   const Targets& t = *targets_;
   ImageRGBA8 img = makeImageRGBA8(t.width, t.height);
-  glGetTextureImage(t.ldr.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(img.px.size()),
-                    img.px.data());
+  glGetTextureImage(final_ldr_ ? final_ldr_ : t.ldr.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                    GLsizei(img.px.size()), img.px.data());
   flipRows(img.px, t.width, t.height, 4);
   return img;
 }
