@@ -51,7 +51,7 @@ ratios.
   --breakdown  instead: table (d) alone at 1024 lights (or --lights N), per type: the light pass
                split into per-pixel setup, walking the lists and fetching the lights, and the
                shading arithmetic, each measured by a probe build of the pass with frames
-               interleaved (Renderer::LightPassProbe); "if only shading" is the rate the pass
+               interleaved (render::LightPassProbe); "if only shading" is the rate the pass
                would reach were setup and fetching free
   --variants   instead: programs specialized to the scene vs the uber build, GPU ms per pass on
                every scene of samples/scenes, as a markdown table (--quick: at most 640x360)
@@ -103,8 +103,10 @@ struct Runner {
   std::vector<double> cull, light;
   std::vector<std::pair<std::string, double>> fastest;  // per pass, the fastest frame's ms
   Runner(const Scene& scene, int w, int h,
-         render::Renderer::LightPassProbe probe = render::Renderer::LightPassProbe::Shade) {
-    r.setLightPassProbe(probe);
+         render::LightPassProbe probe = render::LightPassProbe::Shade) {
+    render::DebugOptions debug;
+    debug.light_probe = probe;
+    r.setDebugOptions(debug);
     r.setScene(scene);
     r.render(w, h);  // warm up: compiles the variants
   }
@@ -223,7 +225,7 @@ int compareShaderTrees(const Scene& scene, const std::vector<std::string>& dirs,
 
 // --breakdown (and table (d)): the light pass of one scene three times, frames interleaved: the
 // real pass, the FetchOnly probe (lists walked, lights fetched, no shading) and the SetupOnly
-// probe (no light loop); see Renderer::LightPassProbe. Differences of medians give the time of
+// probe (no light loop); see render::LightPassProbe. Differences of medians give the time of
 // per-pixel setup, of walking the lists and fetching the lights, and of the shading arithmetic;
 // "if only shading" is the evaluation rate the pass would reach were the other two free.
 struct Breakdown {
@@ -233,7 +235,7 @@ struct Breakdown {
   double shadingOnlyRate() const { return mevalsPerSecond(full.evals, shading()); }
 };
 Breakdown breakdown(const Scene& scene, int w, int h, int frames) {
-  using Probe = render::Renderer::LightPassProbe;
+  using Probe = render::LightPassProbe;
   std::vector<std::unique_ptr<Runner>> runs;
   for (Probe p : {Probe::Shade, Probe::FetchOnly, Probe::SetupOnly}) {
     runs.push_back(std::make_unique<Runner>(scene, w, h, p));

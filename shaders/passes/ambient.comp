@@ -43,16 +43,16 @@
 
 layout(local_size_x = HV_TILE_SIZE, local_size_y = HV_TILE_SIZE) in;
 
-layout(binding = 0) uniform sampler2D t_base_cavity;
-layout(binding = 1) uniform sampler2D t_material;
-layout(binding = 2) uniform sampler2D t_normal;
-layout(binding = 3) uniform sampler2D t_depth;
-layout(binding = 5) uniform samplerCube t_radiance;    // prefiltered: one roughness per mip
-layout(binding = 6) uniform sampler2D t_env_brdf;      // (scale, bias) over (NoV, roughness)
-layout(binding = 7) uniform samplerCube t_irradiance;  // E(n), not divided by pi
-layout(rgba16f, binding = 0) uniform image2D i_hdr;
+layout(binding = HV_UNIT_BASE_CAVITY) uniform sampler2D t_base_cavity;
+layout(binding = HV_UNIT_MATERIAL) uniform sampler2D t_material;
+layout(binding = HV_UNIT_NORMAL) uniform sampler2D t_normal;
+layout(binding = HV_UNIT_DEPTH) uniform sampler2D t_depth;
+layout(binding = HV_UNIT_RADIANCE) uniform samplerCube t_radiance;    // prefiltered: one roughness per mip
+layout(binding = HV_UNIT_ENV_BRDF) uniform sampler2D t_env_brdf;      // (scale, bias) over (NoV, roughness)
+layout(binding = HV_UNIT_IRRADIANCE) uniform samplerCube t_irradiance;  // E(n), not divided by pi
+layout(rgba16f, binding = HV_IMAGE_HDR) uniform image2D i_hdr;
 
-layout(std140, binding = 1) uniform EnvironmentBlock {
+layout(std140, binding = HV_UBO_ENVIRONMENT) uniform EnvironmentBlock {
   vec4 u_sh[9];      // radiance SH9 (ibl.glsl order)
   vec4 u_env;        // max mip, env BRDF table size, 1 = environment present, unused
 };

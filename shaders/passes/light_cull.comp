@@ -41,7 +41,7 @@ layout(std430, binding = HV_BINDING_TILE_COUNTERS) buffer TileCounterBlock { uin
 
 // ---------------------------------------------------------------------------------------------
 #if HV_CULL_STAGE == HV_CULL_BOUNDS
-layout(binding = 3) uniform sampler2D t_depth;
+layout(binding = HV_UNIT_DEPTH) uniform sampler2D t_depth;
 // One invocation per pixel column of the tile: its HV_TILE_HEIGHT fetches reduced in registers,
 // then one shared atomic per bound (instead of one per pixel).
 layout(local_size_x = HV_TILE_SIZE) in;
@@ -119,7 +119,7 @@ layout(std430, binding = HV_BINDING_TILE_INDICES) buffer TileIndexBlock {
   uint pad0, pad1, pad2;
   uint tile_indices[];
 };
-uniform uint u_cull_phase;  // 0 = count, 1 = fill
+layout(location = HV_LOC_CULL_PHASE) uniform uint u_cull_phase;  // 0 = count, 1 = fill
 
 void main() {
   uint i = gl_GlobalInvocationID.x;

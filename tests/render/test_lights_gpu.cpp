@@ -123,13 +123,17 @@ TEST(LightPass, TiledEqualsBruteForceWith4096Lights) {
   EXPECT_EQ(r.tileListReadbacks(), 0u);
   EXPECT_GT(stats.tile_light_entries, 1000u);
   EXPECT_GE(r.tileListCapacity(), stats.tile_light_entries);
-  r.setLightTexelLimit(1);  // the SSBO path of the light pass (no buffer textures)
+  render::DebugOptions ssbo;
+  ssbo.light_texel_limit = 1;  // the SSBO path of the light pass (no buffer textures)
+  r.setDebugOptions(ssbo);
   r.render(w, h2);
   const auto tiled_ssbo = r.readHdr();
   // The read-back path (bound over the limit): a fresh renderer, so the list starts small and
   // has to grow from the exact total read back between the scan and the fill.
   render::Renderer r2;
-  r2.setTileListBoundLimit(0);
+  render::DebugOptions readback;
+  readback.tile_bound_limit = 0;
+  r2.setDebugOptions(readback);
   r2.setScene(s);
   const auto stats2 = r2.render(w, h2);
   const auto tiled_readback = r2.readHdr();
@@ -275,14 +279,19 @@ TEST(LightPass, TiledEqualsBruteForceDepthEdgesAndCameraInsideLights) {
   EXPECT_GT(mean / tiled.px.size(), 0.01) << "lights should light the scene";
 }
 
-// The benchmark probes of the light pass (Renderer::LightPassProbe, `halfvec bench --breakdown`)
+// The benchmark probes of the light pass (render::LightPassProbe, `halfvec bench --breakdown`)
 // measure what they claim: FetchOnly walks each pixel's tile list and reads its lights (every lit
 // pixel = the sum of the premultiplied colors of the lights in its tile, so a light outside the
 // view adds nothing), SetupOnly runs no light loop (the image of the scene without lights), and
 // switching back to Shade gives the real image again. Tolerance: RGBA16F, 2^-11 relative.
 TEST(LightPass, BenchmarkProbesDoWhatTheyMeasure) {
   testContext();
-  using Probe = render::Renderer::LightPassProbe;
+  using Probe = render::LightPassProbe;
+  auto probe = [](Probe p) {
+    render::DebugOptions o;
+    o.light_probe = p;
+    return o;
+  };
   Scene s = litPlane(LightType::Point);
   s.lights[0].color = {1.0f, 0.5f, 0.25f};
   Light sphere = litPlane(LightType::Sphere).lights[0];
@@ -303,7 +312,7 @@ TEST(LightPass, BenchmarkProbesDoWhatTheyMeasure) {
   r.render(w, h);
   const auto shaded = r.readHdr();
 
-  r.setLightPassProbe(Probe::FetchOnly);
+  r.setDebugOptions(probe(Probe::FetchOnly));
   r.render(w, h);
   const auto fetched = r.readHdr();
   for (size_t i = 0; i < fetched.px.size(); ++i) {
@@ -312,7 +321,7 @@ TEST(LightPass, BenchmarkProbesDoWhatTheyMeasure) {
     }
   }
 
-  r.setLightPassProbe(Probe::SetupOnly);
+  r.setDebugOptions(probe(Probe::SetupOnly));
   r.render(w, h);
   const auto setup_only = r.readHdr();
   Scene dark = s;
@@ -326,7 +335,7 @@ TEST(LightPass, BenchmarkProbesDoWhatTheyMeasure) {
     ASSERT_EQ(setup_only.px[i], no_lights.px[i]) << "pixel " << i;
   }
 
-  r.setLightPassProbe(Probe::Shade);
+  r.setDebugOptions(probe(Probe::Shade));
   r.render(w, h);
   const auto again = r.readHdr();
   float lit = 0.0f;
