@@ -53,6 +53,11 @@ ratios.
                shading arithmetic, each measured by a probe build of the pass with frames
                interleaved (render::LightPassProbe); "if only shading" is the rate the pass
                would reach were setup and fetching free
+  --frame      instead: every pass of every sample scene (or of --scene FILE) in ms and as a
+               multiple of the floor pass (a compute pass that reads the G-buffer and writes an
+               RGBA16F target) timed in the same frames, median over --frames (default 9) with
+               its 95% interval; with --shaders DIR,... one set per shader tree, frames
+               interleaved; --report FILE.md also writes the table as markdown
   --variants   instead: programs specialized to the scene vs the uber build, GPU ms per pass on
                every scene of samples/scenes, as a markdown table (--quick: at most 640x360)
 )";
@@ -267,6 +272,9 @@ int cmdBench(const Args& args) {
   bool quick = false;
   bool variants = false;
   bool show_breakdown = false;
+  bool frame_mode = false;
+  std::string report;
+  bool frames_given = false;
   int types = -1;  // --types: -1 mixed, else a hv::LightType
   std::vector<std::string> shader_dirs;
   std::string scene_path;
@@ -280,6 +288,7 @@ int cmdBench(const Args& args) {
       parseSize(value(), w, h);
     } else if (a == "--frames") {
       frames = std::max(1, std::atoi(value().c_str()));
+      frames_given = true;
     } else if (a == "--max-lights") {
       max_lights = std::atoi(value().c_str());
     } else if (a == "--lights") {
@@ -310,9 +319,23 @@ int cmdBench(const Args& args) {
       variants = true;
     } else if (a == "--breakdown") {
       show_breakdown = true;
+    } else if (a == "--frame") {
+      frame_mode = true;
+    } else if (a == "--report") {
+      report = value();
     } else {
       throw UsageError{"unknown option '" + a + "'"};
     }
+  }
+  if (frame_mode) {
+    FrameBenchOptions o;
+    o.width = w;
+    o.height = h;
+    if (frames_given) o.frames = frames;
+    o.scene = scene_path;
+    o.shader_dirs = shader_dirs;
+    o.report = report;
+    return benchFrame(o);
   }
   if (variants)
     return quick ? benchVariants(std::min(w, 640), std::min(h, 360), frames)

@@ -41,7 +41,8 @@
 #define HV_MATERIAL_TEXTURE_COUNT 5
 
 // ---- Image units -------------------------------------------------------------------------------
-#define HV_IMAGE_HDR 0  // the RGBA16F accumulation target the compute passes add into
+#define HV_IMAGE_HDR 0    // the RGBA16F accumulation target the compute passes add into
+#define HV_IMAGE_FLOOR 1  // the floor pass's scratch target (DebugOptions::floor_pass)
 
 // ---- Uniform locations (explicit, so the C++ never looks a name up) ------------------------------
 #define HV_LOC_MODEL 0          // gbuffer.vert: object to world

@@ -159,4 +159,9 @@ struct TonemapPassOutput {
 void runTonemapPass(const PassContext& ctx, const TonemapPassInput& in,
                     const TonemapPassOutput& out, GLuint fullscreen_vao);
 
+// ---- Floor (floor_pass.cpp) -------------------------------------------------------------------
+// Reads the G-buffer, writes `scratch` (RGBA16F, width x height): DebugOptions::floor_pass.
+void runFloorPass(const PassContext& ctx, const GBufferView& gbuffer, GLuint scratch, int width,
+                  int height);
+
 }  // namespace hv::render

@@ -232,6 +232,10 @@ FrameStats Renderer::render(int width, int height, DebugView view,
       ctx, {t.hdr.id(), gbuffer, p.culling.view().ranges, view, scene_->settings},
       {present ? *present_fbo : t.output.id(), present ? t.output.id() : 0u, width, height},
       empty_vao_.id());
+  if (debug_.floor_pass) {
+    if (!t.floor) t.floor = gl::createTexture2D("floor pass scratch", GL_RGBA16F, width, height);
+    runFloorPass(ctx, gbuffer, t.floor.id(), width, height);
+  }
   applyState(PipelineState{});
 
   FrameStats stats;

@@ -15,6 +15,7 @@ struct Renderer::Targets {
   gl::Texture depth;        // DEPTH_COMPONENT32F reversed Z
   gl::Texture hdr;          // RGBA16F accumulation
   gl::Texture ldr;          // RGBA8 output
+  gl::Texture floor;        // RGBA16F scratch of the floor pass (created when first needed)
   gl::Framebuffer gbuffer;  // base, material, normal, hdr + depth
   gl::Framebuffer output;   // ldr
   GBufferView gbufferView() const {

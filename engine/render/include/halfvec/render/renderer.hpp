@@ -97,6 +97,11 @@ struct DebugOptions {
   // when that bound is at most this many entries (default 32 Mi = 128 MiB), else from the GPU's
   // exact count read back mid-frame. Tests set 0 to run the read-back path.
   size_t tile_bound_limit = size_t(32) << 20;
+  // Adds the floor pass ("floor", after the tone map): a compute pass that reads the G-buffer and
+  // writes an RGBA16F scratch target, the least a full-screen pass costs (shaders/passes/
+  // floor.comp). `halfvec bench --frame` reports every pass as a multiple of it, from the same
+  // frames. The image is unchanged.
+  bool floor_pass = false;
 };
 
 class Renderer {
