@@ -63,12 +63,18 @@ GpuLight tileLight(uint i) { return lights[tile_indices[i]]; }
 #endif
 #endif
 
-// Benchmark probes (Renderer::LightPassProbe, `halfvec bench --breakdown`); 0 = the real pass.
-// 1: the same loops and light fetches with no shading: each light adds its premultiplied color
-// (times step(0, radius) and, for tubes, step(0, length), both 1, so that every texel the real
-// evaluation reads is read). 2: no light loop. Both render wrong images by design.
+// Benchmark probes (render::LightPassProbe, `halfvec bench --breakdown`); 0 = the real pass. Both
+// probes start every pixel's sum at setupProbeValue (probes.glsl), a function of every field of
+// the per-pixel setup, so the setup they include is really computed (the compiler drops what is
+// not stored). 1: the same loops and light fetches with no shading: each light adds its
+// premultiplied color (times step(0, radius) and, for tubes, step(0, length), both 1, so that
+// every texel the real evaluation reads is read). 2: no light loop. Both render wrong images by
+// design; LightPass.BenchmarkProbesDoWhatTheyMeasure checks each stored value.
 #ifndef HV_LIGHT_PROBE
 #define HV_LIGHT_PROBE 0
+#endif
+#if HV_LIGHT_PROBE != 0
+#include "../common/probes.glsl"
 #endif
 #if HV_LIGHT_PROBE == 1
 vec3 probeLight(GpuLight l) { return l.color_inv_range.rgb * step(0.0, l.position_radius.w); }
@@ -115,7 +121,11 @@ void main() {
   if (!any_lit) return;
 
   vec3 sum[HV_LIGHT_PIXELS];
+#if HV_LIGHT_PROBE != 0
+  for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] = setupProbeValue(s[j], sp[j]);
+#else
   for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] = vec3(0.0);
+#endif
 #if HV_CULLING_BRUTE_FORCE
   uint n = u_counts.x;
   for (uint i = 0u; i < n; ++i) {
