@@ -2,6 +2,7 @@
 // RenderDoc/apitrace. Results are read after the frame (waiting for the GPU).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -41,5 +42,10 @@ class ScopedPass {
 
 // Routes KHR_debug messages to hv::log (needs a debug context for full output).
 void installDebugOutput();
+// Also calls `handler` with every GL_DEBUG_TYPE_ERROR message (API errors; shader compiler
+// messages excluded, ShaderError carries them), in the thread that made the failing call (the
+// output is synchronous). The test binaries turn each into a test failure (tests/gl_errors.cpp).
+// An empty function removes it.
+void setDebugErrorHandler(std::function<void(const std::string&)> handler);
 
 }  // namespace hv::gl
