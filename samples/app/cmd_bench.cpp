@@ -111,6 +111,7 @@ struct Runner {
          render::LightPassProbe probe = render::LightPassProbe::Shade) {
     render::DebugOptions debug;
     debug.light_probe = probe;
+    debug.finish_each_pass = true;  // no pass timed with the previous one's deferred raster
     r.setDebugOptions(debug);
     r.setScene(scene);
     r.render(w, h);  // warm up: compiles the variants

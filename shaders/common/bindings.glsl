@@ -10,13 +10,17 @@
 #define HV_UBO_ENVIRONMENT 1  // EnvironmentBlock (ambient.comp): SH9, mip count, presence
 
 // ---- Storage buffers ---------------------------------------------------------------------------
+// At most 8 binding points (0..7: GL 4.5's minimum of GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS), so a
+// pass may give a slot another meaning than a pass that does not run at the same time.
+#define HV_BINDING_CULL_MASKS 0       // culling: per group of tiles, its light mask
+#define HV_BINDING_CULL_TILE_STATE 1  // culling (batched): per tile, counts then write cursors
 #define HV_BINDING_MATERIALS 1
 #define HV_BINDING_LIGHTS 2
-#define HV_BINDING_TILE_COUNTERS 3  // culling only: per (tile, light type) count / next slot
+#define HV_BINDING_CULL_LIGHTS 3  // culling: per light, its view-space sphere and tile rectangle
 #define HV_BINDING_TILE_RANGES 4
 #define HV_BINDING_TILE_INDICES 5
 #define HV_BINDING_TILE_TYPES 6   // per tile: (points, spheres) of its range, tubes follow
-#define HV_BINDING_TILE_BOUNDS 7  // culling only: per tile view-space AABB of its surface
+#define HV_BINDING_CULL_BOUNDS 7  // culling: per tile, block and group, the surface AABB
 // The tile index list starts with a header of this many uints (the first: the total entries).
 #define HV_TILE_LIST_HEADER_UINTS 4
 
@@ -48,7 +52,7 @@
 #define HV_LOC_MODEL 0          // gbuffer.vert: object to world
 #define HV_LOC_NORMAL_MATRIX 1  // gbuffer.vert: inverse transpose of the model matrix
 #define HV_LOC_MATERIAL 2       // gbuffer.frag: material index
-#define HV_LOC_CULL_PHASE 0     // light_cull.comp: 0 = count, 1 = fill
+#define HV_LOC_CULL_BATCH 0     // light_cull.comp: lights [x, y), mask words per group
 
 // ---- FrameBlock::counts.w bits (hv::render::FrameFlag), set for the per-term debug views -------
 #define HV_FRAME_NO_BACKGROUND 1u  // background pixels stay black (ambient.comp)
@@ -63,5 +67,16 @@
 // 4 pixels per invocation a tile is 8 invocations, which alone would fill a quarter of a 32-wide
 // GPU SIMD unit. 8 tiles = 64 invocations. Neutral on llvmpipe (1, 2, 4, 8: same time, measured).
 #define HV_LIGHT_GROUP_TILES 8
+// Light culling: a workgroup culls a group of HV_CULL_GROUP_TILES x HV_CULL_GROUP_TILES tiles (64 x
+// 32 pixels), one invocation per tile, the unit the lights are binned into (docs/lights.md "Tiled
+// culling").
+#define HV_CULL_GROUP_TILES 8
+// Group rows per invocation of the binning stage: a light is binned by one invocation per band.
+#define HV_CULL_BIN_GROUP_ROWS 4
+// Up to this many lights are binned and walked in one step; above, in batches of this many lights
+// (count, reserve, fill; docs/lights.md). A batch bounds the masks' memory and the loop
+// iterations of one invocation (at most about 2 per light of the batch): llvmpipe ends any shader
+// invocation's loops after 65,535 iterations in all, silently.
+#define HV_CULL_FUSED_MAX_LIGHTS 16384
 
 #endif

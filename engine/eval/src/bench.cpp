@@ -107,6 +107,7 @@ FrameCost frameCostOf(const PassSeries& s, const std::string& name, int w, int h
 render::DebugOptions withFloor() {
   render::DebugOptions d;
   d.floor_pass = true;
+  d.finish_each_pass = true;  // each pass timed whole, none charged for the previous one's raster
   return d;
 }
 }  // namespace

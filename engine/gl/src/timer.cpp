@@ -24,6 +24,7 @@ void PassTimer::begin(const std::string& pass) {
 }
 
 void PassTimer::end() {
+  if (finish_each_pass_) glFinish();
   for (auto it = entries_.rbegin(); it != entries_.rend(); ++it) {
     if (!it->stop) {
       it->stop = take();

@@ -81,6 +81,7 @@ class LightCulling {
     size_t light_count = 0;
     const std::vector<glm::vec4>* cull_spheres = nullptr;  // world bounding spheres per light
     size_t bound_limit = size_t(32) << 20;                 // DebugOptions::tile_bound_limit
+    size_t batch_lights = 0;                               // DebugOptions::cull_batch_lights
   };
   // Builds the lists for `frame`; updates frame.block.counts.y (list capacity) when it grows.
   TileListView run(const PassContext& ctx, FrameUniforms& frame, const Input& in);
@@ -90,9 +91,15 @@ class LightCulling {
 
  private:
   void growList(size_t need);
-  gl::Buffer ranges_, types_, bounds_, counters_, indices_;
-  size_t capacity_ = 0;  // uints in the index list after its header
-  size_t tiles_ = 0;     // tiles the per-tile buffers hold
+  // Sizes the per-tile, per-group and per-light buffers (masks cleared when created).
+  void ensureBuffers(size_t tiles, size_t groups, size_t lights, size_t mask_uints);
+  gl::Buffer ranges_, types_, indices_;  // the lists (TileListView)
+  gl::Buffer lights_;                    // per light: view-space sphere, tile rectangle
+  gl::Buffer bounds_;                    // per tile, block and group: surface AABB
+  gl::Buffer masks_;                     // per group: light mask (0 between frames)
+  gl::Buffer tile_state_;                // per tile: counts, then cursors (batched culling)
+  size_t capacity_ = 0;                  // uints in the index list after its header
+  size_t tiles_ = 0, groups_ = 0, lights_capacity_ = 0, mask_uints_ = 0;
   size_t readbacks_ = 0;
 };
 

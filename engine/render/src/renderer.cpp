@@ -213,9 +213,10 @@ FrameStats Renderer::render(int width, int height, DebugView view,
       scene_->settings.culling == Culling::Tiled || view == DebugView::LightsPerTile;
   TileListView tiles;
   if (culled) {
-    tiles = p.culling.run(ctx, frame,
-                          {t.depth.id(), gpu_->lightBuffer(), gpu_->lightCount(),
-                           &gpu_->lightCullSpheres(), debug_.tile_bound_limit});
+    tiles = p.culling.run(
+        ctx, frame,
+        {t.depth.id(), gpu_->lightBuffer(), gpu_->lightCount(), &gpu_->lightCullSpheres(),
+         debug_.tile_bound_limit, debug_.cull_batch_lights});
   }
   LightPass::Input light{
       gbuffer,
@@ -251,6 +252,11 @@ FrameStats Renderer::render(int width, int height, DebugView view,
   }
   stats.tile_light_entries = tile_entries_;
   return stats;
+}
+
+void Renderer::setDebugOptions(const DebugOptions& options) {
+  debug_ = options;
+  timer_.setFinishEachPass(options.finish_each_pass);
 }
 
 size_t Renderer::tileListReadbacks() const {

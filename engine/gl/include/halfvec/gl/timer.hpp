@@ -17,6 +17,12 @@ class PassTimer {
   void end();
   // Waits for the queries of this frame; returns (pass, GPU ms) in submission order and resets.
   std::vector<std::pair<std::string, double>> resolve();
+  // With `on`, end() waits for the pass's commands to complete (glFinish) before its end
+  // timestamp. On an implementation that defers rasterization until later commands need the
+  // result (Mesa's llvmpipe bins draws and rasterizes at the next flush), a raster pass's work
+  // would otherwise be timed in the compute pass that follows it. For benchmarks only: it stalls
+  // the CPU at every pass.
+  void setFinishEachPass(bool on) { finish_each_pass_ = on; }
 
  private:
   struct Entry {
@@ -25,6 +31,7 @@ class PassTimer {
   };
   std::vector<Entry> entries_;
   std::vector<Query> pool_;
+  bool finish_each_pass_ = false;
   Query take();
 };
 

@@ -97,11 +97,19 @@ struct DebugOptions {
   // when that bound is at most this many entries (default 32 Mi = 128 MiB), else from the GPU's
   // exact count read back mid-frame. Tests set 0 to run the read-back path.
   size_t tile_bound_limit = size_t(32) << 20;
+  // Light culling runs in one dispatch per group of tiles up to HV_CULL_FUSED_MAX_LIGHTS (16,384)
+  // lights, else in batches of that many lights (count, reserve, fill; docs/lights.md). A value
+  // in [1, 16384) forces the batched path with batches of this many lights (tests).
+  size_t cull_batch_lights = 0;
   // Adds the floor pass ("floor", after the tone map): a compute pass that reads the G-buffer and
   // writes an RGBA16F scratch target, the least a full-screen pass costs (shaders/passes/
   // floor.comp). `halfvec bench --frame` reports every pass as a multiple of it, from the same
   // frames. The image is unchanged.
   bool floor_pass = false;
+  // Every pass waits for its commands to complete before its end timestamp
+  // (gl::PassTimer::setFinishEachPass), so that a raster pass whose rasterization the driver
+  // defers (llvmpipe) is not timed in the next pass. `halfvec bench --frame` sets it.
+  bool finish_each_pass = false;
 };
 
 class Renderer {
@@ -135,7 +143,7 @@ class Renderer {
   LightWork lightWork() const;
 
   // Benchmark and test instruments (DebugOptions); the defaults are the normal renderer.
-  void setDebugOptions(const DebugOptions& options) { debug_ = options; }
+  void setDebugOptions(const DebugOptions& options);
   const DebugOptions& debugOptions() const { return debug_; }
   // Frames so far whose culling read the list total back mid-frame (the bound was too large).
   size_t tileListReadbacks() const;
