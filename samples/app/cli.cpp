@@ -1,9 +1,25 @@
 #include "app/cli.hpp"
 
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <string_view>
+#include <system_error>
 
 #include "app/commands.hpp"
+#include "halfvec/core/suggest.hpp"
+#include "halfvec/gl/shader_source.hpp"
+#include "halfvec/render/renderer.hpp"
+#include "halfvec/scene/model_scene.hpp"
+#include "halfvec/scene/scene_writer.hpp"
 
 namespace hv::app {
 
@@ -13,23 +29,86 @@ constexpr const char* kHelp = R"(halfvec - a deferred PBR renderer (UE4 shading 
 Usage: halfvec <command> [options]
 
 Commands:
-  render SCENE.json     render headless to PNG (and HDR PFM), print per-pass GPU times
-  compare A.pfm B.pfm   error metrics between two HDR images (+ heat map)
+  render SCENE          render headless to PNG (and HDR PFM), print per-pass GPU times;
+                        SCENE is a scene file (.json) or a glTF model (.gltf, .glb)
+  compare TEST REF      error metrics between two images (PFM or PNG), exit 1 outside
+                        the given tolerances (for regression tests, docs/testing.md)
   stability             NaN/Inf/negative sweep over extreme light and material cases
   reference SCENE.json  CPU Monte Carlo ground truth over the GPU's G-buffer
   bench                 light-pass scaling tables (ms, light-pixel evaluations per second)
-  view SCENE.json       interactive viewer: orbit camera, material/lights/rendering panels
+  view SCENE            interactive viewer (a scene file or a glTF model): orbit camera,
+                        material/lights/rendering panels
   accuracy              sweep of every approximation vs the reference -> docs/accuracy.md
   trade SCENE.json      speed/accuracy trade report: ms per pass and error per option, presets
 
 Run `halfvec <command> --help` for the options of each command.
 )";
+struct Command {
+  std::string_view name;
+  int (*run)(const Args&);
+};
+constexpr Command kCommands[] = {
+    {"render", cmdRender},     {"compare", cmdCompare},     {"stability", cmdStability},
+    {"bench", cmdBench},       {"reference", cmdReference}, {"view", cmdView},
+    {"accuracy", cmdAccuracy}, {"trade", cmdTrade},
+};
+
+// The options a command's --help lists (lines starting with "  -" or "  --"), read from its
+// help text so that the suggestions never drift from the documentation.
+std::vector<std::string> helpOptions(const Command& c) {
+  std::fflush(stdout);
+  FILE* tmp = std::tmpfile();
+  if (!tmp) return {};
+  const int saved = dup(STDOUT_FILENO);
+  dup2(fileno(tmp), STDOUT_FILENO);
+  try {
+    c.run({"--help"});
+  } catch (...) {
+  }
+  std::fflush(stdout);
+  dup2(saved, STDOUT_FILENO);
+  close(saved);
+  std::rewind(tmp);
+  std::string text;
+  for (int ch; (ch = std::fgetc(tmp)) != EOF;) text += char(ch);
+  std::fclose(tmp);
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    const size_t p = line.find_first_not_of(' ');
+    if (p == std::string::npos || line.compare(p, 2, "--") != 0) continue;
+    const size_t end = line.find_first_of(" ,=", p);
+    out.push_back(line.substr(p, end == std::string::npos ? std::string::npos : end - p));
+  }
+  return out;
+}
+
+// "unknown option '--sise'" -> "unknown option '--sise'; did you mean "--size"?"
+std::string withSuggestion(const Command& c, const std::string& message) {
+  const std::string prefix = "unknown option '";
+  if (message.rfind(prefix, 0) != 0 || message.back() != '\'') return message;
+  const std::string typed = message.substr(prefix.size(), message.size() - prefix.size() - 1);
+  const std::vector<std::string> options = helpOptions(c);
+  const std::vector<std::string_view> names(options.begin(), options.end());
+  return message + didYouMeanSuffix(typed, names);
+}
+
 }  // namespace
 
 void parseSize(const std::string& v, int& w, int& h) {
-  if (std::sscanf(v.c_str(), "%dx%d", &w, &h) != 2 || w <= 0 || h <= 0 || w > 16384 || h > 16384) {
+  // Exactly "WxH": decimal digits only (no sign, space or trailing text), each in 1..16384.
+  auto number = [](std::string_view s, int& out) {
+    if (s.empty() || s.size() > 5 || !std::all_of(s.begin(), s.end(), ::isdigit)) return false;
+    std::from_chars(s.data(), s.data() + s.size(), out);
+    return out >= 1 && out <= 16384;
+  };
+  const size_t x = v.find('x');
+  int pw = 0, ph = 0;
+  if (x == std::string::npos || !number(std::string_view(v).substr(0, x), pw) ||
+      !number(std::string_view(v).substr(x + 1), ph)) {
     throw UsageError{"--size expects WxH with 1 <= W,H <= 16384, got '" + v + "'"};
   }
+  w = pw, h = ph;
 }
 
 std::string optionValue(const Args& args, size_t& i) {
@@ -43,6 +122,65 @@ void takeScenePath(const std::string& arg, std::string& scene) {
   scene = arg;
 }
 
+void applyProgramDefaults() {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path exe_dir = fs::read_symlink("/proc/self/exe", ec).parent_path();
+  if (!ec) {
+    for (const fs::path& dir :
+         {exe_dir / "share/halfvec/shaders", exe_dir / "../share/halfvec/shaders"}) {
+      if (fs::is_directory(dir / "passes", ec)) {
+        gl::setShaderDir(dir.lexically_normal());
+        break;
+      }
+    }
+  }
+#ifdef HV_DEFAULT_ASSETS_DIR
+  const char* assets = std::getenv("HV_ASSETS_DIR");
+  if ((!assets || !*assets) && *HV_DEFAULT_ASSETS_DIR &&
+      fs::is_directory(HV_DEFAULT_ASSETS_DIR, ec)) {
+    ::setenv("HV_ASSETS_DIR", HV_DEFAULT_ASSETS_DIR, 0);
+  }
+#endif
+}
+
+bool takeSceneOption(const Args& args, size_t& i, SceneOpenOptions& options, bool& print_scene) {
+  const std::string& a = args[i];
+  if (a == "--env") {
+    options.environment_hdr = optionValue(args, i);
+  } else if (a == "--camera") {
+    const std::string v = optionValue(args, i);
+    char* end = nullptr;
+    const long n = std::strtol(v.c_str(), &end, 10);
+    if (v.empty() || *end != '\0' || n < 0 || n > 1000000) {
+      throw UsageError{"--camera expects a camera index >= 0, got '" + v + "'"};
+    }
+    options.camera = int(n);
+  } else if (a == "--print-scene") {
+    print_scene = true;
+  } else if (a == "--set") {
+    options.overrides.push_back(optionValue(args, i));
+  } else {
+    return false;
+  }
+  return true;
+}
+
+std::string debugViewSuggestion(const std::string& typed) {
+  std::vector<std::string_view> names;
+  for (size_t v = 0; v < render::kDebugViewCount; ++v) {
+    names.push_back(render::toString(render::DebugView(v)));
+  }
+  std::string all;
+  for (std::string_view n : names) all += (all.empty() ? "" : ", ") + std::string(n);
+  return didYouMeanSuffix(typed, names) + " (one of: " + all + ")";
+}
+
+int printScene(const std::string& path, const SceneOpenOptions& options) {
+  std::fputs(formatSceneJson(sceneJsonFor(path, options)).c_str(), stdout);
+  return 0;
+}
+
 int runCli(const std::vector<std::string>& args) {
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
     std::fputs(kHelp, stdout);
@@ -50,20 +188,22 @@ int runCli(const std::vector<std::string>& args) {
   }
   const std::string cmd = args[0];
   const Args rest(args.begin() + 1, args.end());
-  try {
-    if (cmd == "render") return cmdRender(rest);
-    if (cmd == "compare") return cmdCompare(rest);
-    if (cmd == "stability") return cmdStability(rest);
-    if (cmd == "bench") return cmdBench(rest);
-    if (cmd == "reference") return cmdReference(rest);
-    if (cmd == "view") return cmdView(rest);
-    if (cmd == "accuracy") return cmdAccuracy(rest);
-    if (cmd == "trade") return cmdTrade(rest);
-    std::fprintf(stderr, "halfvec: unknown command '%s' (see halfvec --help)\n", cmd.c_str());
+  const Command* command = nullptr;
+  for (const Command& c : kCommands) {
+    if (c.name == cmd) command = &c;
+  }
+  if (!command) {
+    std::vector<std::string_view> names;
+    for (const Command& c : kCommands) names.push_back(c.name);
+    std::fprintf(stderr, "halfvec: unknown command '%s'%s (see halfvec --help)\n", cmd.c_str(),
+                 didYouMeanSuffix(cmd, names).c_str());
     return 2;
+  }
+  try {
+    return command->run(rest);
   } catch (const UsageError& e) {
-    std::fprintf(stderr, "halfvec %s: %s (see halfvec %s --help)\n", cmd.c_str(), e.message.c_str(),
-                 cmd.c_str());
+    std::fprintf(stderr, "halfvec %s: %s (see halfvec %s --help)\n", cmd.c_str(),
+                 withSuggestion(*command, e.message).c_str(), cmd.c_str());
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "halfvec %s: error: %s\n", cmd.c_str(), e.what());

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "app/commands.hpp"
+#include "halfvec/core/output_files.hpp"
 #include "halfvec/platform/context.hpp"
 #include "halfvec/reference/reference.hpp"
 #include "halfvec/render/renderer.hpp"
@@ -66,6 +67,20 @@ int cmdReference(const Args& args) {
   }
   if (scene_path.empty()) throw UsageError{"no scene file given"};
   Scene scene = loadScene(scene_path, overrides);
+  // Every output reserved before the (long) reference render: an unwritable path fails now, and
+  // nothing appears unless all were written.
+  OutputFiles files;
+  const std::filesystem::path hdr_tmp = hdr.empty() ? "" : files.add(hdr);
+  const std::filesystem::path out_tmp = out.empty() ? "" : files.add(out);
+  std::vector<std::filesystem::path> aov_tmp;
+  if (!aov.empty()) {
+    std::filesystem::create_directories(aov);
+    for (int k = 0; k < kReferenceAovCount; ++k) {
+      const auto which = static_cast<ReferenceAov>(k);
+      aov_tmp.push_back(
+          files.add(std::filesystem::path(aov) / (std::string(toString(which)) + ".pfm")));
+    }
+  }
   if (!w) {
     w = scene.settings.width;
     h = scene.settings.height;
@@ -80,7 +95,7 @@ int cmdReference(const Args& args) {
               static_cast<unsigned long long>(r.stats.total_samples), r.stats.seconds);
   std::printf("Monte Carlo relative standard error: mean %.4f, max %.4f\n", r.stats.mean_rel_error,
               r.stats.max_rel_error);
-  if (!hdr.empty()) writePfm(hdr, r.image);
+  if (!hdr.empty()) writePfm(hdr_tmp.string(), r.image);
   if (!out.empty()) {
     // The engine's own output transform (shaders/common/tonemap.glsl, default Reinhard + 2.2).
     ImageRGBA8 ldr = makeImageRGBA8(r.image.width, r.image.height);
@@ -89,16 +104,12 @@ int cmdReference(const Args& args) {
       for (int k = 0; k < 3; ++k) ldr.px[4 * i + k] = uint8_t(std::lround(c[k] * 255.0f));
       ldr.px[4 * i + 3] = 255;
     }
-    writePng(out, ldr);
+    writePng(out_tmp.string(), ldr);
   }
-  if (!aov.empty()) {
-    std::filesystem::create_directories(aov);
-    for (int k = 0; k < kReferenceAovCount; ++k) {
-      const auto which = static_cast<ReferenceAov>(k);
-      writePfm((std::filesystem::path(aov) / (std::string(toString(which)) + ".pfm")).string(),
-               r[which]);
-    }
+  for (int k = 0; k < int(aov_tmp.size()); ++k) {
+    writePfm(aov_tmp[size_t(k)].string(), r[static_cast<ReferenceAov>(k)]);
   }
+  files.commit();
   return 0;
 }
 

@@ -1,5 +1,6 @@
 // `halfvec trade`: the speed/accuracy trade report of a scene (halfvec/eval/trade.hpp,
 // docs/trade.md).
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -224,6 +225,8 @@ int cmdTrade(const Args& args) {
   auto ctx = createHeadlessContext();
   opt.progress = [](const std::string& line) { std::fprintf(stderr, "trade: %s\n", line.c_str()); };
   std::vector<SceneRun> runs;
+  using Clock = std::chrono::steady_clock;
+  const auto t_start = Clock::now();
   for (size_t k = 0; k < scenes.size(); ++k) {
     eval::TradeOptions o = opt;
     if (!size_given) o.height = 0;
@@ -235,7 +238,13 @@ int cmdTrade(const Args& args) {
     if (!report.empty())
       run.dir = scenes.size() > 1 ? (fs::path(report) / stem(scenes[k])).string() : report;
     o.report_dir = run.dir;
-    std::fprintf(stderr, "trade: %s\n", scenes[k].c_str());
+    const double elapsed = std::chrono::duration<double>(Clock::now() - t_start).count();
+    std::string left;  // from the scenes done so far
+    if (k > 0)
+      left = ", about " + std::to_string(int(elapsed / double(k) * double(scenes.size() - k))) +
+             " s left";
+    std::fprintf(stderr, "trade: scene %zu of %zu: %s (%.0f s elapsed%s)\n", k + 1, scenes.size(),
+                 scenes[k].c_str(), elapsed, left.c_str());
     run.report = eval::runTrade(loaded[k], o);
     if (run.dir.empty()) {
       std::fputs(eval::tradeMarkdown(run.report, "", 1).c_str(), stdout);

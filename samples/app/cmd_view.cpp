@@ -1,57 +1,75 @@
 // `halfvec view`: interactive viewer. The same Renderer as `render`, drawing into the window's
-// default framebuffer, with the ImGui panels (engine/ui) on top.
+// default framebuffer, with the side bar (engine/ui) on top. Input comes from GLFW event
+// callbacks (ui::ViewerInput), so no key tap is lost at low frame rates.
 #include "halfvec/gl/gl.hpp"  // before GLFW, which must not pull in GL/gl.h
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "app/commands.hpp"
 #include "app/scene_reload.hpp"
-#include "halfvec/gl/shader_source.hpp"
+#include "halfvec/core/output_files.hpp"
+#include "halfvec/image/image.hpp"
 #include "halfvec/platform/context.hpp"
 #include "halfvec/render/pick.hpp"
 #include "halfvec/render/renderer.hpp"
-#include "halfvec/scene/scene_loader.hpp"
+#include "halfvec/scene/scene_writer.hpp"
+#include "halfvec/ui/camera_control.hpp"
 #include "halfvec/ui/imgui_layer.hpp"
-#include "halfvec/ui/panels.hpp"
+#include "halfvec/ui/sidebar.hpp"
+#include "halfvec/ui/viewer_input.hpp"
+#include "halfvec/ui/viewer_window.hpp"
 
 namespace hv::app {
 
 namespace {
-constexpr const char* kViewHelp = R"(Usage: halfvec view SCENE.json [options]
+constexpr const char* kViewHelp = R"(Usage: halfvec view SCENE [options]
 
-Opens SCENE.json in a window with material, lights, rendering and stats panels.
+Opens SCENE, a scene file (.json) or a glTF model (.gltf, .glb; framed automatically), in a
+window with the Material, Lights, Render and Stats panels in a side bar.
 
 Options:
   --size WxH            window size (default 1280x720)
+  --env FILE.hdr        replace the scene's environment with this HDR
+  --camera N            a model's own camera N instead of the automatic framing
+  --set PATH=VALUE      override a scene field (as render --set; repeatable)
+  --print-scene         print the scene JSON (for a model: the one made for it) and exit
   --frames N            quit after N frames (for tests and timing)
-  --screenshot FILE.png after the last frame, save the window (scene + panels)
-  --click X,Y           scripted left click at window pixel X,Y on the first frame (as a
-                        mouse click: picks the material there; for tests and screenshots)
+  --screenshot FILE.png after the last frame, save the window (scene + side bar)
+  --click X,Y           scripted left click at window pixel X,Y on the first frame (picks there)
+  --press KEY           scripted tap of KEY (a letter, F12 or Esc) before the first frame,
+                        through the same event queue as the keyboard (repeatable)
+  --drop FILE           scripted drop of FILE on the window on the first frame (repeatable)
   -h, --help            this text
 
-Controls: left drag orbit, right/middle drag pan, wheel zoom (around the camera target),
-left click (no drag) on an object: select its material in the Material panel,
-WASD fly (Q/E down/up; Shift faster), F12 save out/view_<n>.png + .pfm, R reload shaders
-(an error keeps the last good programs running and shows in a panel), Esc quit.
-The scene file is reloaded when it changes on disk.
+Mouse: left drag orbit, right/middle drag pan, wheel zoom (around the camera target); left click
+(no drag) on an object: pick it (highlighted, its material in the Material panel).
+Keys: WASD fly (Q/E down/up, Shift faster), F frame the picked object or the whole scene,
+H hide/show the UI, F12 save out/view_<n>.png + .pfm, R reload the shaders (an error keeps the
+last good programs running and shows in a panel), Esc quit.
+Drop a .gltf/.glb/.json on the window to open it, an .hdr to light the scene with it.
+The scene file is reloaded when it changes on disk; "Save scene" writes the edits into it.
+Without a display, run it under a virtual X server: xvfb-run -a halfvec view SCENE ...
 )";
 
 struct ViewArgs {
   std::string scene, screenshot;
+  SceneOpenOptions open;
+  bool print_scene = false;
   int width = 1280, height = 720, frames = 0;
   std::optional<glm::dvec2> click;  // scripted click, window coordinates
+  std::vector<int> presses;         // scripted key taps (GLFW key codes)
+  std::vector<std::string> drops;   // scripted drops
 };
 
 ViewArgs parse(const Args& args) {
@@ -59,6 +77,7 @@ ViewArgs parse(const Args& args) {
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&] { return optionValue(args, i); };
+    if (takeSceneOption(args, i, r.open, r.print_scene)) continue;
     if (a == "--size") {
       parseSize(value(), r.width, r.height);
     } else if (a == "--frames") {
@@ -66,6 +85,13 @@ ViewArgs parse(const Args& args) {
       if (r.frames < 1) throw UsageError{"--frames expects a positive count"};
     } else if (a == "--screenshot") {
       r.screenshot = value();
+    } else if (a == "--press") {
+      const std::string k = value();
+      if (ui::keyCode(k) < 0)
+        throw UsageError{"--press expects a letter, F12 or Esc, got '" + k + "'"};
+      r.presses.push_back(ui::keyCode(k));
+    } else if (a == "--drop") {
+      r.drops.push_back(value());
     } else if (a == "--click") {
       const std::string v = value();
       double x = 0, y = 0;
@@ -83,170 +109,276 @@ ViewArgs parse(const Args& args) {
   return r;
 }
 
-double g_scroll = 0.0;  // wheel steps since the last frame (GLFW callback -> main loop)
-
-// The window's back buffer, row 0 = top.
-ImageRGBA8 readFramebuffer(int w, int h) {
-  ImageRGBA8 img;
-  img.width = w;
-  img.height = h;
-  img.px.resize(size_t(w) * size_t(h) * 4);
-  std::vector<uint8_t> rows(img.px.size());
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  glReadBuffer(GL_BACK);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
-  const size_t stride = size_t(w) * 4;
-  for (int y = 0; y < h; ++y) {
-    std::copy_n(rows.data() + size_t(h - 1 - y) * stride, stride,
-                img.px.data() + size_t(y) * stride);
+// The window, or an error that says how to get one.
+std::unique_ptr<Context> openWindow(const ViewArgs& va) {
+  const char* display = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  try {
+    return createWindowContext(va.width, va.height, "halfvec view - " + va.scene);
+  } catch (const ContextError& e) {
+    if ((display && *display) || (wayland && *wayland)) throw;
+    throw ContextError(std::string(e.what()) +
+                       "\nno display (DISPLAY is not set): run the viewer under a virtual X "
+                       "server, e.g.\n  xvfb-run -a -s '-screen 0 1920x1080x24' halfvec view " +
+                       va.scene + " --frames 10 --screenshot out/view.png");
   }
-  for (size_t i = 3; i < img.px.size(); i += 4) img.px[i] = 255;
-  return img;
 }
 
-// Orbit / pan / zoom / fly around Camera::target.
-struct CameraController {
-  double last_x = 0, last_y = 0;
-  bool dragging[3] = {false, false, false};
+class Viewer {
+ public:
+  Viewer(const ViewArgs& va, SceneReloader& reloader, Context& ctx)
+      : va_(va), reloader_(&reloader), ctx_(ctx), win_(ctx.window()), input_(win_) {
+    if (va.frames > 0) glfwSwapInterval(0);           // scripted runs: no vsync wait
+    imgui_ = std::make_unique<ui::ImGuiLayer>(win_);  // after input_: its backend chains to ours
+    ui_.scale = ui::windowContentScale(win_);
+    ui::applyContentScale(ui_.scale);
+    reloader.attach(renderer_);
+    attachScene();
+    ui_.settings.hdr_choices = ui::hdrChoices();
+    gpu_ = ctx.renderer();
+    for (int k : va.presses) input_.onKey(k, GLFW_PRESS), input_.onKey(k, GLFW_RELEASE);
+  }
+  int run();
 
-  void update(GLFWwindow* win, Camera& cam, bool ui_mouse, bool ui_keys, float dt) {
-    double x, y;
-    glfwGetCursorPos(win, &x, &y);
-    const float dx = float(x - last_x), dy = float(y - last_y);
-    last_x = x;
-    last_y = y;
-    glm::vec3 offset = cam.position - cam.target;
-    float dist = glm::length(offset);
-    if (dist < 1e-4f) dist = 1e-4f;
-    const glm::vec3 fwd = -offset / dist;
-    const glm::vec3 right = glm::normalize(glm::cross(fwd, cam.up));
-    const glm::vec3 up = glm::cross(right, fwd);
-    for (int b = 0; b < 3; ++b) {
-      const bool down = glfwGetMouseButton(win, b) == GLFW_PRESS;
-      if (!down)
-        dragging[b] = false;
-      else if (!dragging[b] && !ui_mouse)
-        dragging[b] = true;  // drags start outside the panels
+ private:
+  void attachScene();
+  void handleKeys(const glm::ivec2& fb);
+  void handleDrops();
+  void openDropped(const std::string& path);
+  void pickAt(glm::dvec2 at, glm::ivec2 fb);
+  void applyPanels(const ui::SidebarActions& act);
+  void renderFrame(glm::ivec2 view, glm::ivec2 fb, double frame_ms);
+  void save();
+  void saveShot();
+  void printSummary(int frames) const;
+
+  const ViewArgs& va_;
+  SceneReloader* reloader_;
+  std::unique_ptr<SceneReloader> owned_reloader_;  // a dropped scene
+  Context& ctx_;
+  GLFWwindow* win_;
+  ui::ViewerInput input_;
+  std::unique_ptr<ui::ImGuiLayer> imgui_;
+  render::Renderer renderer_;
+  Scene* scene_ = nullptr;
+  Scene snapshot_;                // the scene as loaded (materials, lights, settings...)
+  Environment good_environment_;  // the last environment that baked
+  ui::ViewerUi ui_;
+  ui::OrbitController controller_;
+  ui::ClickDetector clicks_;
+  std::string gpu_;
+  bool shaders_ok_ = true, quit_ = false, shot_ = false;
+  int shot_index_ = 0;
+};
+
+void Viewer::attachScene() {
+  scene_ = &reloader_->scene();
+  ui_.attach(*scene_);
+  snapshot_ = ui::editableCopy(*scene_);
+  good_environment_ = scene_->environment;
+  ui_.view.highlight_object = -1;
+}
+
+void Viewer::handleKeys(const glm::ivec2& fb) {
+  const bool typing = imgui_->wantsKeyboard();
+  for (int key : input_.takePresses()) {
+    if (typing) continue;  // the key went into a text field
+    if (key == GLFW_KEY_ESCAPE) quit_ = true;
+    if (key == GLFW_KEY_H) ui_.visible = !ui_.visible;
+    if (key == GLFW_KEY_F12) shot_ = true;
+    if (key == GLFW_KEY_F) {
+      ui::frameView(*scene_, ui_.view.highlight_object, float(fb.x) / float(std::max(fb.y, 1)),
+                    scene_->camera);
     }
-    if (dragging[GLFW_MOUSE_BUTTON_LEFT] && (dx != 0 || dy != 0)) {
-      // Yaw about the world up, pitch about the right axis, kept off the poles.
-      const glm::vec3 wup = glm::normalize(cam.up);
-      float yaw = -dx * 0.005f, pitch = -dy * 0.005f;
-      const float elev = std::asin(glm::clamp(glm::dot(offset / dist, wup), -1.0f, 1.0f));
-      pitch = glm::clamp(elev + pitch, -1.5f, 1.5f) - elev;
-      glm::vec3 o = offset / dist;
-      auto rot = [](glm::vec3 v, glm::vec3 axis, float a) {
-        return v * std::cos(a) + glm::cross(axis, v) * std::sin(a) +
-               axis * glm::dot(axis, v) * (1.0f - std::cos(a));
-      };
-      o = rot(o, right, pitch);
-      o = rot(o, wup, yaw);
-      cam.position = cam.target + o * dist;
-    }
-    const bool pan = dragging[GLFW_MOUSE_BUTTON_RIGHT] || dragging[GLFW_MOUSE_BUTTON_MIDDLE];
-    if (pan && (dx != 0 || dy != 0)) {
-      int wh = 1, ww = 1;
-      glfwGetWindowSize(win, &ww, &wh);
-      const float scale = 2.0f * dist * std::tan(glm::radians(cam.fov_y_deg) * 0.5f) / float(wh);
-      const glm::vec3 move = (-dx * right + dy * up) * scale;
-      cam.position += move;
-      cam.target += move;
-    }
-    if (g_scroll != 0.0 && !ui_mouse) {
-      const float nd = glm::clamp(dist * std::pow(0.9f, float(g_scroll)), 0.05f, 500.0f);
-      cam.position = cam.target - fwd * nd;
-    }
-    g_scroll = 0.0;
-    if (!ui_keys) {
-      glm::vec3 v(0.0f);
-      if (glfwGetKey(win, GLFW_KEY_W) == GLFW_PRESS) v += fwd;
-      if (glfwGetKey(win, GLFW_KEY_S) == GLFW_PRESS) v -= fwd;
-      if (glfwGetKey(win, GLFW_KEY_D) == GLFW_PRESS) v += right;
-      if (glfwGetKey(win, GLFW_KEY_A) == GLFW_PRESS) v -= right;
-      if (glfwGetKey(win, GLFW_KEY_E) == GLFW_PRESS) v += up;
-      if (glfwGetKey(win, GLFW_KEY_Q) == GLFW_PRESS) v -= up;
-      if (v != glm::vec3(0.0f)) {
-        const float speed = std::max(dist, 1.0f) * 0.8f *
-                            (glfwGetKey(win, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ? 4.0f : 1.0f);
-        const glm::vec3 move = glm::normalize(v) * speed * dt;
-        cam.position += move;
-        cam.target += move;
+    if (key == GLFW_KEY_R) {
+      // Rebuild every program from the files as they are now; on an error the last good
+      // programs keep rendering and the panel shows the error (file:line).
+      try {
+        renderer_.programs().reloadAll();
+        shaders_ok_ = true;
+        ui_.shader_error.clear();
+        std::printf("shaders reloaded\n");
+      } catch (const std::exception& e) {
+        ui_.shader_error = e.what();
+        std::fprintf(stderr, "shader reload failed: %s\n", e.what());
       }
     }
   }
-};
-
-// A left click that is not a drag: pressed outside the panels and released within a few pixels
-// of where it was pressed (a longer move is an orbit). Window coordinates.
-struct ClickDetector {
-  static constexpr double kSlop = 3.0;  // pixels of movement still counted as a click
-  bool down = false, armed = false;
-  glm::dvec2 start{0.0};
-
-  std::optional<glm::dvec2> update(GLFWwindow* win, bool ui_mouse) {
-    glm::dvec2 p;
-    glfwGetCursorPos(win, &p.x, &p.y);
-    const bool now = glfwGetMouseButton(win, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-    std::optional<glm::dvec2> click;
-    if (now && !down) {
-      armed = !ui_mouse;
-      start = p;
-    } else if (now && glm::length(p - start) > kSlop) {
-      armed = false;
-    } else if (!now && down && armed) {
-      click = p;
-    }
-    down = now;
-    return click;
-  }
-};
-
-// Selects the material of the object under window point `at` in the material panel; returns a
-// status line for the panel. The pick is a CPU ray cast (render/pick.hpp).
-std::string pickMaterial(GLFWwindow* win, const Scene& scene, glm::ivec2 fb, glm::dvec2 at,
-                         ui::MaterialPanelModel& materials) {
-  int ww = 1, wh = 1;
-  glfwGetWindowSize(win, &ww, &wh);
-  // Window coordinates -> framebuffer pixels (they differ on high-DPI displays).
-  const glm::vec2 px(float(at.x * fb.x / std::max(ww, 1)), float(at.y * fb.y / std::max(wh, 1)));
-  const auto hit = render::pick(scene, fb.x, fb.y, px);
-  if (!hit) return "picked: background (no material)";
-  materials.select(hit->material);
-  const Material& m = scene.materials.at(size_t(hit->material));
-  const Object& o = scene.objects.at(size_t(hit->object));
-  return "picked material " + std::to_string(hit->material) + " '" + m.name + "' on object '" +
-         o.name + "'";
 }
 
-// The HDR environments the rendering panel offers: *.hdr in ${HV_ASSETS_DIR}/env, sorted.
-std::vector<std::string> hdrChoices() {
-  std::vector<std::string> out;
+void Viewer::openDropped(const std::string& path) {
+  const ui::DropKind kind = ui::dropKind(path);
+  if (kind == ui::DropKind::Environment) {
+    const bool ok = ui_.settings.setEnvironmentHdr(std::filesystem::absolute(path).string());
+    ui_.status = ok ? "environment: " + path : "cannot open " + path;
+  } else if (kind == ui::DropKind::Scene) {
+    try {
+      auto fresh = std::make_unique<SceneReloader>(path);
+      fresh->attach(renderer_);
+      owned_reloader_ = std::move(fresh);
+      reloader_ = owned_reloader_.get();
+      attachScene();
+      glfwSetWindowTitle(win_, ("halfvec view - " + path).c_str());
+      ui_.status = "opened " + path;
+      ui_.scene_error.clear();
+    } catch (const std::exception& e) {
+      renderer_.setScene(*scene_);  // back to the scene that was open
+      ui_.scene_error = e.what();
+      ui_.status = "cannot open " + path;
+    }
+  } else {
+    ui_.status = "cannot open " + path + ": expected a .gltf, .glb, .json or .hdr file";
+  }
+  std::printf("%s\n", ui_.status.c_str());
+}
+
+void Viewer::handleDrops() {
+  for (const std::string& p : input_.takeDrops()) openDropped(p);
+}
+
+// `fb`: the size of the scene view (left of the side bar).
+void Viewer::pickAt(glm::dvec2 at, glm::ivec2 fb) {
+  const glm::vec2 px = ui::windowToFramebuffer(win_, at, ctx_.framebufferSize());
+  const auto hit = render::pick(*scene_, fb.x, fb.y, px);
+  ui_.view.highlight_object = hit ? hit->object : -1;
+  if (!hit) {
+    ui_.status = "picked: background (no material)";
+  } else {
+    ui_.materials.select(hit->material);
+    ui_.status = "picked material " + std::to_string(hit->material) + " '" +
+                 scene_->materials.at(size_t(hit->material)).name + "' on object '" +
+                 scene_->objects.at(size_t(hit->object)).name + "'";
+  }
+  std::printf("%s\n", ui_.status.c_str());
+}
+
+void Viewer::save() {
+  if (isModelPath(reloader_->path())) {
+    ui_.status = "a model has no scene file to save into: start one with halfvec view " +
+                 reloader_->path() + " --print-scene > scene.json";
+    return;
+  }
   try {
-    const std::filesystem::path dir =
-        std::filesystem::path(expandEnvVars("${HV_ASSETS_DIR}")) / "env";
-    std::error_code ec;
-    for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
-      if (e.path().extension() == ".hdr")
-        out.push_back(std::filesystem::absolute(e.path()).string());
-    }
-  } catch (const std::exception&) {  // no assets: the panel offers none
+    const size_t n = saveSceneEdits(reloader_->path(), snapshot_, *scene_);
+    snapshot_ = ui::editableCopy(*scene_);
+    ui_.status = "saved " + std::to_string(n) + " changes to " + reloader_->path();
+  } catch (const std::exception& e) {
+    ui_.status = std::string("save failed: ") + e.what();
   }
-  std::sort(out.begin(), out.end());
-  return out;
 }
 
-// A key's press edge.
-struct KeyEdge {
-  int key;
-  bool was = false;
-  bool pressed(GLFWwindow* w) {
-    const bool now = glfwGetKey(w, key) == GLFW_PRESS;
-    const bool edge = now && !was;
-    was = now;
-    return edge;
+void Viewer::applyPanels(const ui::SidebarActions& act) {
+  if (act.materials_changed) renderer_.updateMaterials();
+  if (act.lights_changed) renderer_.updateLights();
+  if (act.save) save();
+  if (!ui_.settings.takeNeedsSetScene()) return;
+  try {
+    renderer_.setScene(*scene_);
+    good_environment_ = scene_->environment;
+  } catch (const std::exception& e) {
+    // A bad HDR: back to the environment that worked, the error in the panel.
+    ui_.scene_error = e.what();
+    scene_->environment = good_environment_;
+    renderer_.setScene(*scene_);
   }
-};
+}
+
+// The scene into the `view` part of the window (left of the side bar), the UI over all of it.
+void Viewer::renderFrame(glm::ivec2 view, glm::ivec2 fb, double frame_ms) {
+  ui::clearWindow(fb, glm::vec3(0.08f, 0.08f, 0.1f));
+  if (shaders_ok_) {
+    try {
+      renderer_.setViewOptions(ui_.view);
+      ui_.stats.push(renderer_.render(view.x, view.y, ui_.settings.view, GLuint(0)), frame_ms);
+    } catch (const std::exception& e) {  // a shader error included: retried after the next R
+      shaders_ok_ = false;
+      ui_.shader_error = e.what();
+      std::fprintf(stderr, "render error: %s\n", e.what());
+    }
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, fb.x, fb.y);
+  imgui_->endFrame();
+}
+
+void Viewer::saveShot() {
+  shot_ = false;
+  if (!shaders_ok_) return;
+  std::filesystem::create_directories("out");
+  std::string base;
+  do {
+    base = "out/view_" + std::to_string(shot_index_++);
+  } while (std::filesystem::exists(base + ".png"));
+  OutputFiles out;
+  writePng(out.add(base + ".png").string(), renderer_.readLdr());
+  writePfm(out.add(base + ".pfm").string(), renderer_.readHdr());
+  out.commit();
+  ui_.status = "saved " + base + ".png / .pfm";
+  std::printf("%s\n", ui_.status.c_str());
+}
+
+int Viewer::run() {
+  auto last = std::chrono::steady_clock::now(), last_poll = last;
+  int frame = 0;
+  while (!ctx_.shouldClose() && !quit_) {
+    ctx_.pollEvents();
+    const glm::ivec2 fb = ctx_.framebufferSize();
+    const glm::ivec2 view = ui::sceneViewSize(ui_, ui::windowSize(win_), fb);
+    if (fb.x <= 0 || fb.y <= 0) {  // minimized: nothing to draw into
+      glfwWaitEventsTimeout(0.1);
+      last = std::chrono::steady_clock::now();
+      continue;
+    }
+    const auto now = std::chrono::steady_clock::now();
+    const double frame_ms = std::chrono::duration<double, std::milli>(now - last).count();
+    last = now;
+    if (now - last_poll > std::chrono::milliseconds(250)) {  // the file changed on disk
+      last_poll = now;
+      if (reloader_->poll()) attachScene();
+      ui_.scene_error = reloader_->error();
+    }
+    if (frame == 0) {
+      for (const std::string& d : va_.drops) input_.onDrop({d});
+    }
+    handleDrops();
+    if (const float s = input_.takeContentScale(); s > 0.0f) ui::applyContentScale(ui_.scale = s);
+    imgui_->beginFrame();
+    // Before the camera moves: a click picks in the frame the user clicked on.
+    const ui::PointerState pointer = ui::readPointer(win_);
+    std::optional<glm::dvec2> click = clicks_.update(pointer, imgui_->wantsMouse());
+    if (frame == 0 && va_.click) click = va_.click;
+    if (click) pickAt(*click, view);
+    handleKeys(view);
+    controller_.update(pointer, ui::windowSize(win_), input_.takeScroll(), ui::flyKeys(input_),
+                       imgui_->wantsMouse(), imgui_->wantsKeyboard(),
+                       float(std::min(frame_ms, 100.0) / 1000.0), scene_->camera);
+    const render::Manifest manifest = renderer_.manifest();
+    const ui::SidebarInfo info{gpu_, scene_->lights.size(),
+                               render::countLightsInView(*scene_, view.x, view.y), &manifest};
+    applyPanels(ui::drawSidebar(ui_, info));
+    renderFrame(view, fb, frame_ms);
+    if (shot_) saveShot();
+    ++frame;
+    const bool last_frame = va_.frames > 0 && frame >= va_.frames;
+    if (last_frame && !va_.screenshot.empty()) {
+      ui::writeWindowPng(va_.screenshot, fb);
+      std::printf("screenshot: %s\n", std::filesystem::absolute(va_.screenshot).string().c_str());
+    }
+    ctx_.swapBuffers();
+    if (last_frame) break;
+  }
+  printSummary(frame);
+  return 0;
+}
+
+void Viewer::printSummary(int frames) const {
+  if (ui_.stats.frameTimes().empty()) return;
+  std::printf("frames: %d, mean frame %.2f ms, mean GPU %.3f ms (%s)\n", frames,
+              ui_.stats.averageFrameMs(), ui_.stats.averageGpuMs(), gpu_.c_str());
+  for (const auto& [name, ms] : ui_.stats.last().passes) {
+    std::printf("  %-12s %8.3f ms\n", name.c_str(), ms);
+  }
+}
 
 }  // namespace
 
@@ -258,168 +390,11 @@ int cmdView(const Args& args) {
     }
   }
   const ViewArgs va = parse(args);
-  // Load before opening a window: a bad scene file fails without one.
-  SceneReloader reloader(va.scene);
-
-  auto ctx = createWindowContext(va.width, va.height, "halfvec view - " + va.scene);
-  GLFWwindow* win = ctx->window();
-  glfwSetScrollCallback(win, [](GLFWwindow*, double, double y) { g_scroll += y; });
-  if (va.frames > 0) glfwSwapInterval(0);  // scripted runs: no vsync wait
-  render::Renderer renderer;
-  reloader.attach(renderer);
-  Scene* scene = &reloader.scene();
-  ui::ImGuiLayer imgui(win);  // after our callbacks: the backend chains to them
-
-  ui::MaterialPanelModel materials(*scene);
-  ui::LightsPanelModel lights(*scene);
-  ui::RenderSettingsModel settings(*scene);
-  ui::StatsModel stats;
-  settings.hdr_choices = hdrChoices();
-  Environment good_environment = scene->environment;  // the last one that baked
-  std::string panel_status;  // the material panel's status line: picks, saves
-  std::string scene_error, shader_error;
-  bool shaders_ok = true;
-  CameraController controller;
-  ClickDetector clicks;
-  KeyEdge key_f12{GLFW_KEY_F12}, key_r{GLFW_KEY_R}, key_esc{GLFW_KEY_ESCAPE};
-  const std::string gpu = ctx->renderer();
-  int shot_index = 0;
-
-  auto last = std::chrono::steady_clock::now();
-  auto last_poll = last;
-  int frame = 0;
-  while (!ctx->shouldClose()) {
-    ctx->pollEvents();
-    const glm::ivec2 fb = ctx->framebufferSize();
-    if (fb.x <= 0 || fb.y <= 0) {  // minimized: nothing to draw into
-      glfwWaitEventsTimeout(0.1);
-      last = std::chrono::steady_clock::now();
-      continue;
-    }
-    const auto now = std::chrono::steady_clock::now();
-    const double frame_ms = std::chrono::duration<double, std::milli>(now - last).count();
-    last = now;
-
-    // Scene file changed on disk: reload, keep the last good scene on failure.
-    if (now - last_poll > std::chrono::milliseconds(250)) {
-      last_poll = now;
-      if (reloader.poll()) {
-        scene = &reloader.scene();
-        materials.attach(*scene);
-        lights.attach(*scene);
-        settings.attach(*scene);
-        good_environment = scene->environment;
-      }
-      scene_error = reloader.error();
-    }
-
-    imgui.beginFrame();
-    // Before the camera moves: a click picks in the frame the user clicked on.
-    std::optional<glm::dvec2> click = clicks.update(win, imgui.wantsMouse());
-    if (frame == 0 && va.click) click = va.click;
-    if (click) {
-      panel_status = pickMaterial(win, *scene, fb, *click, materials);
-      std::printf("%s\n", panel_status.c_str());
-    }
-    controller.update(win, scene->camera, imgui.wantsMouse(), imgui.wantsKeyboard(),
-                      float(std::min(frame_ms, 100.0) / 1000.0));
-    if (!imgui.wantsKeyboard()) {
-      if (key_esc.pressed(win)) glfwSetWindowShouldClose(win, GLFW_TRUE);
-      if (key_r.pressed(win)) {
-        // Rebuild every program from the files as they are now; on an error the last good
-        // programs keep rendering and the panel shows the error (file:line).
-        try {
-          renderer.programs().reloadAll();
-          shaders_ok = true;
-          shader_error.clear();
-          std::printf("shaders reloaded\n");
-        } catch (const std::exception& e) {
-          shader_error = e.what();
-          std::fprintf(stderr, "shader reload failed: %s\n", e.what());
-        }
-      }
-    }
-
-    if (ui::drawMaterialPanel(materials, va.scene, &panel_status)) renderer.updateMaterials();
-    if (ui::drawLightsPanel(lights)) renderer.updateLights();
-    ui::drawRenderingPanel(settings);
-    if (settings.takeNeedsSetScene()) {
-      try {
-        renderer.setScene(*scene);
-        good_environment = scene->environment;
-      } catch (const std::exception& e) {
-        // A bad HDR: back to the environment that worked, the error in the panel.
-        scene_error = e.what();
-        scene->environment = good_environment;
-        try {
-          renderer.setScene(*scene);
-        } catch (const std::exception&) {
-        }
-      }
-    }
-    materials.takeDirty();
-    lights.takeDirty();
-    const render::Manifest manifest = renderer.manifest();
-    ui::drawStatsPanel(stats, scene->lights.size(), render::countLightsInView(*scene, fb.x, fb.y),
-                       gpu, &manifest);
-    ui::drawErrorPanel("Scene error (showing the last good scene)", scene_error);
-    ui::drawErrorPanel("Shader error (last good programs still running; fix and press R)",
-                       shader_error);
-
-    if (shaders_ok) {
-      try {
-        stats.push(renderer.render(fb.x, fb.y, settings.view, GLuint(0)), frame_ms);
-      } catch (const gl::ShaderError& e) {
-        shaders_ok = false;  // retried after the next R
-        shader_error = e.what();
-        std::fprintf(stderr, "shader error: %s\n", e.what());
-      } catch (const std::exception& e) {
-        shaders_ok = false;
-        shader_error = e.what();
-        std::fprintf(stderr, "render error: %s\n", e.what());
-      }
-    }
-    if (!shaders_ok) {
-      glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-      glViewport(0, 0, fb.x, fb.y);
-      glDisable(GL_SCISSOR_TEST);
-      glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-      glClearColor(0.08f, 0.08f, 0.1f, 1.0f);
-      glClear(GL_COLOR_BUFFER_BIT);
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, fb.x, fb.y);
-    imgui.endFrame();
-
-    if (key_f12.pressed(win) && shaders_ok) {
-      std::filesystem::create_directories("out");
-      std::string base;
-      do {
-        base = "out/view_" + std::to_string(shot_index++);
-      } while (std::filesystem::exists(base + ".png"));
-      writePng(base + ".png", renderer.readLdr());
-      writePfm(base + ".pfm", renderer.readHdr());
-      panel_status = "saved " + base + ".png / .pfm";
-      std::printf("%s\n", panel_status.c_str());
-    }
-    ++frame;
-    const bool last_frame = va.frames > 0 && frame >= va.frames;
-    if (last_frame && !va.screenshot.empty()) {
-      const auto dir = std::filesystem::path(va.screenshot).parent_path();
-      if (!dir.empty()) std::filesystem::create_directories(dir);
-      writePng(va.screenshot, readFramebuffer(fb.x, fb.y));
-      std::printf("screenshot: %s\n", std::filesystem::absolute(va.screenshot).string().c_str());
-    }
-    ctx->swapBuffers();
-    if (last_frame) break;
-  }
-  if (!stats.frameTimes().empty()) {
-    std::printf("frames: %d, mean frame %.2f ms, mean GPU %.3f ms (%s)\n", frame,
-                stats.averageFrameMs(), stats.averageGpuMs(), gpu.c_str());
-    for (const auto& [name, ms] : stats.last().passes)
-      std::printf("  %-12s %8.3f ms\n", name.c_str(), ms);
-  }
-  return 0;
+  if (va.print_scene) return printScene(va.scene, va.open);
+  SceneReloader reloader(va.scene, va.open);  // a bad scene file fails before a window opens
+  auto ctx = openWindow(va);
+  Viewer viewer(va, reloader, *ctx);
+  return viewer.run();
 }
 
 }  // namespace hv::app

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "halfvec/scene/model_scene.hpp"
+
 namespace hv::app {
 
 using Args = std::vector<std::string>;
@@ -44,5 +46,17 @@ std::string optionValue(const Args& args, size_t& i);
 // A positional argument of a command that takes one scene file: stores it in `scene`; throws
 // UsageError for an unknown option (a leading '-') or a second scene file.
 void takeScenePath(const std::string& arg, std::string& scene);
+
+// Options of the commands that open a scene or a model (render, view): --env FILE.hdr,
+// --camera N, --set PATH=VALUE, --print-scene. Returns true when args[i] was one of them (i then
+// points at its last value); throws UsageError for a bad value.
+bool takeSceneOption(const Args& args, size_t& i, SceneOpenOptions& options, bool& print_scene);
+
+// "; did you mean "depth"? (one of: none, basecolor, ...)" for an unknown --view name.
+std::string debugViewSuggestion(const std::string& typed);
+
+// --print-scene: writes to stdout the scene JSON `path` opens as (a model's synthesized scene,
+// --env applied; --set overrides are not applied to the printout), in the sample scenes' style.
+int printScene(const std::string& path, const SceneOpenOptions& options);
 
 }  // namespace hv::app

@@ -8,15 +8,17 @@
 #include <string>
 
 #include "halfvec/render/renderer.hpp"
+#include "halfvec/scene/model_scene.hpp"
 #include "halfvec/scene/scene.hpp"
 
 namespace hv::app {
 
 class SceneReloader {
  public:
-  // Loads `path` (throws SceneError like loadScene on a bad first load); needs no GL context, so
-  // a bad file fails before any window opens.
-  explicit SceneReloader(std::string path);
+  // Loads `path`, a scene file or a glTF model, with `options` (openScene; throws SceneError like
+  // loadScene on a bad first load); needs no GL context, so a bad file fails before any window
+  // opens.
+  explicit SceneReloader(std::string path, SceneOpenOptions options = {});
   // Uploads the scene to `renderer` (throws like setScene), which then receives every reload and
   // must outlive this object.
   void attach(render::Renderer& renderer);
@@ -34,6 +36,7 @@ class SceneReloader {
 
  private:
   std::string path_;
+  SceneOpenOptions options_;
   render::Renderer* renderer_ = nullptr;
   std::unique_ptr<Scene> scene_;
   Camera loaded_camera_;

@@ -5,7 +5,9 @@
 #include "math.glsl"
 
 #ifndef HV_TONEMAP
-#define HV_TONEMAP 0  // 0 Reinhard per channel, 1 Reinhard on luminance, 2 none (clamp)
+// 0 Reinhard per channel, 1 Reinhard on luminance, 2 none (clamp), 3 Khronos PBR Neutral,
+// 4 ACES (Narkowicz's fit); hv::ToneMap in C++ (scene.hpp), same values.
+#define HV_TONEMAP 0
 #endif
 #ifndef HV_GAMMA
 #define HV_GAMMA 0  // 0 gamma 2.2, 1 exact sRGB (IEC 61966-2-1)
@@ -20,6 +22,35 @@ vec3 reinhardLuminance(vec3 c) {
   return c * (1.0f / (1.0f + l));
 }
 
+// Khronos PBR Neutral (Khronos Group 2024, "Khronos PBR Neutral Tone Mapper" specification):
+// base colors under unit white light come out as they are (up to a small black offset), and only
+// the brightest channel is compressed above 0.76, with a desaturation towards white that grows
+// with the compression.
+vec3 pbrNeutral(vec3 c) {
+  const float start_compression = 0.8f - 0.04f;
+  const float desaturation = 0.15f;
+  float x = min(c.x, min(c.y, c.z));
+  // Black offset: a quadratic toe below 0.08 (value and slope continuous at 0.08), 0.04 above.
+  float offset = x < 0.08f ? x - 6.25f * x * x : 0.04f;
+  c -= vec3(offset);
+  float peak = max(c.x, max(c.y, c.z));
+  if (peak < start_compression) return c;
+  const float d = 1.0f - start_compression;
+  float new_peak = 1.0f - d * d / (peak + d - start_compression);
+  c *= new_peak / peak;
+  float g = 1.0f - 1.0f / (desaturation * (peak - new_peak) + 1.0f);
+  return mix(c, vec3(new_peak), g);
+}
+
+// ACES filmic curve, Narkowicz 2016, "ACES Filmic Tone Mapping Curve": a rational fit (max error
+// 0.0138) of the luminance of ACES's RRT + ODT (Rec. 709), pre-exposed so that 1 maps to ~0.8,
+// applied per channel. Monotonic on [0, inf) (the derivative's numerator is 1.408 x^2 +
+// 0.7028 x + 0.0042), reaches 1 at x = 7.24 (clamped after).
+vec3 acesFitted(vec3 x) {
+  const float a = 2.51f, b = 0.03f, c = 2.43f, d = 0.59f, e = 0.14f;
+  return (x * (a * x + vec3(b))) / (x * (c * x + vec3(d)) + vec3(e));
+}
+
 // IEC 61966-2-1 sRGB encoding.
 float srgbEncode(float x) {
   return x <= 0.0031308f ? 12.92f * x : 1.055f * pow(x, 1.0f / 2.4f) - 0.055f;
@@ -31,6 +62,10 @@ vec3 outputTransform(vec3 c) {
   c = reinhard(c);
 #elif HV_TONEMAP == 1
   c = reinhardLuminance(c);
+#elif HV_TONEMAP == 3
+  c = pbrNeutral(c);
+#elif HV_TONEMAP == 4
+  c = acesFitted(c);
 #endif
   c = saturate(c);
 #if HV_GAMMA == 0

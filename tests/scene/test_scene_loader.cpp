@@ -38,7 +38,7 @@ TEST(Enums, RoundTrip) {
   }
   EXPECT_EQ(hv::toString(hv::ShadingModel::DefaultLit), "default_lit");
   EXPECT_EQ(hv::toString(hv::EnvironmentKind::HdrFile), "hdr");
-  EXPECT_FALSE(hv::fromString<hv::ToneMap>("aces").has_value());
+  EXPECT_FALSE(hv::fromString<hv::ToneMap>("filmic").has_value());
   EXPECT_EQ(hv::enumNamesJoined<hv::Gamma>(), "\"gamma22\" or \"srgb\"");
 }
 
@@ -60,7 +60,7 @@ TEST(SceneLoader, EverySampleLoads) {
       for (int m : o.meshes) EXPECT_LT(m, int(s.meshes.size()));
     ++n;
   }
-  EXPECT_EQ(n, 6);  // every file in samples/scenes
+  EXPECT_EQ(n, 7);  // every file in samples/scenes
 }
 
 TEST(SceneLoader, DefaultSceneContents) {
@@ -71,7 +71,7 @@ TEST(SceneLoader, DefaultSceneContents) {
   EXPECT_EQ(counts[1], 1);
   EXPECT_EQ(counts[2], 1);
   EXPECT_EQ(s.environment.kind, hv::EnvironmentKind::Sky);
-  EXPECT_EQ(s.objects.size(), 7u);
+  EXPECT_EQ(s.objects.size(), 12u);
 }
 
 TEST(SceneLoader, ManyLightsIsDeterministicAndLarge) {

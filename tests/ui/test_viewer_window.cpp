@@ -18,91 +18,12 @@
 #include <thread>
 
 #include "halfvec/image/image.hpp"
-
-#if HV_HAVE_XLIB
-#include <X11/Xlib.h>
-#include <X11/keysym.h>
-#endif
+#include "ui/xvfb.hpp"
 
 namespace {
 
-// prefix + n + suffix (appending: GCC 12's -Wrestrict misfires on "literal" + std::string&&).
-std::string numbered(const char* prefix, int n, const char* suffix = "") {
-  std::string s(prefix);
-  s += std::to_string(n);
-  s += suffix;
-  return s;
-}
-
-std::string findXvfb() {
-  for (const char* p : {"/usr/bin/Xvfb", "/usr/local/bin/Xvfb"}) {
-    if (access(p, X_OK) == 0) return p;
-  }
-  return {};
-}
-
-// Starts Xvfb on the first free display from :90; stops it on destruction.
-class Xvfb {
- public:
-  explicit Xvfb(const std::string& exe) {
-    for (int d = 90; d < 140; ++d) {
-      if (std::filesystem::exists(numbered("/tmp/.X11-unix/X", d)) ||
-          std::filesystem::exists(numbered("/tmp/.X", d, "-lock"))) {
-        continue;
-      }
-      const std::string disp = numbered(":", d);
-      pid_ = fork();
-      if (pid_ == 0) {
-        std::freopen("/dev/null", "w", stdout);
-        std::freopen("/dev/null", "w", stderr);
-        execl(exe.c_str(), exe.c_str(), disp.c_str(), "-screen", "0", "1280x1024x24", "-nolisten",
-              "tcp", static_cast<char*>(nullptr));
-        _exit(127);
-      }
-      for (int i = 0; i < 100; ++i) {  // up to 10 s for the socket
-        if (std::filesystem::exists(numbered("/tmp/.X11-unix/X", d))) {
-          display_ = disp;
-          return;
-        }
-        int status = 0;
-        if (waitpid(pid_, &status, WNOHANG) == pid_) {  // died (display taken meanwhile?)
-          pid_ = -1;
-          break;
-        }
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));
-      }
-      stop();
-    }
-  }
-  ~Xvfb() { stop(); }
-  const std::string& display() const { return display_; }
-
- private:
-  void stop() {
-    if (pid_ > 0) {
-      kill(pid_, SIGTERM);
-      int status = 0;
-      waitpid(pid_, &status, 0);
-    }
-    pid_ = -1;
-  }
-  pid_t pid_ = -1;
-  std::string display_;
-};
-
-// The window tests: skipped without Xvfb or the halfvec binary; an Xvfb server per test.
-class ViewerWindow : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const std::string xvfb = findXvfb();
-    if (xvfb.empty()) GTEST_SKIP() << "Xvfb not installed (apt-get install xvfb)";
-    if (access(exe.c_str(), X_OK) != 0) GTEST_SKIP() << exe << " not built";
-    server = std::make_unique<Xvfb>(xvfb);
-    ASSERT_FALSE(server->display().empty()) << "could not start Xvfb";
-  }
-  const std::string exe = std::string(HV_BINARY_DIR) + "/halfvec";
-  std::unique_ptr<Xvfb> server;
-};
+using hv::test::numbered;
+using hv::test::ViewerWindow;
 
 TEST_F(ViewerWindow, WindowShowsSceneAndPanelsUnderXvfb) {
   const auto shot =
@@ -110,11 +31,12 @@ TEST_F(ViewerWindow, WindowShowsSceneAndPanelsUnderXvfb) {
   const auto log =
       std::filesystem::temp_directory_path() / numbered("hv_view_", int(getpid()), ".log");
   // (ostringstream: GCC 12's -Wrestrict misfires on long std::string + chains)
-  // --click 359,186: a scripted left click where the red sphere's center (0.6, 0.5, 0) lands in
-  // the 640x360 window, through the same path as a mouse click.
+  // --click 206,187: a scripted left click where the red sphere's center (0.6, 0.5, 0) lands in
+  // the 640x360 window (the scene is drawn in the 340x360 left of the side bar), through the same
+  // path as a mouse click.
   std::ostringstream os;
   os << "DISPLAY=" << server->display() << " '" << exe << "' view '" << HV_SOURCE_DIR
-     << "/samples/scenes/default.json' --size 640x360 --frames 5 --click 359,186 --screenshot '"
+     << "/samples/scenes/default.json' --size 640x360 --frames 5 --click 206,187 --screenshot '"
      << shot.string() << "' > '" << log.string() << "' 2>&1";
   const std::string cmd = os.str();
   const int rc = std::system(cmd.c_str());
@@ -131,11 +53,11 @@ TEST_F(ViewerWindow, WindowShowsSceneAndPanelsUnderXvfb) {
   ASSERT_EQ(img.width, 640);
   ASSERT_EQ(img.height, 360);
 
-  // Lit scene: the middle of the window (between the panels) is not one flat color.
+  // Lit scene: the view left of the side bar (x < 340 at 640x360) is not one flat color.
   double sum = 0, sum2 = 0;
   int n = 0;
   for (int y = 120; y < 300; ++y) {
-    for (int x = 250; x < 390; ++x) {
+    for (int x = 40; x < 320; ++x) {
       const uint8_t* p = img.at(x, y);
       const double l = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
       sum += l;
@@ -147,7 +69,7 @@ TEST_F(ViewerWindow, WindowShowsSceneAndPanelsUnderXvfb) {
   EXPECT_GT(stddev, 8.0) << "scene looks uniform (mean " << mean << ")";
   EXPECT_GT(mean, 20.0) << "scene looks black";
 
-  // Panels: ImGui's dark-style title bars, active (0.16, 0.29, 0.48) = (41, 74, 122) or
+  // The side bar: ImGui's dark-style title bar, active (0.16, 0.29, 0.48) = (41, 74, 122) or
   // inactive (0.04, 0.04, 0.04) = (10, 10, 10), in the top rows where the windows start.
   int title_px = 0;
   for (int y = 0; y < 60; ++y) {
@@ -174,17 +96,22 @@ TEST_F(ViewerWindow, EverySampleSceneOpens) {
         std::filesystem::temp_directory_path() / numbered("hv_view_sample_", int(getpid()), ".png");
     std::ostringstream os;
     os << "DISPLAY=" << server->display() << " '" << exe << "' view '" << e.path().string()
-       << "' --size 640x360 --frames 2 --screenshot '" << shot.string() << "' > /dev/null 2>&1";
+       << "' --size 640x360 --frames 2 --screenshot '" << shot.string() << "' > '" << shot.string()
+       << ".log' 2>&1";
     const int rc = std::system(os.str().c_str());
-    ASSERT_TRUE(WIFEXITED(rc)) << e.path();
-    EXPECT_EQ(WEXITSTATUS(rc), 0) << e.path();
+    std::ifstream log_file(shot.string() + ".log");
+    const std::string log((std::istreambuf_iterator<char>(log_file)),
+                          std::istreambuf_iterator<char>());
+    std::filesystem::remove(shot.string() + ".log");
+    ASSERT_TRUE(WIFEXITED(rc)) << e.path() << "\n" << log;
+    EXPECT_EQ(WEXITSTATUS(rc), 0) << e.path() << "\n" << log;
     ASSERT_TRUE(std::filesystem::exists(shot)) << e.path();
     hv::ImageRGBA8 img = hv::readPng(shot.string());
     std::filesystem::remove(shot);
     double sum = 0;
     int n = 0;
     for (int y = 120; y < 300; ++y) {
-      for (int x = 250; x < 390; ++x, ++n) sum += img.at(x, y)[1];
+      for (int x = 40; x < 320; ++x, ++n) sum += img.at(x, y)[1];
     }
     EXPECT_GT(sum / n, 10.0) << e.path() << ": the view looks black";
   }
@@ -192,22 +119,7 @@ TEST_F(ViewerWindow, EverySampleSceneOpens) {
 }
 
 #if HV_HAVE_XLIB
-// The viewer's top-level window (no window manager under Xvfb: a child of the root), or 0.
-Window findViewerWindow(Display* d) {
-  Window root = DefaultRootWindow(d), parent = 0, *children = nullptr;
-  unsigned int n = 0;
-  Window found = 0;
-  if (!XQueryTree(d, root, &root, &parent, &children, &n)) return 0;
-  for (unsigned int i = 0; i < n && !found; ++i) {
-    char* name = nullptr;
-    if (XFetchName(d, children[i], &name) && name) {
-      if (std::string(name).rfind("halfvec view", 0) == 0) found = children[i];
-      XFree(name);
-    }
-  }
-  if (children) XFree(children);
-  return found;
-}
+using hv::test::findViewerWindow;
 
 // Esc pressed (a key event sent by the X server to the window, as a keyboard would) quits the
 // viewer with status 0; --frames is only a backstop so a failure cannot hang the suite.

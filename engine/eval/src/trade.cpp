@@ -1,5 +1,7 @@
 #include "halfvec/eval/trade.hpp"
 
+#include "halfvec/core/output_files.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -361,8 +363,9 @@ TradeReport runTrade(const Scene& scene, const TradeOptions& opt) {
     say("reference: " + fmtNum(rr.stats.seconds, "%.1f") + " s");
     if (opt.use_cache) {
       fs::create_directories(cache);
-      writePfm(img_path.string(), ref);
-      writePfm(se_path.string(), ref_se);
+      OutputFiles files;  // the three appear together or not at all (a cache hit needs all)
+      writePfm(files.add(img_path).string(), ref);
+      writePfm(files.add(se_path).string(), ref_se);
       nlohmann::ordered_json j = {{"scene", scene.source_path},
                                   {"width", w},
                                   {"height", h},
@@ -372,7 +375,8 @@ TradeReport runTrade(const Scene& scene, const TradeOptions& opt) {
                                   {"mean_rel_error", rr.stats.mean_rel_error},
                                   {"max_rel_error", rr.stats.max_rel_error},
                                   {"seconds", rr.stats.seconds}};
-      std::ofstream(meta_path) << j.dump(2) << "\n";
+      files.write(meta_path, j.dump(2) + "\n");
+      files.commit();
     }
   }
   // Compared pixels: lit, and the reference converged there.
@@ -457,8 +461,10 @@ TradeReport runTrade(const Scene& scene, const TradeOptions& opt) {
     if (want_heat) {
       fs::create_directories(heat_dir);
       row.heatmap = "heatmaps/" + slug(cfg.name) + ".png";
-      writePng((fs::path(opt.report_dir) / row.heatmap).string(),
+      OutputFiles heat;
+      writePng(heat.add(fs::path(opt.report_dir) / row.heatmap).string(),
                relativeErrorHeatMap(maskedLike(img, ref, lit_mask), ref_masked, opt.heatmap_max));
+      heat.commit();
     }
     say(cfg.name + ": rel RMSE " + fmtNum(row.error.rel_rmse));
     rep.rows.push_back(std::move(row));
@@ -669,9 +675,11 @@ cost is the expected order of work (ALU and fetches per pixel), to be confirmed 
 
 void writeTradeReport(const TradeReport& r, const std::string& dir) {
   fs::create_directories(dir);
-  std::ofstream(fs::path(dir) / "trade.md") << tradeMarkdown(r, "", 1);
-  std::ofstream(fs::path(dir) / "trade.csv") << tradeCsv(r);
-  writePng((fs::path(dir) / "plot.png").string(), tradePlot(r));
+  OutputFiles files;  // the report's three files appear together, whole, or not at all
+  files.write(fs::path(dir) / "trade.md", tradeMarkdown(r, "", 1));
+  files.write(fs::path(dir) / "trade.csv", tradeCsv(r));
+  writePng(files.add(fs::path(dir) / "plot.png").string(), tradePlot(r));
+  files.commit();
 }
 
 }  // namespace hv::eval

@@ -1,8 +1,11 @@
 #include "halfvec/gl/shader_source.hpp"
 
+#include "embedded_shaders.hpp"
+
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
+#include <mutex>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -20,13 +23,56 @@ std::string defineKey(DefineSet defines) {
   return key;
 }
 
+namespace {
+
+std::mutex g_dir_mutex;
+fs::path g_shader_dir;  // setShaderDir
+
+// True when `p` lies under the embedded root; `rel` gets the '/'-separated path below it.
+bool embeddedPath(const fs::path& p, std::string& rel) {
+  const fs::path norm = p.lexically_normal();
+  const fs::path r = norm.lexically_relative(embeddedShaderRoot());
+  if (r.empty() || *r.begin() == "..") return false;
+  rel = r.generic_string();
+  return true;
+}
+
+}  // namespace
+
+const fs::path& embeddedShaderRoot() {
+  static const fs::path root = fs::path("[embedded]") / "shaders";
+  return root;
+}
+
+void setShaderDir(const fs::path& dir) {
+  if (!dir.empty() && !(fs::is_directory(dir / "passes") && fs::is_directory(dir / "common"))) {
+    throw ShaderError(dir.string() +
+                      ": not a halfvec shader folder (expected passes/ and common/)");
+  }
+  std::lock_guard<std::mutex> lock(g_dir_mutex);
+  g_shader_dir = dir;
+}
+
 fs::path shaderRoot() {
   if (const char* env = std::getenv("HV_SHADER_DIR"); env && *env) return env;
-#ifdef HV_SHADER_DIR
-  return HV_SHADER_DIR;
-#else
-  return "shaders";
-#endif
+  std::lock_guard<std::mutex> lock(g_dir_mutex);
+  return g_shader_dir.empty() ? embeddedShaderRoot() : g_shader_dir;
+}
+
+std::optional<std::string> readShaderFile(const fs::path& path) {
+  std::string rel;
+  if (embeddedPath(path, rel)) {
+    for (size_t i = 0; i < detail::kEmbeddedShaderCount; ++i) {
+      if (rel == detail::kEmbeddedShaders[i].path)
+        return std::string(detail::kEmbeddedShaders[i].text);
+    }
+    return std::nullopt;
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
 }
 
 namespace {
@@ -46,19 +92,19 @@ struct Expander {
   }
 
   static std::string readFile(const fs::path& p, const std::string& from) {
-    std::ifstream in(p, std::ios::binary);
-    if (!in) {
+    std::optional<std::string> text = readShaderFile(p);
+    if (!text) {
       throw ShaderError(from.empty() ? p.string() + ": cannot open shader file"
                                      : from + ": cannot open included file '" + p.string() + "'");
     }
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
+    return std::move(*text);
   }
 
   // Expands one file. `top` is true for the stage's main file (holds #version).
   void expand(const fs::path& path, const std::string& from, const DefineSet* defines) {
-    const std::string norm = fs::weakly_canonical(path).string();
+    std::string rel;
+    const std::string norm = embeddedPath(path, rel) ? path.lexically_normal().string()
+                                                     : fs::weakly_canonical(path).string();
     if (std::find(stack.begin(), stack.end(), norm) != stack.end()) {
       throw ShaderError(from + ": include cycle through '" + path.string() + "'");
     }

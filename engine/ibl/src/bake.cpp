@@ -21,7 +21,7 @@ namespace hv {
 namespace {
 
 constexpr float kPi = glm::pi<float>();
-constexpr uint32_t kCacheVersion = 1;  // bump when the bake's math or the file layout changes
+constexpr uint32_t kCacheVersion = 2;  // bump when the bake's math or the file layout changes
 constexpr char kCacheMagic[8] = {'H', 'V', 'I', 'B', 'L', 'C', 'H', '\n'};
 
 using Clock = std::chrono::steady_clock;

@@ -1,13 +1,14 @@
 // Environment sources: Radiance .hdr files, the procedural sky, a uniform color; -> cube map.
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <sstream>
 
 #include <glm/gtc/constants.hpp>
-
-#include <stb/stb_image.h>  // libstb.so carries the implementation
 
 #include "halfvec/ibl/ibl.hpp"
 #include "halfvec/core/parallel.hpp"
@@ -21,45 +22,97 @@ constexpr float kPi = glm::pi<float>();
   throw IblError("HDR '" + path + "': " + what);
 }
 
-// Walks every scanline of an RGBE raster (new-style RLE or flat) and fails if the file ends
-// early, so truncated files are rejected instead of decoding to black (stb_image reads zeros
-// past the end).
-void checkRgbeScanlines(const std::string& path, const std::vector<uint8_t>& b, size_t pos, int w,
-                        int h) {
+// Radiance RGBE -> float as Bruce Walter's rgbe.c and stb_image do: mantissa * 2^(e - 136), 0 for
+// e = 0 (Radiance's own colr_color adds half a mantissa step; the engine keeps the common
+// convention, so images decode as before).
+glm::vec3 rgbeToFloat(const uint8_t* c) {
+  if (c[3] == 0) return glm::vec3(0.0f);
+  const float f = std::ldexp(1.0f, int(c[3]) - (128 + 8));
+  return glm::vec3(float(c[0]) * f, float(c[1]) * f, float(c[2]) * f);
+}
+
+// Decodes the raster of a w x h RGBE file scanline by scanline, as Radiance's freadcolrs does
+// (Ward, "Real Pixels", Graphics Gems II, 1991; Radiance src/common/color.c): a scanline of width
+// 8..32767 starting with the bytes 2, 2, w >> 8 (< 128), w & 255 is run-length encoded per
+// component (a count byte > 128 is a run of count - 128 copies of the next byte, else count
+// literal bytes); any other scanline is flat, 4 bytes per pixel, where a pixel (1, 1, 1, n)
+// repeats the previous pixel n << shift times (the pre-1991 encoding; shift grows by 8 for each
+// consecutive repeat pixel). Encodings may change from one scanline to the next. Every byte read
+// is checked against the end of the data and every run against the scanline's end.
+void decodeRgbe(const std::string& path, const uint8_t* b, size_t size, size_t pos, int w, int h,
+                ImageRGBf& img) {
+  std::vector<uint8_t> line(size_t(w) * 4);
   for (int y = 0; y < h; ++y) {
     const auto truncated = [&] {
       fail(path, "truncated (data ends in scanline " + std::to_string(y) + " of " +
                      std::to_string(h) + ")");
     };
-    if (pos + 4 > b.size()) truncated();
+    const auto corrupt = [&](const char* why) {
+      fail(path, "corrupt scanline " + std::to_string(y) + " (" + why + ")");
+    };
+    if (size - pos < 4) truncated();
     const bool rle = w >= 8 && w < 32768 && b[pos] == 2 && b[pos + 1] == 2 && !(b[pos + 2] & 0x80);
-    if (!rle) {  // flat scanline: w pixels of 4 bytes
-      if (b.size() - pos < size_t(w) * 4) truncated();
-      pos += size_t(w) * 4;
-      continue;
-    }
-    if (((int(b[pos + 2]) << 8) | b[pos + 3]) != w)
-      fail(path, "corrupt scanline " + std::to_string(y) + " (RLE length mismatch)");
-    pos += 4;
-    for (int c = 0; c < 4; ++c) {
-      int x = 0;
-      while (x < w) {
-        if (pos >= b.size()) truncated();
-        int count = b[pos++];
-        if (count > 128) {  // run of count - 128 copies of the next byte
-          count -= 128;
-          if (pos >= b.size()) truncated();
-          ++pos;
-        } else {  // count literal bytes
-          if (b.size() - pos < size_t(count)) truncated();
-          pos += size_t(count);
+    if (rle) {
+      if (((int(b[pos + 2]) << 8) | b[pos + 3]) != w) corrupt("RLE length mismatch");
+      pos += 4;
+      for (int c = 0; c < 4; ++c) {
+        int x = 0;
+        while (x < w) {
+          if (pos >= size) truncated();
+          int count = b[pos++];
+          if (count > 128) {  // a run of count - 128 copies of the next byte
+            count -= 128;
+            if (x + count > w) corrupt("RLE run past the end of the scanline");
+            if (pos >= size) truncated();
+            for (int k = 0; k < count; ++k) line[size_t(x + k) * 4 + size_t(c)] = b[pos];
+            ++pos;
+          } else {  // count literal bytes
+            if (x + count > w) corrupt("RLE literal past the end of the scanline");
+            if (size - pos < size_t(count)) truncated();
+            for (int k = 0; k < count; ++k)
+              line[size_t(x + k) * 4 + size_t(c)] = b[pos + size_t(k)];
+            pos += size_t(count);
+          }
+          x += count;
         }
-        if (count == 0 || x + count > w)
-          fail(path, "corrupt scanline " + std::to_string(y) + " (bad RLE run)");
-        x += count;
+      }
+    } else {
+      int x = 0, shift = 0;
+      while (x < w) {
+        if (size - pos < 4) truncated();
+        const uint8_t* px = b + pos;
+        pos += 4;
+        if (px[0] == 1 && px[1] == 1 && px[2] == 1) {  // old-style run of the previous pixel
+          if (x == 0) corrupt("run-length pixel without a previous pixel");
+          if (shift > 16) corrupt("run-length count overflows");
+          const int64_t count = int64_t(px[3]) << shift;
+          if (count > w - x) corrupt("run past the end of the scanline");
+          for (int64_t k = 0; k < count; ++k, ++x) {
+            std::memcpy(&line[size_t(x) * 4], &line[size_t(x - 1) * 4], 4);
+          }
+          shift += 8;
+        } else {
+          std::memcpy(&line[size_t(x) * 4], px, 4);
+          ++x;
+          shift = 0;
+        }
       }
     }
+    for (int x = 0; x < w; ++x) img.at(x, y) = rgbeToFloat(&line[size_t(x) * 4]);
   }
+}
+
+// The fewest bytes one scanline of width w can take in any encoding decodeRgbe accepts: one
+// pixel plus old-style repeat pixels (each covers up to 255 << shift), or the RLE header plus one
+// 2-byte run per 127 values of each component.
+size_t minScanlineBytes(int w) {
+  size_t old_style = 4;
+  for (int64_t covered = 1, shift = 0; covered < w; shift += 8) {
+    covered += int64_t(255) << shift;
+    old_style += 4;
+  }
+  if (w < 8 || w >= 32768) return old_style;
+  return std::min(old_style, 4 + 4 * 2 * size_t((w + 126) / 127));
 }
 
 float luminance(glm::vec3 c) {
@@ -68,19 +121,16 @@ float luminance(glm::vec3 c) {
 
 }  // namespace
 
-ImageRGBf loadHdr(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) fail(path, "cannot open (missing file?)");
-  std::vector<uint8_t> b((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+ImageRGBf decodeHdr(const uint8_t* b, size_t size, const std::string& path, int max_width) {
   size_t pos = 0;
   auto line = [&]() -> std::string {
     std::string s;
-    while (pos < b.size() && b[pos] != '\n' && s.size() < 4096) s.push_back(char(b[pos++]));
-    if (pos >= b.size()) fail(path, "truncated header");
+    while (pos < size && b[pos] != '\n' && s.size() < 4096) s.push_back(char(b[pos++]));
+    if (pos >= size) fail(path, "truncated header");
     ++pos;
     return s;
   };
-  if (b.size() < 2 || b[0] != '#' || b[1] != '?')
+  if (size < 2 || b[0] != '#' || b[1] != '?')
     fail(path, "not a Radiance RGBE file (missing '#?RADIANCE' / '#?RGBE' signature)");
   const std::string magic = line();
   if (magic != "#?RADIANCE" && magic != "#?RGBE")
@@ -89,34 +139,51 @@ ImageRGBf loadHdr(const std::string& path) {
   for (std::string l = line(); !l.empty(); l = line()) {
     if (l.rfind("FORMAT=", 0) == 0) {
       if (l != "FORMAT=32-bit_rle_rgbe")
-        fail(path, "unsupported " + l + " (only FORMAT=32-bit_rle_rgbe)");
+        fail(path, "unsupported " + l.substr(0, 64) + " (only FORMAT=32-bit_rle_rgbe)");
       format_ok = true;
     }
   }
   if (!format_ok) fail(path, "bad header (no FORMAT=32-bit_rle_rgbe line)");
   const std::string res = line();
-  int h = 0, w = 0;
+  long h = 0, w = 0;
   char tail = 0;
-  if (std::sscanf(res.c_str(), "-Y %d +X %d%c", &h, &w, &tail) != 2)
+  if (std::sscanf(res.c_str(), "-Y %ld +X %ld%c", &h, &w, &tail) != 2)
     fail(path, "unsupported resolution line '" + res.substr(0, 64) + "' (need '-Y H +X W')");
-  if (w <= 0 || h <= 0 || w > 65536 || h > 65536)
-    fail(path, "bad dimensions " + std::to_string(w) + "x" + std::to_string(h));
+  if (w <= 0 || h <= 0 || w > max_width || h > max_width / 2) {
+    fail(path, "dimensions " + std::to_string(w) + "x" + std::to_string(h) + " outside 1.." +
+                   std::to_string(max_width) + " x 1.." + std::to_string(max_width / 2) +
+                   " (kMaxHdrWidth)");
+  }
   if (w != 2 * h)
     fail(path, "not equirectangular (" + std::to_string(w) + "x" + std::to_string(h) +
                    ", need a 2:1 aspect)");
-  checkRgbeScanlines(path, b, pos, w, h);
-
-  int sw = 0, sh = 0, n = 0;
-  float* data = stbi_loadf_from_memory(b.data(), int(b.size()), &sw, &sh, &n, 3);
-  if (!data) {
-    const char* why = stbi_failure_reason();
-    fail(path, std::string("decode failed (") + (why ? why : "unknown") + ")");
+  // Before allocating: the data must be able to hold the declared size.
+  const size_t need = size_t(h) * minScanlineBytes(int(w));
+  if (size - pos < need) {
+    fail(path, "truncated: " + std::to_string(size - pos) + " bytes of pixel data cannot hold " +
+                   std::to_string(w) + "x" + std::to_string(h) + " pixels (at least " +
+                   std::to_string(need) + " needed)");
   }
-  ImageRGBf img = makeImageRGBf(sw, sh);
-  std::memcpy(img.px.data(), data, img.px.size() * sizeof(glm::vec3));
-  stbi_image_free(data);
-  if (sw != w || sh != h) fail(path, "decoded size differs from header");
+  ImageRGBf img = makeImageRGBf(int(w), int(h));
+  decodeRgbe(path, b, size, pos, int(w), int(h), img);
   return img;
+}
+
+ImageRGBf loadHdr(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) fail(path, "cannot open (missing file?)");
+  const uintmax_t size = std::filesystem::file_size(path, ec);
+  // The largest file of the largest image: flat scanlines, 4 bytes per pixel, plus a header.
+  const uintmax_t max_size = uintmax_t(kMaxHdrWidth) * uintmax_t(kMaxHdrWidth / 2) * 4 + (1 << 20);
+  if (ec || size > max_size) {
+    fail(path, ec ? "cannot read: " + ec.message()
+                  : std::to_string(size) + " bytes, more than any " + std::to_string(kMaxHdrWidth) +
+                        "-pixel-wide image needs");
+  }
+  std::ifstream f(path, std::ios::binary);
+  std::vector<uint8_t> b(static_cast<size_t>(size));
+  if (!f.read(reinterpret_cast<char*>(b.data()), std::streamsize(size))) fail(path, "cannot read");
+  return decodeHdr(b.data(), b.size(), path);
 }
 
 glm::vec2 equirectUV(glm::vec3 d) {

@@ -9,7 +9,9 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <span>
 #include <sstream>
+#include <filesystem>
 
 // libstb.so carries the implementations; never define STB_IMAGE*_IMPLEMENTATION here.
 #include <stb/stb_image.h>
@@ -18,10 +20,25 @@
 namespace hv {
 namespace {
 
-std::vector<uint8_t> readFileBytes(const std::string& path, const char* what) {
+// The whole file, if it is a regular file of at most `max_bytes`.
+std::vector<uint8_t> readFileBytes(const std::string& path, const char* what, uint64_t max_bytes) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    throw ImageError(std::string(what) + " '" + path + "': cannot open (missing file?)");
+  }
+  const uint64_t size = std::filesystem::file_size(path, ec);
+  if (ec) throw ImageError(std::string(what) + " '" + path + "': cannot read: " + ec.message());
+  if (size > max_bytes) {
+    throw ImageError(std::string(what) + " '" + path + "': " + std::to_string(size) +
+                     " bytes, more than the largest image accepted needs (" +
+                     std::to_string(max_bytes) + ")");
+  }
   std::ifstream f(path, std::ios::binary);
-  if (!f) throw ImageError(std::string(what) + " '" + path + "': cannot open (missing file?)");
-  return std::vector<uint8_t>(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+  std::vector<uint8_t> bytes(static_cast<size_t>(size));
+  if (!f.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size))) {
+    throw ImageError(std::string(what) + " '" + path + "': cannot read");
+  }
+  return bytes;
 }
 
 void checkSize(const std::string& path, int w, int h, size_t have, size_t want, const char* what) {
@@ -58,14 +75,27 @@ void writePng(const std::string& path, const ImageRGBA8& img) {
     throw ImageError("writePng '" + path + "': write failed (directory missing or not writable?)");
 }
 
-ImageRGBA8 readPng(const std::string& path) {
-  std::vector<uint8_t> bytes = readFileBytes(path, "readPng");
+ImageRGBA8 decodePng(const uint8_t* bytes, size_t size, const std::string& path, int max_side) {
   static const uint8_t kSig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  if (bytes.size() < 8 || std::memcmp(bytes.data(), kSig, 8) != 0)
+  if (size < 8 || std::memcmp(bytes, kSig, 8) != 0)
     throw ImageError("readPng '" + path + "': bad header (not a PNG file)");
+  if (size > size_t(std::numeric_limits<int>::max()))
+    throw ImageError("readPng '" + path + "': file too large");
+  // The header's dimensions, checked before stb_image allocates and inflates anything.
   int w = 0, h = 0, n = 0;
-  stbi_uc* data = stbi_load_from_memory(bytes.data(), int(bytes.size()), &w, &h, &n, 4);
-  if (!data) {
+  if (!stbi_info_from_memory(bytes, int(size), &w, &h, &n)) {
+    const char* why = stbi_failure_reason();
+    throw ImageError("readPng '" + path + "': corrupt or truncated PNG (" +
+                     (why ? why : "unknown") + ")");
+  }
+  if (w <= 0 || h <= 0 || w > max_side || h > max_side) {
+    throw ImageError("readPng '" + path + "': " + std::to_string(w) + "x" + std::to_string(h) +
+                     " outside 1.." + std::to_string(max_side) + " per side (kMaxImageSide)");
+  }
+  int dw = 0, dh = 0;
+  stbi_uc* data = stbi_load_from_memory(bytes, int(size), &dw, &dh, &n, 4);
+  if (!data || dw != w || dh != h) {
+    if (data) stbi_image_free(data);
     const char* why = stbi_failure_reason();
     throw ImageError("readPng '" + path + "': corrupt or truncated PNG (" +
                      (why ? why : "unknown") + ")");
@@ -74,6 +104,13 @@ ImageRGBA8 readPng(const std::string& path) {
   std::memcpy(img.px.data(), data, img.px.size());
   stbi_image_free(data);
   return img;
+}
+
+ImageRGBA8 readPng(const std::string& path) {
+  // A PNG's compressed data is smaller than its raw pixels (plus a little per row): a bound.
+  const uint64_t max_bytes = uint64_t(kMaxImageSide) * kMaxImageSide * 4 * 2 + (1 << 20);
+  const std::vector<uint8_t> bytes = readFileBytes(path, "readPng", max_bytes);
+  return decodePng(bytes.data(), bytes.size(), path);
 }
 
 void writePfm(const std::string& path, const ImageRGBf& img) {
@@ -98,7 +135,13 @@ void writePfm(const std::string& path, const ImageRGBf& img) {
 }
 
 ImageRGBf readPfm(const std::string& path) {
-  std::vector<uint8_t> bytes = readFileBytes(path, "readPfm");
+  const uint64_t max_bytes = uint64_t(kMaxImageSide) * kMaxImageSide * 12 + 1024;
+  const std::vector<uint8_t> bytes = readFileBytes(path, "readPfm", max_bytes);
+  return decodePfm(bytes.data(), bytes.size(), path);
+}
+
+ImageRGBf decodePfm(const uint8_t* data, size_t size, const std::string& path, int max_side) {
+  const std::span<const uint8_t> bytes(data, size);
   // Header: three whitespace-separated tokens ("PF"/"Pf", "W H", scale), then exactly one
   // whitespace byte before the raster.
   size_t pos = 0;
@@ -128,7 +171,7 @@ ImageRGBf readPfm(const std::string& path) {
     throw ImageError("readPfm '" + path + "': bad header (dimensions/scale '" + ws + " " + hs +
                      " " + ss + "')");
   }
-  if (w <= 0 || h <= 0 || w > (1 << 16) || h > (1 << 16) || scale == 0.0 || !std::isfinite(scale))
+  if (w <= 0 || h <= 0 || w > max_side || h > max_side || scale == 0.0 || !std::isfinite(scale))
     throw ImageError("readPfm '" + path + "': bad header (size " + std::to_string(w) + "x" +
                      std::to_string(h) + ", scale " + ss + ")");
   if (pos >= bytes.size() || !std::isspace(bytes[pos]))

@@ -76,6 +76,26 @@ ErrorMetrics compareImages(const ImageRGBf& test, const ImageRGBf& ref) {
   return m;
 }
 
+std::vector<std::string> toleranceViolations(const ErrorMetrics& m, const Tolerances& t) {
+  std::vector<std::string> out;
+  auto check = [&](const char* name, double value, const std::optional<double>& limit) {
+    // !(value <= limit): a NaN metric is a violation too.
+    if (limit && !(value <= *limit)) {
+      char line[128];
+      std::snprintf(line, sizeof line, "%s %.6g > %.6g", name, value, *limit);
+      out.push_back(line);
+    }
+  };
+  check("rel_rmse", m.rel_rmse, t.max_rel_rmse);
+  check("p99_rel", m.p99_rel, t.max_p99_rel);
+  check("max_abs", m.max_abs, t.max_abs);
+  if (t.any() && m.nonfinite_test > m.nonfinite_ref) {
+    out.push_back(std::to_string(m.nonfinite_test) + " NaN/Inf pixels in the test image (" +
+                  std::to_string(m.nonfinite_ref) + " in the reference)");
+  }
+  return out;
+}
+
 glm::vec3 viridis(float t) {
   // Matt Zucker's least-squares degree-6 fit to matplotlib's viridis (shadertoy WlfXRN, CC0).
   const glm::vec3 c0(0.2777273272234177f, 0.005407344544966578f, 0.3340998053353061f);

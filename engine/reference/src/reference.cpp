@@ -371,7 +371,12 @@ ReferenceResult renderReference(const Scene& scene, const GBufferReadback& gb,
       const int pct = int(100.0 * done / gb.height);
       if (pct / 10 > last_reported / 10 || done == gb.height) {
         last_reported = pct;
-        std::fprintf(stderr, "reference: %3d%% (%d/%d rows)\n", pct, done, gb.height);
+        // Time left from the rows so far (rows cost alike on average).
+        const double elapsed =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        std::fprintf(stderr,
+                     "reference: %3d%% (%d of %d rows), %.0f s elapsed, about %.0f s left\n", pct,
+                     done, gb.height, elapsed, elapsed * double(gb.height - done) / done);
       }
     }
   });

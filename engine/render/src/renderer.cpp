@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "pipeline_state.hpp"
+#include "post_stages.hpp"
 #include "targets.hpp"
 #include "halfvec/scene/enums.hpp"
 #include "halfvec/shading/light_gpu.hpp"
@@ -80,6 +81,7 @@ Renderer::~Renderer() = default;
 
 void Renderer::setScene(const Scene& scene) {
   scene_ = &scene;
+  ++lights_version_;
   gpu_ = std::make_unique<GpuScene>(scene);
   passes_->environment = std::make_unique<GpuEnvironment>(scene);
   refreshVariants();
@@ -91,6 +93,7 @@ void Renderer::updateMaterials() {
 }
 
 void Renderer::updateLights() {
+  ++lights_version_;
   if (gpu_) gpu_->updateLights(*scene_);
   if (scene_) refreshVariants();
 }
@@ -228,11 +231,16 @@ FrameStats Renderer::render(int width, int height, DebugView view,
       debug_.light_texel_limit};
   p.light.run(ctx, frame.block, light, t.hdr.id());
   runAmbientPass(ctx, {gbuffer, *p.environment, ambient_desc_}, t.hdr.id(), width, height);
-  const bool present = present_fbo.has_value();
+  emitterPass(view);
+  const bool post = postPassesActive(view);
+  final_ldr_ = 0;
+  // With post passes, the tone map writes the output target and postPasses presents it.
+  const bool present = present_fbo.has_value() && !post;
   runTonemapPass(
       ctx, {t.hdr.id(), gbuffer, p.culling.view().ranges, view, scene_->settings},
       {present ? *present_fbo : t.output.id(), present ? t.output.id() : 0u, width, height},
       empty_vao_.id());
+  if (post) postPasses(view, present_fbo, width, height);
   if (debug_.floor_pass) {
     if (!t.floor) t.floor = gl::createTexture2D("floor pass scratch", GL_RGBA16F, width, height);
     runFloorPass(ctx, gbuffer, t.floor.id(), width, height);
@@ -301,8 +309,8 @@ ImageRGBf Renderer::readHdr() const {
 ImageRGBA8 Renderer::readLdr() const {
   const Targets& t = *targets_;
   ImageRGBA8 img = makeImageRGBA8(t.width, t.height);
-  glGetTextureImage(t.ldr.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(img.px.size()),
-                    img.px.data());
+  glGetTextureImage(final_ldr_ ? final_ldr_ : t.ldr.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                    GLsizei(img.px.size()), img.px.data());
   flipRows(img.px, t.width, t.height, 4);
   return img;
 }

@@ -18,7 +18,9 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <functional>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -33,11 +35,249 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// offset + length <= size, without overflow.
+bool fitsIn(uint64_t offset, uint64_t length, uint64_t size) {
+  return offset <= size && length <= size - offset;
+}
+
+std::string idx(const char* array, size_t i) {
+  return std::string(array) + "[" + std::to_string(i) + "]";
+}
+
+// ---- checks on the raw bytes, before tinygltf parses them -------------------------------------
+
+struct GlbChunks {
+  const uint8_t* json = nullptr;
+  size_t json_size = 0;
+};
+
+uint32_t le32(const uint8_t* p) {
+  return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24;
+}
+
+// The GLB container (glTF 2.0 spec, 4.4 "Binary glTF Layout"): a 12-byte header whose length is
+// the file size, a JSON chunk, an optional BIN chunk, each chunk inside the file and 4-byte
+// aligned. tinygltf 2.7 lets a BIN chunk end up to 8 bytes past the data it was given; checked
+// here so it never sees such a file.
+GlbChunks checkGlb(const std::string& name, const uint8_t* b, size_t size) {
+  auto fail = [&](const std::string& element, const std::string& msg) {
+    throw SceneError(name + ": GLB " + element + ": " + msg);
+  };
+  if (size < 20) fail("header", "file too short (" + std::to_string(size) + " bytes)");
+  if (std::memcmp(b, "glTF", 4) != 0) fail("header", "bad magic (not a binary glTF file)");
+  if (le32(b + 4) != 2) fail("header.version", "expected 2, got " + std::to_string(le32(b + 4)));
+  if (le32(b + 8) != size) {
+    fail("header.length",
+         std::to_string(le32(b + 8)) + " differs from the file size " + std::to_string(size));
+  }
+  GlbChunks out;
+  size_t at = 12;
+  for (int chunk = 0; at < size; ++chunk) {
+    const std::string el = "chunks[" + std::to_string(chunk) + "]";
+    if (size - at < 8) fail(el, "truncated chunk header");
+    const uint32_t length = le32(b + at), type = le32(b + at + 4);
+    if (!fitsIn(at + 8, length, size)) {
+      fail(el + ".chunkLength", std::to_string(length) + " bytes at offset " +
+                                    std::to_string(at + 8) + " exceed the file size " +
+                                    std::to_string(size));
+    }
+    if (length % 4 != 0) fail(el + ".chunkLength", "not a multiple of 4");
+    if (chunk == 0) {
+      if (type != 0x4E4F534Au) fail(el + ".chunkType", "the first chunk must be JSON");
+      if (length == 0) fail(el + ".chunkLength", "empty JSON chunk");
+      out.json = b + at + 8;
+      out.json_size = length;
+    } else if (chunk == 1) {
+      if (type != 0x004E4942u) fail(el + ".chunkType", "the second chunk must be BIN");
+      if (length == 0) fail(el + ".chunkLength", "empty BIN chunk");
+    }
+    at += 8 + size_t(length);
+  }
+  return out;
+}
+
+// tinygltf converts "extras" and "extensions" recursively: JSON nesting is bounded before it
+// parses anything (strings and escapes skipped).
+void checkJsonDepth(const std::string& name, const uint8_t* text, size_t size, int max_depth) {
+  int depth = 0;
+  bool in_string = false, escape = false;
+  for (size_t i = 0; i < size; ++i) {
+    const uint8_t c = text[i];
+    if (in_string) {
+      if (escape) {
+        escape = false;
+      } else if (c == '\\') {
+        escape = true;
+      } else if (c == '"') {
+        in_string = false;
+      }
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > max_depth) {
+        throw SceneError(name + ": JSON nesting deeper than " + std::to_string(max_depth) +
+                         " levels at byte " + std::to_string(i) + " (GltfLimits::max_json_depth)");
+      }
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+}
+
+// tinygltf 2.7 decodes an image stored in a bufferView without checking the view against its
+// buffer: that range is checked here on the JSON (a buffer's data always has its declared
+// byteLength once tinygltf has loaded it, or loading fails).
+void checkImageViews(const std::string& name, const uint8_t* text, size_t size) {
+  const std::string_view view(reinterpret_cast<const char*>(text), size);
+  if (view.find("\"images\"") == std::string_view::npos) return;  // no second parse needed
+  const nlohmann::json j = nlohmann::json::parse(text, text + size, nullptr, false);
+  if (j.is_discarded() || !j.is_object() || !j.contains("images")) return;  // tinygltf reports
+  auto fail = [&](const std::string& element, const std::string& msg) {
+    throw SceneError(name + ": " + element + ": " + msg);
+  };
+  auto array = [&](const char* key) -> const nlohmann::json* {
+    const auto it = j.find(key);
+    return it != j.end() && it->is_array() ? &*it : nullptr;
+  };
+  auto unsignedAt = [&](const nlohmann::json& o, const char* key, uint64_t def,
+                        const std::string& el) -> uint64_t {
+    if (!o.is_object() || !o.contains(key)) return def;
+    const nlohmann::json& v = o[key];
+    if (!v.is_number_unsigned()) fail(el + "." + key, "expected an unsigned integer");
+    return v.get<uint64_t>();
+  };
+  const nlohmann::json* images = array("images");
+  if (!images) return;
+  const nlohmann::json *views = array("bufferViews"), *buffers = array("buffers");
+  for (size_t i = 0; i < images->size(); ++i) {
+    const nlohmann::json& im = (*images)[i];
+    if (!im.is_object() || !im.contains("bufferView")) continue;
+    const std::string el = idx("images", i);
+    const uint64_t vi = unsignedAt(im, "bufferView", 0, el);
+    if (!views || vi >= views->size()) fail(el + ".bufferView", "index out of range");
+    const nlohmann::json& v = (*views)[size_t(vi)];
+    const std::string vel = idx("bufferViews", size_t(vi));
+    const uint64_t bi = unsignedAt(v, "buffer", uint64_t(-1), vel);
+    if (!buffers || bi >= buffers->size()) fail(vel + ".buffer", "index out of range");
+    const std::string bel = idx("buffers", size_t(bi));
+    const uint64_t buffer_len = unsignedAt((*buffers)[size_t(bi)], "byteLength", 0, bel);
+    const uint64_t off = unsignedAt(v, "byteOffset", 0, vel);
+    const uint64_t len = unsignedAt(v, "byteLength", 0, vel);
+    if (!fitsIn(off, len, buffer_len)) {
+      fail(vel + ".byteLength", "byteOffset " + std::to_string(off) + " + byteLength " +
+                                    std::to_string(len) + " exceeds " + bel + ".byteLength " +
+                                    std::to_string(buffer_len));
+    }
+    if (len == 0 || len > uint64_t(std::numeric_limits<int>::max())) {
+      fail(vel + ".byteLength", "image data of " + std::to_string(len) + " bytes");
+    }
+  }
+}
+
+// ---- file access and image decoding, as tinygltf callbacks ------------------------------------
+
+struct LoadContext {
+  const GltfLimits* limits = nullptr;
+  bool decode_images = true;
+  uint64_t image_pixels = 0;  // decoded so far
+};
+
+bool fileExists(const std::string& path, void*) {
+  std::error_code ec;
+  return fs::is_regular_file(path, ec);
+}
+
+std::string expandNothing(const std::string& path, void*) {
+  return path;  // glTF URIs are plain relative paths: no ~ or variables
+}
+
+bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                   void* user) {
+  const auto* ctx = static_cast<const LoadContext*>(user);
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) {
+    *err += "not a regular file";
+    return false;
+  }
+  const uint64_t size = fs::file_size(path, ec);
+  if (ec || size > ctx->limits->max_file_bytes) {
+    *err += ec ? ec.message()
+               : std::to_string(size) + " bytes exceed the limit of " +
+                     std::to_string(ctx->limits->max_file_bytes) + " (GltfLimits::max_file_bytes)";
+    return false;
+  }
+  std::ifstream f(path, std::ios::binary);
+  out->resize(size_t(size));
+  if (!f.read(reinterpret_cast<char*>(out->data()), std::streamsize(size))) {
+    *err += "read error";
+    return false;
+  }
+  return true;
+}
+
+bool writeNothing(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+  *err += "writing is not supported";
+  return false;
+}
+
+// Decodes every image to 8-bit RGBA after checking its dimensions (from the header only) against
+// the budget, so a small compressed file cannot decode into gigabytes.
+bool decodeImage(tinygltf::Image* image, const int index, std::string* err, std::string*, int, int,
+                 const unsigned char* bytes, int size, void* user) {
+  auto* ctx = static_cast<LoadContext*>(user);
+  const GltfLimits& lim = *ctx->limits;
+  const std::string el = idx("images", size_t(index));
+  if (!ctx->decode_images) return true;  // material_override: images are not imported
+  int w = 0, h = 0, comp = 0;
+  if (size <= 0 || !stbi_info_from_memory(bytes, size, &w, &h, &comp)) {
+    const char* why = stbi_failure_reason();
+    *err += el + ": unknown or corrupt image data (" + (why ? why : "unknown") + ")";
+    return false;
+  }
+  if (w <= 0 || h <= 0 || w > lim.max_image_side || h > lim.max_image_side) {
+    *err += el + ": " + std::to_string(w) + "x" + std::to_string(h) + " exceeds the limit of " +
+            std::to_string(lim.max_image_side) + " per side (GltfLimits::max_image_side)";
+    return false;
+  }
+  ctx->image_pixels += uint64_t(w) * uint64_t(h);
+  if (ctx->image_pixels > lim.max_image_pixels) {
+    *err += el + ": the file's images exceed the budget of " +
+            std::to_string(lim.max_image_pixels) + " pixels (GltfLimits::max_image_pixels)";
+    return false;
+  }
+  int dw = 0, dh = 0;
+  stbi_uc* data = stbi_load_from_memory(bytes, size, &dw, &dh, &comp, 4);
+  if (!data || dw != w || dh != h) {
+    if (data) stbi_image_free(data);
+    const char* why = stbi_failure_reason();
+    *err += el + ": image data cannot be decoded (" + (why ? why : "unknown") + ")";
+    return false;
+  }
+  image->width = w;
+  image->height = h;
+  image->component = 4;
+  image->bits = 8;
+  image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+  image->image.assign(data, data + size_t(w) * size_t(h) * 4);
+  stbi_image_free(data);
+  return true;
+}
+
+// ---- the import, on tinygltf's model -----------------------------------------------------------
+
+// An accessor's elements, checked against the buffer: `count` elements of `comps` components of
+// type `ctype`, element i at base + i * stride.
+struct ElementRange {
+  const uint8_t* base = nullptr;
+  size_t count = 0, stride = 0;
+  int comps = 1, ctype = 0;
+  bool normalized = false;
+};
+
 class Importer {
  public:
-  Importer(std::string path, const tinygltf::Model& model, const Scene& scene,
-           const GltfOptions& opt)
-      : path_(std::move(path)), m_(model), opt_(opt) {
+  Importer(std::string path, tinygltf::Model& model, const Scene& scene, const GltfOptions& opt)
+      : path_(std::move(path)), m_(model), opt_(opt), lim_(opt.limits) {
     image_base_ = int(scene.images.size());
     material_base_ = int(scene.materials.size());
     mesh_base_ = int(scene.meshes.size());
@@ -59,13 +299,16 @@ class Importer {
       for (size_t i = 0; i < m_.materials.size(); ++i) importMaterial(int(i));
     }
     mesh_map_.assign(m_.meshes.size(), {});
+    mesh_triangles_.assign(m_.meshes.size(), 0);
     // Every mesh is validated even if no node uses it.
     for (size_t i = 0; i < m_.meshes.size(); ++i) importMesh(int(i));
     std::vector<int> roots;
+    std::string roots_el;
     if (!m_.scenes.empty()) {
       const int s = m_.defaultScene >= 0 ? m_.defaultScene : 0;
       if (s >= int(m_.scenes.size())) fail("scene", "index " + std::to_string(s) + " out of range");
       roots = m_.scenes[size_t(s)].nodes;
+      roots_el = idx("scenes", size_t(s)) + ".nodes";
     } else {  // no scenes: every node that is nobody's child is a root
       std::vector<bool> child(m_.nodes.size(), false);
       for (const auto& n : m_.nodes)
@@ -73,130 +316,210 @@ class Importer {
           if (c >= 0 && c < int(child.size())) child[size_t(c)] = true;
       for (size_t i = 0; i < m_.nodes.size(); ++i)
         if (!child[i]) roots.push_back(int(i));
+      roots_el = "nodes";
     }
-    std::vector<bool> on_path(m_.nodes.size(), false);
-    for (int r : roots) visit(r, transform, on_path, "scenes.nodes");
+    for (int r : roots) visit(r, transform, roots_el);
   }
 
   std::vector<ImageData> images;
   std::vector<Material> materials;
   std::vector<Mesh> meshes;
   std::vector<Object> objects;
+  std::vector<GltfCamera> cameras;
 
  private:
   // ---- accessors ---------------------------------------------------------------------------
-  // Reads accessor `index` as `count` x `comps` floats (normalized integers mapped to [0,1] or
-  // [-1,1], plain integers converted), after checking type and every byte range.
-  std::vector<float> readFloats(int index, const std::string& what,
-                                std::initializer_list<int> types, std::initializer_list<int> ctypes,
-                                bool require_normalized_ints) {
-    const std::string el = "accessors[" + std::to_string(index) + "] (" + what + ")";
-    if (index < 0 || index >= int(m_.accessors.size())) fail(what, "accessor index out of range");
-    const tinygltf::Accessor& a = m_.accessors[size_t(index)];
-    if (std::find(types.begin(), types.end(), a.type) == types.end()) fail(el, "unexpected type");
+  // The bytes of bufferView `view_index`, checked against its buffer; `ref` names the reference.
+  std::pair<const uint8_t*, size_t> viewBytes(int view_index, const std::string& ref) const {
+    if (view_index < 0 || size_t(view_index) >= m_.bufferViews.size()) {
+      fail(ref, "bufferView index " + std::to_string(view_index) + " out of range (" +
+                    std::to_string(m_.bufferViews.size()) + " bufferViews)");
+    }
+    const tinygltf::BufferView& v = m_.bufferViews[size_t(view_index)];
+    const std::string vel = idx("bufferViews", size_t(view_index));
+    if (v.buffer < 0 || size_t(v.buffer) >= m_.buffers.size()) {
+      fail(vel + ".buffer", "index " + std::to_string(v.buffer) + " out of range");
+    }
+    const std::vector<unsigned char>& data = m_.buffers[size_t(v.buffer)].data;
+    if (!fitsIn(v.byteOffset, v.byteLength, data.size())) {
+      fail(vel + (v.byteOffset > data.size() ? ".byteOffset" : ".byteLength"),
+           "byteOffset " + std::to_string(v.byteOffset) + " + byteLength " +
+               std::to_string(v.byteLength) + " exceeds " + idx("buffers", size_t(v.buffer)) +
+               " size " + std::to_string(data.size()));
+    }
+    return {data.data() + v.byteOffset, v.byteLength};
+  }
+
+  // `count` elements of `comps` x `ctype` at `byte_offset` in bufferView `view_index`, each
+  // checked to lie inside the view (overflow-safe). `el` is the accessor, for messages.
+  ElementRange elements(int view_index, uint64_t byte_offset, uint64_t count, int comps, int ctype,
+                        bool normalized, const std::string& el) const {
+    const auto [bytes, size] = viewBytes(view_index, el + ".bufferView");
+    const std::string vel = idx("bufferViews", size_t(view_index));
+    const int csize = tinygltf::GetComponentSizeInBytes(uint32_t(ctype));
+    if (csize <= 0 || ctype == TINYGLTF_COMPONENT_TYPE_DOUBLE ||
+        ctype == TINYGLTF_COMPONENT_TYPE_INT) {
+      fail(el + ".componentType", "unsupported value " + std::to_string(ctype));
+    }
+    const size_t elem = size_t(csize) * size_t(comps);
+    const size_t declared = m_.bufferViews[size_t(view_index)].byteStride;
+    const size_t stride = declared ? declared : elem;
+    if (stride < elem) {
+      fail(vel + ".byteStride", std::to_string(stride) + " is smaller than the element size " +
+                                    std::to_string(elem) + " of " + el);
+    }
+    if (byte_offset > size) {
+      fail(el + ".byteOffset",
+           std::to_string(byte_offset) + " exceeds " + vel + ".byteLength " + std::to_string(size));
+    }
+    const uint64_t avail = size - byte_offset;
+    if (count == 0) fail(el + ".count", "must be at least 1");
+    if (elem > avail || count - 1 > (avail - elem) / stride) {
+      fail(el + ".count", std::to_string(count) + " elements of " + std::to_string(elem) +
+                              " bytes at stride " + std::to_string(stride) + " from byteOffset " +
+                              std::to_string(byte_offset) + " exceed " + vel + ".byteLength " +
+                              std::to_string(size));
+    }
+    return {bytes + byte_offset, size_t(count), stride, comps, ctype, normalized};
+  }
+
+  static float component(const ElementRange& r, size_t i, int c) {
+    const unsigned char* q =
+        r.base + i * r.stride +
+        size_t(c) * size_t(tinygltf::GetComponentSizeInBytes(uint32_t(r.ctype)));
+    const bool n = r.normalized;
+    switch (r.ctype) {
+      case TINYGLTF_COMPONENT_TYPE_FLOAT: {
+        float f;
+        std::memcpy(&f, q, 4);
+        return f;
+      }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return n ? *q / 255.0f : *q;
+      case TINYGLTF_COMPONENT_TYPE_BYTE: {
+        const int8_t x = int8_t(*q);
+        return n ? std::max(x / 127.0f, -1.0f) : x;
+      }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+        uint16_t x;
+        std::memcpy(&x, q, 2);
+        return n ? x / 65535.0f : x;
+      }
+      case TINYGLTF_COMPONENT_TYPE_SHORT: {
+        int16_t x;
+        std::memcpy(&x, q, 2);
+        return n ? std::max(x / 32767.0f, -1.0f) : x;
+      }
+      default: {  // UNSIGNED_INT (elements() rejects the rest)
+        uint32_t x;
+        std::memcpy(&x, q, 4);
+        return float(x);
+      }
+    }
+  }
+
+  static uint32_t unsignedComponent(const ElementRange& r, size_t i) {
+    const unsigned char* q = r.base + i * r.stride;
+    switch (r.ctype) {
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return *q;
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+        uint16_t x;
+        std::memcpy(&x, q, 2);
+        return x;
+      }
+      default: {
+        uint32_t x;
+        std::memcpy(&x, q, 4);
+        return x;
+      }
+    }
+  }
+
+  const tinygltf::Accessor& accessor(int index, const std::string& ref) const {
+    if (index < 0 || size_t(index) >= m_.accessors.size()) {
+      fail(ref, "accessor index " + std::to_string(index) + " out of range (" +
+                    std::to_string(m_.accessors.size()) + " accessors)");
+    }
+    return m_.accessors[size_t(index)];
+  }
+
+  void checkCount(uint64_t count, uint64_t budget, const std::string& el, const char* limit) const {
+    if (count > budget) {
+      fail(el + ".count", std::to_string(count) + " exceeds the budget of " +
+                              std::to_string(budget) + " (GltfLimits::" + limit + ")");
+    }
+  }
+
+  // Reads accessor `index` (referenced as `ref`) as count x comps floats (normalized integers
+  // mapped to [0,1] or [-1,1], plain integers converted), after checking type, every byte range
+  // and that each value is finite.
+  std::vector<float> readFloats(int index, const std::string& ref, std::initializer_list<int> types,
+                                std::initializer_list<int> ctypes, bool require_normalized_ints) {
+    const tinygltf::Accessor& a = accessor(index, ref);
+    const std::string el = idx("accessors", size_t(index));
+    const std::string use = " (" + ref + ")";
+    if (std::find(types.begin(), types.end(), a.type) == types.end()) {
+      fail(el + ".type", "unexpected type for" + use);
+    }
     if (std::find(ctypes.begin(), ctypes.end(), a.componentType) == ctypes.end()) {
-      fail(el, "unsupported componentType " + std::to_string(a.componentType));
+      fail(el + ".componentType", "unsupported value " + std::to_string(a.componentType) + use);
     }
     const bool is_float = a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
     if (!is_float && require_normalized_ints && !a.normalized) {
-      fail(el, "integer components must be normalized here");
+      fail(el + ".normalized", "integer components must be normalized for" + use);
     }
+    checkCount(a.count, lim_.max_vertices, el, "max_vertices");
     const int comps = tinygltf::GetNumComponentsInType(uint32_t(a.type));
+    if (a.count == 0) fail(el + ".count", "must be at least 1");
     std::vector<float> out(a.count * size_t(comps), 0.0f);
     if (a.bufferView >= 0) {
-      readRaw(a.bufferView, a.byteOffset, a.count, comps, a.componentType, a.normalized, el,
-              out.data());
+      const ElementRange r =
+          elements(a.bufferView, a.byteOffset, a.count, comps, a.componentType, a.normalized, el);
+      for (size_t i = 0; i < r.count; ++i)
+        for (int c = 0; c < comps; ++c) out[i * size_t(comps) + size_t(c)] = component(r, i, c);
     }
     if (a.sparse.isSparse) {
-      const size_t n = size_t(std::max(0, a.sparse.count));
-      std::vector<uint32_t> idx(n);
-      std::vector<float> tmp(n);
-      readRaw(a.sparse.indices.bufferView, size_t(std::max(0, a.sparse.indices.byteOffset)), n, 1,
-              a.sparse.indices.componentType, false, el + ".sparse.indices", tmp.data());
-      std::vector<float> vals(n * size_t(comps));
-      readRaw(a.sparse.values.bufferView, size_t(std::max(0, a.sparse.values.byteOffset)), n, comps,
-              a.componentType, a.normalized, el + ".sparse.values", vals.data());
+      const std::string sel = el + ".sparse";
+      if (a.sparse.count < 1 || uint64_t(a.sparse.count) > a.count) {
+        fail(sel + ".count",
+             std::to_string(a.sparse.count) + " is not in [1, " + std::to_string(a.count) + "]");
+      }
+      const int ict = a.sparse.indices.componentType;
+      if (ict != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+          ict != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+          ict != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {
+        fail(sel + ".indices.componentType", "unsupported value " + std::to_string(ict));
+      }
+      if (a.sparse.indices.byteOffset < 0) fail(sel + ".indices.byteOffset", "negative");
+      if (a.sparse.values.byteOffset < 0) fail(sel + ".values.byteOffset", "negative");
+      const size_t n = size_t(a.sparse.count);
+      const ElementRange ri =
+          elements(a.sparse.indices.bufferView, uint64_t(a.sparse.indices.byteOffset), n, 1, ict,
+                   false, sel + ".indices");
+      const ElementRange rv =
+          elements(a.sparse.values.bufferView, uint64_t(a.sparse.values.byteOffset), n, comps,
+                   a.componentType, a.normalized, sel + ".values");
       for (size_t i = 0; i < n; ++i) {
-        const double k = tmp[i];
-        if (k < 0 || k >= double(a.count)) fail(el + ".sparse.indices", "index out of range");
-        std::copy_n(&vals[i * size_t(comps)], comps, &out[size_t(k) * size_t(comps)]);
+        const uint32_t k = unsignedComponent(ri, i);
+        if (k >= a.count) {
+          fail(sel + ".indices", "index " + std::to_string(i) + " = " + std::to_string(k) +
+                                     " >= count " + std::to_string(a.count));
+        }
+        for (int c = 0; c < comps; ++c)
+          out[size_t(k) * size_t(comps) + size_t(c)] = component(rv, i, c);
       }
     }
+    for (float f : out)
+      if (!std::isfinite(f)) fail(el, "non-finite value" + use);
     return out;
   }
 
-  void readRaw(int view_index, size_t byte_offset, size_t count, int comps, int ctype,
-               bool normalized, const std::string& el, float* out) {
-    if (view_index < 0 || view_index >= int(m_.bufferViews.size())) {
-      fail(el, "bufferView index " + std::to_string(view_index) + " out of range");
-    }
-    const tinygltf::BufferView& v = m_.bufferViews[size_t(view_index)];
-    const std::string vel = "bufferViews[" + std::to_string(view_index) + "]";
-    if (v.buffer < 0 || v.buffer >= int(m_.buffers.size())) fail(vel, "buffer index out of range");
-    const std::vector<unsigned char>& data = m_.buffers[size_t(v.buffer)].data;
-    if (v.byteOffset + v.byteLength > data.size()) {
-      fail(vel, "byteOffset + byteLength (" + std::to_string(v.byteOffset + v.byteLength) +
-                    ") exceeds buffer size " + std::to_string(data.size()));
-    }
-    const int csize = tinygltf::GetComponentSizeInBytes(uint32_t(ctype));
-    if (csize <= 0) fail(el, "bad componentType " + std::to_string(ctype));
-    const size_t elem = size_t(csize) * size_t(comps);
-    const size_t stride = v.byteStride ? v.byteStride : elem;
-    if (stride < elem) fail(el, "byteStride smaller than the element size");
-    if (count > 0 && byte_offset + stride * (count - 1) + elem > v.byteLength) {
-      fail(el, "accessor range (offset " + std::to_string(byte_offset) + ", " +
-                   std::to_string(count) + " elements, stride " + std::to_string(stride) +
-                   ") exceeds " + vel + ".byteLength " + std::to_string(v.byteLength));
-    }
-    const unsigned char* base = data.data() + v.byteOffset + byte_offset;
-    for (size_t i = 0; i < count; ++i) {
-      const unsigned char* p = base + i * stride;
-      for (int c = 0; c < comps; ++c) {
-        const unsigned char* q = p + size_t(c) * size_t(csize);
-        float f = 0.0f;
-        switch (ctype) {
-          case TINYGLTF_COMPONENT_TYPE_FLOAT:
-            std::memcpy(&f, q, 4);
-            break;
-          case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-            f = normalized ? *q / 255.0f : *q;
-            break;
-          case TINYGLTF_COMPONENT_TYPE_BYTE: {
-            const int8_t x = int8_t(*q);
-            f = normalized ? std::max(x / 127.0f, -1.0f) : x;
-            break;
-          }
-          case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-            uint16_t x;
-            std::memcpy(&x, q, 2);
-            f = normalized ? x / 65535.0f : x;
-            break;
-          }
-          case TINYGLTF_COMPONENT_TYPE_SHORT: {
-            int16_t x;
-            std::memcpy(&x, q, 2);
-            f = normalized ? std::max(x / 32767.0f, -1.0f) : x;
-            break;
-          }
-          case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
-            uint32_t x;
-            std::memcpy(&x, q, 4);
-            f = float(x);
-            break;
-          }
-          default:
-            fail(el, "bad componentType " + std::to_string(ctype));
-        }
-        out[i * size_t(comps) + size_t(c)] = f;
-      }
-    }
-  }
-
-  std::vector<uint32_t> readIndices(int index, size_t vertex_count, const std::string& el) {
-    if (index < 0 || index >= int(m_.accessors.size())) fail(el, "indices accessor out of range");
-    const tinygltf::Accessor& a = m_.accessors[size_t(index)];
-    const std::string ael = el + " indices (accessors[" + std::to_string(index) + "])";
-    if (a.type != TINYGLTF_TYPE_SCALAR) fail(ael, "expected type SCALAR");
+  std::vector<uint32_t> readIndices(int index, size_t vertex_count, const std::string& ref) {
+    const tinygltf::Accessor& a = accessor(index, ref);
+    const std::string el = idx("accessors", size_t(index));
+    const std::string use = " (" + ref + ")";
+    if (a.type != TINYGLTF_TYPE_SCALAR) fail(el + ".type", "expected SCALAR" + use);
     uint32_t restart = 0;
     switch (a.componentType) {
       case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
@@ -209,37 +532,26 @@ class Importer {
         restart = 0xFFFFFFFFu;
         break;
       default:
-        fail(ael, "componentType " + std::to_string(a.componentType) +
-                      " is not UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
+        fail(el + ".componentType", std::to_string(a.componentType) +
+                                        " is not UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT" +
+                                        use);
     }
-    if (a.normalized) fail(ael, "indices must not be normalized");
-    if (a.bufferView < 0) fail(ael, "indices need a bufferView");
-    // Read as raw integers (floats would lose 32-bit precision).
-    const tinygltf::BufferView& v =
-        m_.bufferViews.at(size_t(std::min<int>(a.bufferView, int(m_.bufferViews.size()) - 1)));
-    std::vector<float> check(a.count);  // performs every bounds check
-    readRaw(a.bufferView, a.byteOffset, a.count, 1, a.componentType, false, ael, check.data());
-    const int csize = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
-    const size_t stride = v.byteStride ? v.byteStride : size_t(csize);
-    const unsigned char* base =
-        m_.buffers[size_t(v.buffer)].data.data() + v.byteOffset + a.byteOffset;
-    std::vector<uint32_t> out(a.count);
-    for (size_t i = 0; i < a.count; ++i) {
-      uint32_t x = 0;
-      if (csize == 1) x = base[i * stride];
-      if (csize == 2) {
-        uint16_t s;
-        std::memcpy(&s, base + i * stride, 2);
-        x = s;
-      }
-      if (csize == 4) std::memcpy(&x, base + i * stride, 4);
+    if (a.normalized) fail(el + ".normalized", "indices must not be normalized" + use);
+    if (a.bufferView < 0) fail(el + ".bufferView", "indices need a bufferView" + use);
+    if (a.sparse.isSparse) fail(el + ".sparse", "sparse indices are not supported" + use);
+    checkCount(a.count, 3 * lim_.max_triangles + 2, el, "max_triangles");
+    const ElementRange r =
+        elements(a.bufferView, a.byteOffset, a.count, 1, a.componentType, false, el);
+    std::vector<uint32_t> out(r.count);
+    for (size_t i = 0; i < r.count; ++i) {
+      const uint32_t x = unsignedComponent(r, i);
       if (x == restart) {
-        fail(ael, "index " + std::to_string(i) + " is the primitive-restart value " +
-                      std::to_string(restart) + ", which glTF forbids");
+        fail(el, "index " + std::to_string(i) + " is the primitive-restart value " +
+                     std::to_string(restart) + ", which glTF forbids" + use);
       }
       if (x >= vertex_count) {
-        fail(ael, "index " + std::to_string(i) + " = " + std::to_string(x) + " >= vertex count " +
-                      std::to_string(vertex_count));
+        fail(el, "index " + std::to_string(i) + " = " + std::to_string(x) + " >= vertex count " +
+                     std::to_string(vertex_count) + use);
       }
       out[i] = x;
     }
@@ -248,33 +560,28 @@ class Importer {
 
   // ---- images, materials ---------------------------------------------------------------------
   void importImage(int i) {
-    const tinygltf::Image& im = m_.images[size_t(i)];
-    const std::string el = "images[" + std::to_string(i) + "]";
+    tinygltf::Image& im = m_.images[size_t(i)];
+    const std::string el = idx("images", size_t(i));
     ImageData out;
-    out.name = im.name.empty() ? (im.uri.empty() ? el : im.uri) : im.name;
-    if (im.image.empty() || im.width <= 0 || im.height <= 0) {
-      fail(el,
-           "image could not be loaded or decoded" + (im.uri.empty() ? "" : " (" + im.uri + ")"));
-    }
-    const int comps = im.component, bytes = std::max(1, im.bits / 8);
-    if (comps < 1 || comps > 4 || (bytes != 1 && bytes != 2) ||
-        im.image.size() < size_t(im.width) * size_t(im.height) * size_t(comps * bytes)) {
-      fail(el, "unsupported pixel layout");
+    out.name = im.name.empty() ? (im.uri.empty() || im.uri.size() > 256 ? el : im.uri) : im.name;
+    // decodeImage produced every decoded image as 8-bit RGBA within the budgets.
+    if (im.image.empty() || im.width <= 0 || im.height <= 0 || im.component != 4 || im.bits != 8 ||
+        im.image.size() != size_t(im.width) * size_t(im.height) * 4) {
+      fail(el, "image could not be loaded or decoded" +
+                   (im.uri.empty() || im.uri.size() > 256 ? "" : " (" + im.uri + ")"));
     }
     out.width = im.width;
     out.height = im.height;
-    out.rgba.resize(size_t(im.width) * size_t(im.height) * 4);
-    for (size_t p = 0; p < size_t(im.width) * size_t(im.height); ++p) {
-      uint8_t c[4] = {0, 0, 0, 255};
-      for (int k = 0; k < comps; ++k) {
-        const size_t at = (p * size_t(comps) + size_t(k)) * size_t(bytes);
-        c[k] = bytes == 1 ? im.image[at] : im.image[at + 1];  // 16-bit little endian: high byte
-      }
-      if (comps == 1) c[1] = c[2] = c[0];
-      if (comps == 2) c[3] = c[1], c[1] = c[2] = c[0];  // grey + alpha
-      std::memcpy(&out.rgba[p * 4], c, 4);
-    }
+    out.rgba = std::move(im.image);
     images.push_back(std::move(out));
+  }
+
+  // A glTF number as a finite float, else an error naming `el`.
+  float finite(double x, const std::string& el) const {
+    if (!std::isfinite(x) || std::abs(x) > double(std::numeric_limits<float>::max())) {
+      fail(el, "expected a finite number, got " + std::to_string(x));
+    }
+    return float(x);
   }
 
   TextureRef texture(int tex_index, int texcoord, const std::string& el) {
@@ -336,31 +643,37 @@ class Importer {
     m.name = g.name.empty() ? el : g.name;
     const auto& pbr = g.pbrMetallicRoughness;
     if (pbr.baseColorFactor.size() == 4) {
-      m.base_color =
-          glm::vec3(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]);
-      m.base_alpha = float(pbr.baseColorFactor[3]);
+      const std::string f = el + ".pbrMetallicRoughness.baseColorFactor";
+      m.base_color = glm::vec3(finite(pbr.baseColorFactor[0], f), finite(pbr.baseColorFactor[1], f),
+                               finite(pbr.baseColorFactor[2], f));
+      m.base_alpha = finite(pbr.baseColorFactor[3], f);
     }
-    m.metallic = float(pbr.metallicFactor);
-    m.roughness = float(pbr.roughnessFactor);
+    m.metallic = finite(pbr.metallicFactor, el + ".pbrMetallicRoughness.metallicFactor");
+    m.roughness = finite(pbr.roughnessFactor, el + ".pbrMetallicRoughness.roughnessFactor");
     m.base_color_tex = texture(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
                                el + ".baseColorTexture");
     m.metallic_roughness_tex =
         texture(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
                 el + ".metallicRoughnessTexture");
     m.normal_tex = texture(g.normalTexture.index, g.normalTexture.texCoord, el + ".normalTexture");
-    m.normal_tex.scale = float(g.normalTexture.scale);
+    m.normal_tex.scale = finite(g.normalTexture.scale, el + ".normalTexture.scale");
     m.occlusion_tex =
         texture(g.occlusionTexture.index, g.occlusionTexture.texCoord, el + ".occlusionTexture");
-    m.occlusion_tex.scale = float(g.occlusionTexture.strength);
+    m.occlusion_tex.scale = finite(g.occlusionTexture.strength, el + ".occlusionTexture.strength");
     m.emissive_tex =
         texture(g.emissiveTexture.index, g.emissiveTexture.texCoord, el + ".emissiveTexture");
     if (g.emissiveFactor.size() == 3) {
-      m.emissive = glm::vec3(g.emissiveFactor[0], g.emissiveFactor[1], g.emissiveFactor[2]);
+      const std::string f = el + ".emissiveFactor";
+      // glTF 2.0: each in [0, 1] (KHR_materials_emissive_strength, which scales it, is not read).
+      m.emissive =
+          glm::clamp(glm::vec3(finite(g.emissiveFactor[0], f), finite(g.emissiveFactor[1], f),
+                               finite(g.emissiveFactor[2], f)),
+                     0.0f, 1.0f);
     }
     m.double_sided = g.doubleSided;
     if (g.alphaMode == "MASK") {
       m.alpha_mode = AlphaMode::Mask;
-      m.alpha_cutoff = float(g.alphaCutoff);
+      m.alpha_cutoff = finite(g.alphaCutoff, el + ".alphaCutoff");
     } else if (g.alphaMode == "BLEND") {
       m.alpha_mode = AlphaMode::Opaque;
       warn(el + " \"" + m.name + "\": alphaMode BLEND is not supported; rendered opaque");
@@ -379,13 +692,16 @@ class Importer {
       m.base_color_tex = {};
       if (v.Has("diffuseFactor") && v.Get("diffuseFactor").ArrayLen() == 4) {
         const auto& f = v.Get("diffuseFactor");
-        m.base_color = glm::vec3(f.Get(0).GetNumberAsDouble(), f.Get(1).GetNumberAsDouble(),
-                                 f.Get(2).GetNumberAsDouble());
-        m.base_alpha = float(f.Get(3).GetNumberAsDouble());
+        const std::string fe = el + ".diffuseFactor";
+        m.base_color = glm::vec3(finite(f.Get(0).GetNumberAsDouble(), fe),
+                                 finite(f.Get(1).GetNumberAsDouble(), fe),
+                                 finite(f.Get(2).GetNumberAsDouble(), fe));
+        m.base_alpha = finite(f.Get(3).GetNumberAsDouble(), fe);
       }
       m.roughness =
-          1.0f -
-          (v.Has("glossinessFactor") ? float(v.Get("glossinessFactor").GetNumberAsDouble()) : 1.0f);
+          1.0f - (v.Has("glossinessFactor") ? finite(v.Get("glossinessFactor").GetNumberAsDouble(),
+                                                     el + ".glossinessFactor")
+                                            : 1.0f);
       if (v.Has("diffuseTexture")) {
         const auto& t = v.Get("diffuseTexture");
         const int index = t.Has("index") ? t.Get("index").GetNumberAsInt() : -1;
@@ -424,6 +740,7 @@ class Importer {
           "meshes[" + std::to_string(mi) + "].primitives[" + std::to_string(pi) + "]";
       std::optional<Mesh> mesh = importPrimitive(gm.primitives[pi], el);
       if (!mesh) continue;
+      mesh_triangles_[size_t(mi)] += mesh->indices.size() / 3;
       mesh->name =
           (gm.name.empty() ? "mesh" + std::to_string(mi) : gm.name) + "/" + std::to_string(pi);
       meshes.push_back(std::move(*mesh));
@@ -438,6 +755,14 @@ class Importer {
     };
     const int pos_acc = attr("POSITION");
     if (pos_acc < 0) fail(el, "primitive has no POSITION attribute");
+    // The vertex budget before any attribute is read (they may have no bufferView: zeros).
+    const uint64_t pos_count = accessor(pos_acc, el + ".POSITION").count;
+    if (pos_count > lim_.max_vertices - std::min(total_vertices_, lim_.max_vertices)) {
+      fail(idx("accessors", size_t(pos_acc)) + ".count",
+           std::to_string(pos_count) + " vertices (" + el +
+               ".POSITION) exceed the file's budget of " + std::to_string(lim_.max_vertices) +
+               " (GltfLimits::max_vertices)");
+    }
     using std::initializer_list;
     constexpr int kF = TINYGLTF_COMPONENT_TYPE_FLOAT, kUB = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
                   kB = TINYGLTF_COMPONENT_TYPE_BYTE, kUS = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
@@ -445,8 +770,6 @@ class Importer {
     const std::vector<float> pos =
         readFloats(pos_acc, el + ".POSITION", {TINYGLTF_TYPE_VEC3}, {kF, kB, kUB, kS, kUS}, false);
     const size_t n = pos.size() / 3;
-    for (float f : pos)
-      if (!std::isfinite(f)) fail(el + ".POSITION", "non-finite value");
     std::vector<float> nrm, tan, uv[2];
     const bool has_normal = attr("NORMAL") >= 0;
     if (has_normal)
@@ -471,27 +794,22 @@ class Importer {
     sizeCheck(uv[0], 2, "TEXCOORD_0");
     sizeCheck(uv[1], 2, "TEXCOORD_1");
 
-    std::vector<uint32_t> idx;
+    std::vector<uint32_t> ind;
     if (p.indices >= 0) {
-      idx = readIndices(p.indices, n, el);
+      ind = readIndices(p.indices, n, el + ".indices");
     } else {
-      idx.resize(n);
-      for (size_t i = 0; i < n; ++i) idx[i] = uint32_t(i);
+      ind.resize(n);
+      for (size_t i = 0; i < n; ++i) ind[i] = uint32_t(i);
     }
-    std::vector<uint32_t> tris;
+    size_t triangles = 0;
     switch (p.mode) {
       case TINYGLTF_MODE_TRIANGLES:
-        if (idx.size() % 3 != 0) fail(el, "TRIANGLES index count is not a multiple of 3");
-        tris = idx;
+        if (ind.size() % 3 != 0) fail(el, "TRIANGLES index count is not a multiple of 3");
+        triangles = ind.size() / 3;
         break;
       case TINYGLTF_MODE_TRIANGLE_STRIP:
-        for (size_t i = 0; i + 2 < idx.size(); ++i) {  // glTF spec 3.7.2.1 ordering
-          tris.insert(tris.end(), {idx[i], idx[i + 1 + i % 2], idx[i + 2 - i % 2]});
-        }
-        break;
       case TINYGLTF_MODE_TRIANGLE_FAN:
-        for (size_t i = 1; i + 1 < idx.size(); ++i)
-          tris.insert(tris.end(), {idx[i], idx[i + 1], idx[0]});
+        triangles = ind.size() >= 3 ? ind.size() - 2 : 0;
         break;
       case TINYGLTF_MODE_POINTS:
       case TINYGLTF_MODE_LINE:
@@ -500,12 +818,38 @@ class Importer {
         warn(el + ": mode " + std::to_string(p.mode) + " (points/lines) is not rendered; skipped");
         return std::nullopt;
       default:
-        fail(el, "unknown mode " + std::to_string(p.mode));
+        fail(el + ".mode", "unknown value " + std::to_string(p.mode));
+    }
+    // Budgets, before the triangle list and the vertices are built.
+    total_triangles_ += triangles;
+    total_vertices_ += has_normal ? n : 3 * triangles;  // without normals: 3 per triangle
+    if (total_triangles_ > lim_.max_triangles) {
+      fail(el, "the file's triangles exceed the budget of " + std::to_string(lim_.max_triangles) +
+                   " (GltfLimits::max_triangles)");
+    }
+    if (total_vertices_ > lim_.max_vertices) {
+      fail(el, "the file's vertices exceed the budget of " + std::to_string(lim_.max_vertices) +
+                   " (GltfLimits::max_vertices)");
+    }
+    std::vector<uint32_t> tris;
+    if (p.mode == TINYGLTF_MODE_TRIANGLES) {
+      tris = std::move(ind);
+    } else {
+      tris.reserve(3 * triangles);
+      for (size_t i = 0; i < triangles; ++i) {
+        if (p.mode == TINYGLTF_MODE_TRIANGLE_STRIP) {  // glTF spec 3.7.2.1 ordering
+          tris.insert(tris.end(), {ind[i], ind[i + 1 + i % 2], ind[i + 2 - i % 2]});
+        } else {
+          tris.insert(tris.end(), {ind[i + 1], ind[i + 2], ind[0]});
+        }
+      }
     }
 
     int material;
     if (p.material >= 0) {
-      if (p.material >= int(m_.materials.size())) fail(el, "material index out of range");
+      if (p.material >= int(m_.materials.size())) {
+        fail(el + ".material", "index " + std::to_string(p.material) + " out of range");
+      }
       material = opt_.material_override >= 0 ? opt_.material_override : material_base_ + p.material;
     } else {
       material = defaultMaterial();
@@ -537,6 +881,8 @@ class Importer {
       for (size_t i = 0; i < n; ++i) mesh.vertices.push_back(vertex(i));
       mesh.indices = std::move(tris);
     } else {  // flat normals: every triangle gets its own three vertices
+      mesh.vertices.reserve(tris.size());
+      mesh.indices.reserve(tris.size());
       for (size_t t = 0; t + 2 < tris.size(); t += 3) {
         Vertex v[3] = {vertex(tris[t]), vertex(tris[t + 1]), vertex(tris[t + 2])};
         glm::vec3 fn = glm::cross(v[1].position - v[0].position, v[2].position - v[0].position);
@@ -555,50 +901,138 @@ class Importer {
   }
 
   // ---- nodes ---------------------------------------------------------------------------------
-  void visit(int ni, const glm::mat4& parent, std::vector<bool>& on_path, const std::string& from) {
-    if (ni < 0 || ni >= int(m_.nodes.size()))
-      fail(from, "node index " + std::to_string(ni) + " out of range");
-    const std::string el = "nodes[" + std::to_string(ni) + "]";
-    if (on_path[size_t(ni)]) fail(el, "node hierarchy contains a cycle");
-    on_path[size_t(ni)] = true;
-    const tinygltf::Node& n = m_.nodes[size_t(ni)];
+  glm::mat4 localMatrix(const tinygltf::Node& n, const std::string& el) const {
     glm::mat4 local(1.0f);
     if (n.matrix.size() == 16) {
-      for (int k = 0; k < 16; ++k) glm::value_ptr(local)[k] = float(n.matrix[size_t(k)]);
+      for (int k = 0; k < 16; ++k) {
+        glm::value_ptr(local)[k] = finite(n.matrix[size_t(k)], el + ".matrix");
+      }
+      return local;
+    }
+    glm::mat4 t(1.0f), r(1.0f), s(1.0f);
+    if (n.translation.size() == 3) {
+      const std::string f = el + ".translation";
+      t = glm::translate(glm::mat4(1.0f),
+                         glm::vec3(finite(n.translation[0], f), finite(n.translation[1], f),
+                                   finite(n.translation[2], f)));
+    }
+    if (n.rotation.size() == 4) {
+      const std::string f = el + ".rotation";
+      const glm::quat q(finite(n.rotation[3], f), finite(n.rotation[0], f),
+                        finite(n.rotation[1], f), finite(n.rotation[2], f));
+      if (!(glm::length(q) > 1e-6f)) fail(f, "expected a non-zero quaternion");
+      r = glm::mat4_cast(glm::normalize(q));
+    }
+    if (n.scale.size() == 3) {
+      const std::string f = el + ".scale";
+      s = glm::scale(glm::mat4(1.0f), glm::vec3(finite(n.scale[0], f), finite(n.scale[1], f),
+                                                finite(n.scale[2], f)));
+    }
+    return t * r * s;
+  }
+
+  // Depth-first over the node graph from root `root` with an explicit stack (a file controls
+  // the depth), rejecting cycles; nodes reused by several parents are instanced, within the
+  // budgets of node instances and instanced triangles.
+  void visit(int root, const glm::mat4& parent, const std::string& from) {
+    struct Frame {
+      int node;
+      glm::mat4 world;
+      size_t next_child;
+    };
+    std::vector<bool> on_path(m_.nodes.size(), false);
+    std::vector<Frame> stack;
+    auto enter = [&](int ni, const glm::mat4& parent_world, const std::string& ref) {
+      if (ni < 0 || size_t(ni) >= m_.nodes.size()) {
+        fail(ref, "node index " + std::to_string(ni) + " out of range (" +
+                      std::to_string(m_.nodes.size()) + " nodes)");
+      }
+      const std::string el = idx("nodes", size_t(ni));
+      if (on_path[size_t(ni)]) fail(ref, "node hierarchy contains a cycle through " + el);
+      if (int(stack.size()) >= lim_.max_node_depth) {
+        fail(ref, "node hierarchy deeper than " + std::to_string(lim_.max_node_depth) +
+                      " levels (GltfLimits::max_node_depth)");
+      }
+      if (++node_instances_ > lim_.max_node_instances) {
+        fail(el, "the node graph expands into more than " +
+                     std::to_string(lim_.max_node_instances) +
+                     " node instances (GltfLimits::max_node_instances; nodes reused by several "
+                     "parents count once per use)");
+      }
+      const tinygltf::Node& n = m_.nodes[size_t(ni)];
+      const glm::mat4 world = parent_world * localMatrix(n, el);
+      for (int k = 0; k < 16; ++k) {
+        if (!std::isfinite(glm::value_ptr(world)[k])) {
+          fail(el, "world transform overflows (non-finite)");
+        }
+      }
+      if (n.mesh >= 0) {
+        if (size_t(n.mesh) >= m_.meshes.size()) {
+          fail(el + ".mesh", "index " + std::to_string(n.mesh) + " out of range");
+        }
+        instanced_triangles_ += mesh_triangles_[size_t(n.mesh)];
+        if (instanced_triangles_ > lim_.max_instanced_triangles) {
+          fail(el, "the instanced meshes exceed the budget of " +
+                       std::to_string(lim_.max_instanced_triangles) +
+                       " triangles (GltfLimits::max_instanced_triangles)");
+        }
+        if (!mesh_map_[size_t(n.mesh)].empty()) {
+          Object o;
+          o.name = (opt_.name_prefix.empty() ? fs::path(path_).stem().string() : opt_.name_prefix) +
+                   "/" + (n.name.empty() ? el : n.name);
+          o.transform = world;
+          o.meshes = mesh_map_[size_t(n.mesh)];
+          objects.push_back(std::move(o));
+        }
+      }
+      if (n.camera >= 0 && size_t(n.camera) < m_.cameras.size()) {
+        addCamera(m_.cameras[size_t(n.camera)], world);
+      }
+      on_path[size_t(ni)] = true;
+      stack.push_back({ni, world, 0});
+    };
+    enter(root, parent, from);
+    while (!stack.empty()) {
+      Frame& f = stack.back();
+      const tinygltf::Node& n = m_.nodes[size_t(f.node)];
+      if (f.next_child < n.children.size()) {
+        const int child = n.children[f.next_child];
+        const std::string ref =
+            idx("nodes", size_t(f.node)) + ".children[" + std::to_string(f.next_child) + "]";
+        ++f.next_child;
+        const glm::mat4 world = f.world;  // `f` may move when the stack grows
+        enter(child, world, ref);
+      } else {
+        on_path[size_t(f.node)] = false;
+        stack.pop_back();
+      }
+    }
+  }
+
+  void addCamera(const tinygltf::Camera& c, const glm::mat4& world) {
+    GltfCamera cam;
+    cam.name = c.name;
+    cam.world = world;
+    cam.perspective = c.type != "orthographic";
+    if (cam.perspective) {
+      if (c.perspective.yfov > 0.0) cam.yfov_rad = float(c.perspective.yfov);
+      if (c.perspective.znear > 0.0) cam.znear = float(c.perspective.znear);
+      cam.zfar = float(std::max(c.perspective.zfar, 0.0));
     } else {
-      glm::mat4 t(1.0f), r(1.0f), s(1.0f);
-      if (n.translation.size() == 3) {
-        t = glm::translate(glm::mat4(1.0f),
-                           glm::vec3(n.translation[0], n.translation[1], n.translation[2]));
-      }
-      if (n.rotation.size() == 4) {
-        r = glm::mat4_cast(glm::normalize(glm::quat(float(n.rotation[3]), float(n.rotation[0]),
-                                                    float(n.rotation[1]), float(n.rotation[2]))));
-      }
-      if (n.scale.size() == 3)
-        s = glm::scale(glm::mat4(1.0f), glm::vec3(n.scale[0], n.scale[1], n.scale[2]));
-      local = t * r * s;
+      cam.znear = float(std::max(c.orthographic.znear, 1e-4));
+      cam.zfar = float(std::max(c.orthographic.zfar, 0.0));
     }
-    const glm::mat4 world = parent * local;
-    if (n.mesh >= 0) {
-      if (n.mesh >= int(m_.meshes.size())) fail(el, "mesh index out of range");
-      if (!mesh_map_[size_t(n.mesh)].empty()) {
-        Object o;
-        o.name = (opt_.name_prefix.empty() ? fs::path(path_).stem().string() : opt_.name_prefix) +
-                 "/" + (n.name.empty() ? el : n.name);
-        o.transform = world;
-        o.meshes = mesh_map_[size_t(n.mesh)];
-        objects.push_back(std::move(o));
-      }
-    }
-    for (int c : n.children) visit(c, world, on_path, el + ".children");
-    on_path[size_t(ni)] = false;
+    cameras.push_back(cam);
   }
 
   std::string path_;
-  const tinygltf::Model& m_;
+  tinygltf::Model& m_;  // images are moved out of it
   const GltfOptions& opt_;
+  const GltfLimits& lim_;
   int image_base_ = 0, material_base_ = 0, mesh_base_ = 0;
+  uint64_t total_vertices_ = 0, total_triangles_ = 0;
+  uint64_t node_instances_ = 0, instanced_triangles_ = 0;
+  std::vector<uint64_t> mesh_triangles_;  // per glTF mesh, all imported primitives
   int default_material_ = -1;
   bool warned_specgloss_ = false;
   std::vector<std::vector<int>> mesh_map_;
@@ -606,31 +1040,89 @@ class Importer {
 
 }  // namespace
 
-void loadGltf(const std::string& path, const glm::mat4& transform, Scene& scene,
-              const GltfOptions& options) {
-  if (!fs::is_regular_file(path)) throw SceneError(path + ": file not found");
+void loadGltfFromMemory(const uint8_t* bytes, size_t size, bool binary, const std::string& name,
+                        const glm::mat4& transform, Scene& scene, const GltfOptions& options) {
+  const GltfLimits& lim = options.limits;
+  if (size > lim.max_file_bytes || size > std::numeric_limits<unsigned int>::max()) {
+    throw SceneError(name + ": " + std::to_string(size) + " bytes exceed the limit of " +
+                     std::to_string(lim.max_file_bytes) + " (GltfLimits::max_file_bytes)");
+  }
+  const uint8_t* json = bytes;
+  size_t json_size = size;
+  if (binary) {
+    const GlbChunks c = checkGlb(name, bytes, size);
+    json = c.json, json_size = c.json_size;
+  }
+  checkJsonDepth(name, json, json_size, lim.max_json_depth);
+  checkImageViews(name, json, json_size);
+
   tinygltf::TinyGLTF loader;
+  LoadContext ctx;
+  ctx.limits = &lim;
+  ctx.decode_images = options.material_override < 0;
+  loader.SetFsCallbacks({&fileExists, &expandNothing, &readWholeFile, &writeNothing, &ctx});
+  loader.SetImageLoader(&decodeImage, &ctx);
   tinygltf::Model model;
   std::string err, warn;
-  const std::string ext = fs::path(path).extension().string();
-  bool ok;
-  if (ext == ".glb" || ext == ".GLB") {
-    ok = loader.LoadBinaryFromFile(&model, &err, &warn, path);
-  } else {
-    ok = loader.LoadASCIIFromFile(&model, &err, &warn, path);
+  const std::string base_dir = fs::path(name).parent_path().string();
+  bool ok = false;
+  try {
+    if (binary) {
+      ok = loader.LoadBinaryFromMemory(&model, &err, &warn, bytes, unsigned(size), base_dir);
+    } else {
+      ok = loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes),
+                                      unsigned(size), base_dir);
+    }
+  } catch (const std::bad_alloc&) {
+    throw SceneError(name + ": cannot load glTF: out of memory");
+  } catch (const std::out_of_range& e) {  // tinygltf 2.7 indexes by .at() on some bad sizes
+    err = std::string("a size or index out of range (") + e.what() +
+          "), e.g. a buffer of byteLength 0";
+    ok = false;
+  } catch (const std::exception& e) {
+    err = e.what();
+    ok = false;
   }
   if (!ok || !err.empty()) {
     while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
-    throw SceneError(path +
+    throw SceneError(name +
                      ": cannot load glTF: " + (err.empty() ? std::string("unknown error") : err));
   }
-  Importer imp(path, model, scene, options);
-  imp.run(transform);
+  Importer imp(name, model, scene, options);
+  try {
+    imp.run(transform);
+  } catch (const std::bad_alloc&) {
+    throw SceneError(name + ": out of memory while importing");
+  }
   // Success: append everything at once (indices were computed against the final offsets).
   for (auto& x : imp.images) scene.images.push_back(std::move(x));
   for (auto& x : imp.materials) scene.materials.push_back(std::move(x));
   for (auto& x : imp.meshes) scene.meshes.push_back(std::move(x));
   for (auto& x : imp.objects) scene.objects.push_back(std::move(x));
+  if (options.cameras) {
+    for (auto& c : imp.cameras) options.cameras->push_back(std::move(c));
+  }
+}
+
+void loadGltf(const std::string& path, const glm::mat4& transform, Scene& scene,
+              const GltfOptions& options) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) throw SceneError(path + ": file not found");
+  const uint64_t size = fs::file_size(path, ec);
+  if (ec) throw SceneError(path + ": cannot read: " + ec.message());
+  if (size > options.limits.max_file_bytes) {
+    throw SceneError(path + ": " + std::to_string(size) + " bytes exceed the limit of " +
+                     std::to_string(options.limits.max_file_bytes) +
+                     " (GltfLimits::max_file_bytes)");
+  }
+  std::vector<uint8_t> bytes(static_cast<size_t>(size));
+  std::ifstream f(path, std::ios::binary);
+  if (!f.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size))) {
+    throw SceneError(path + ": cannot read");
+  }
+  // A GLB is recognised by its magic, whatever the extension.
+  const bool binary = size >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  loadGltfFromMemory(bytes.data(), bytes.size(), binary, path, transform, scene, options);
 }
 
 }  // namespace hv

@@ -1,6 +1,7 @@
 #include "halfvec/scene/scene_loader.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -88,10 +89,18 @@ struct Range {
     return std::isfinite(x) && (lo_open ? x > lo : x >= lo) && x <= hi;
   }
 };
-constexpr Range kAny{};
-constexpr Range kUnit{0.0, 1.0};
-constexpr Range kNonNeg{0.0, kInf};
-constexpr Range kPositive{0.0, kInf, true};
+// Every number is stored as a float, so every range is finite and a positive range starts at a
+// float-representable minimum: 1e308 or 1e-300 can never become +inf or 0 after validation.
+// Coordinates and sizes are metres: within +-1e6 (1000 km) a float keeps ~6 cm; lengths from
+// 1e-6 (a micrometre) up. Colors, intensities and exposure get six decades either way. The
+// ranges are documented per field in docs/scene-format.md.
+constexpr double kBig = 1e6;
+constexpr Range kAny{-kBig, kBig};            // coordinates, angles in degrees
+constexpr Range kUnit{0.0, 1.0};              // albedo, metallic, roughness, ...
+constexpr Range kNonNeg{0.0, kBig};           // colors, intensities, lengths that may be 0
+constexpr Range kPositive{1.0 / kBig, kBig};  // sizes, distances, exposure: > 0 and stays so
+constexpr Range kFieldOfView{0.01, 179.9};    // degrees
+constexpr Range kFar{1.0 / kBig, 1e9};        // metres
 
 struct Ctx {
   std::string file;  // for messages
@@ -138,11 +147,19 @@ class Obj {
     if (!has(key)) return def;
     return numberAt(ctx_, (*this)[key], at(key), r);
   }
-  float num(const char* key, float def, Range r = kAny) const { return float(number(key, def, r)); }
+  float num(const char* key, float def, Range r = kAny) const {
+    if (!has(key)) return def;
+    return floatAt(ctx_, (*this)[key], at(key), r);
+  }
   int integer(const char* key, int def, int lo, int hi) const {
     if (!has(key)) return def;
     const json& v = (*this)[key];
-    if (!v.is_number_integer() || v.get<int64_t>() < lo || v.get<int64_t>() > hi) {
+    // An unsigned value beyond int64 would wrap in get<int64_t>(): compare it as unsigned.
+    const bool ok =
+        v.is_number_unsigned()
+            ? v.get<uint64_t>() <= uint64_t(std::max(hi, 0)) && int64_t(v.get<uint64_t>()) >= lo
+            : v.is_number_integer() && v.get<int64_t>() >= lo && v.get<int64_t>() <= hi;
+    if (!ok) {
       fail(key, "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
                     "], got " + shortDump(v));
     }
@@ -176,6 +193,13 @@ class Obj {
     }
     return v.get<double>();
   }
+  // numberAt, as the float it is stored in: still finite and inside the range after conversion.
+  static float floatAt(const Ctx& ctx, const json& v, const std::string& ptr, Range r) {
+    const double d = numberAt(ctx, v, ptr, r);
+    const float f = float(d);  // |d| <= kBig: representable
+    if (!r.contains(double(f))) ctx.fail(ptr, "expected " + r.describe() + ", got " + shortDump(v));
+    return f;
+  }
   static glm::vec3 vec3At(const Ctx& ctx, const json& v, const std::string& ptr, Range r) {
     const std::string what = r.lo == -kInf && r.hi == kInf
                                  ? "an array of 3 numbers"
@@ -183,10 +207,11 @@ class Obj {
     if (!v.is_array() || v.size() != 3) ctx.fail(ptr, "expected " + what + ", got " + shortDump(v));
     glm::vec3 out;
     for (int i = 0; i < 3; ++i) {
-      if (!v[size_t(i)].is_number() || !r.contains(v[size_t(i)].get<double>())) {
+      if (!v[size_t(i)].is_number() || !r.contains(v[size_t(i)].get<double>()) ||
+          !r.contains(double(float(v[size_t(i)].get<double>())))) {
         ctx.fail(ptr, "expected " + what + ", got " + shortDump(v));
       }
-      out[i] = v[size_t(i)].get<float>();
+      out[i] = float(v[size_t(i)].get<double>());
     }
     return out;
   }
@@ -210,7 +235,7 @@ glm::vec2 rangeAt(const Obj& o, const char* key, glm::vec2 def, Range r) {
   if (!o.has(key)) return def;
   const json& v = o[key];
   if (v.is_number()) {
-    const float x = float(Obj::numberAt(o.ctx(), v, o.at(key), r));
+    const float x = Obj::floatAt(o.ctx(), v, o.at(key), r);
     return {x, x};
   }
   if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number() ||
@@ -219,7 +244,8 @@ glm::vec2 rangeAt(const Obj& o, const char* key, glm::vec2 def, Range r) {
     o.fail(key, "expected [min, max] with min <= max, each " + r.describe().substr(9) +
                     ", or a single number, got " + shortDump(v));
   }
-  return {v[0].get<float>(), v[1].get<float>()};
+  return {Obj::floatAt(o.ctx(), v[0], o.at(key) + "/0", r),
+          Obj::floatAt(o.ctx(), v[1], o.at(key) + "/1", r)};
 }
 
 Camera parseCamera(const Ctx& ctx, const json& j) {
@@ -228,10 +254,9 @@ Camera parseCamera(const Ctx& ctx, const json& j) {
   c.position = o.vec3("position", c.position);
   c.target = o.vec3("target", c.target);
   c.up = o.vec3("up", c.up);
-  c.fov_y_deg = o.num("fov_y_deg", c.fov_y_deg, {0.0, 180.0, true});
-  if (c.fov_y_deg >= 180.0f) o.fail("fov_y_deg", "expected a number in (0, 180), got 180");
+  c.fov_y_deg = o.num("fov_y_deg", c.fov_y_deg, kFieldOfView);
   c.near_plane = o.num("near", c.near_plane, kPositive);
-  c.far_plane = o.num("far", c.far_plane, kPositive);
+  c.far_plane = o.num("far", c.far_plane, kFar);
   if (c.far_plane <= c.near_plane) {
     o.fail("far", "expected far > near (" + fmt(c.near_plane) + "), got " + fmt(c.far_plane));
   }
@@ -249,6 +274,7 @@ Material parseMaterial(const Ctx& ctx, const json& j, const std::string& ptr, bo
   if (allow_name) keys.push_back("name");
   Obj o(ctx, j, ptr, keys);
   Material m;
+  m.source = ptr;
   m.name = o.string("name", "");
   m.base_color = o.vec3("base_color", m.base_color, kUnit);
   m.metallic = o.num("metallic", m.metallic, kUnit);
@@ -280,11 +306,14 @@ glm::mat4 parseTransform(const Ctx& ctx, const json& j, const std::string& ptr) 
   }
   if (o.has("quaternion")) {
     const json& v = o["quaternion"];
-    if (!v.is_array() || v.size() != 4 ||
-        !std::all_of(v.begin(), v.end(), [](const json& x) { return x.is_number(); })) {
-      o.fail("quaternion", "expected [x, y, z, w], got " + shortDump(v));
+    if (!v.is_array() || v.size() != 4 || !std::all_of(v.begin(), v.end(), [](const json& x) {
+          return x.is_number() && kAny.contains(x.get<double>());
+        })) {
+      o.fail("quaternion",
+             "expected [x, y, z, w], each " + kAny.describe().substr(9) + ", got " + shortDump(v));
     }
-    q = glm::quat(v[3].get<float>(), v[0].get<float>(), v[1].get<float>(), v[2].get<float>());
+    q = glm::quat(float(v[3].get<double>()), float(v[0].get<double>()), float(v[1].get<double>()),
+                  float(v[2].get<double>()));
     if (glm::length(q) < 1e-6f) o.fail("quaternion", "expected a non-zero quaternion");
     q = glm::normalize(q);
   }
@@ -354,7 +383,12 @@ void expandGenerator(const Ctx& ctx, const json& j, const std::string& ptr,
   Obj o(ctx, j, ptr,
         {"count", "seed", "types", "volume", "intensity", "radius", "length", "range", "color_mode",
          "color", "saturation"});
-  const int count = o.integer("count", 64, 1, 1 << 20);
+  const int count = o.integer("count", 64, 1, int(kMaxSceneLights));
+  if (out.size() + size_t(count) > kMaxSceneLights) {
+    o.fail("count", std::to_string(count) + " more lights after " + std::to_string(out.size()) +
+                        " exceed the scene's budget of " + std::to_string(kMaxSceneLights) +
+                        " lights (kMaxSceneLights)");
+  }
   const int seed = o.integer("seed", 1, 0, std::numeric_limits<int>::max());
   float weights[3] = {1.0f, 1.0f, 1.0f};
   if (o.has("types")) {
@@ -421,9 +455,11 @@ void expandGenerator(const Ctx& ctx, const json& j, const std::string& ptr,
   }
 }
 
-Environment parseEnvironment(const Ctx& ctx, const json& j) {
-  Obj o(ctx, j, "/environment",
-        {"type", "path", "color", "intensity", "rotation_deg", "cube_size", "prefilter_samples"});
+Environment parseEnvironment(const Ctx& ctx, const json& j,
+                             const std::string& ptr = "/environment") {
+  Obj o(ctx, j, ptr,
+        {"type", "path", "color", "intensity", "rotation_deg", "cube_size", "prefilter_samples",
+         "fallback"});
   Environment e;
   e.kind = o.enumeration<EnvironmentKind>("type", e.kind);
   if (o.has("path") && e.kind != EnvironmentKind::HdrFile)
@@ -434,7 +470,14 @@ Environment parseEnvironment(const Ctx& ctx, const json& j) {
   if (e.kind == EnvironmentKind::HdrFile) {
     if (!o.has("path")) o.fail("path", "missing; type \"hdr\" needs the path of an .hdr file");
     e.path = ctx.resolve(o.at("path"), o.string("path", ""));
+    if (!fs::is_regular_file(e.path) && o.has("fallback")) {  // as a glTF object's fallback
+      sceneWarning(ctx.file + ": " + o.at("path") + ": file not found: " + e.path +
+                       "; using the fallback environment",
+                   ctx.warnings);
+      return parseEnvironment(ctx, o["fallback"], o.at("fallback"));
+    }
     if (!fs::is_regular_file(e.path)) o.fail("path", "file not found: " + e.path);
+    if (o.has("fallback")) parseEnvironment(ctx, o["fallback"], o.at("fallback"));  // validated
   }
   e.color = o.vec3("color", e.color, kNonNeg);
   e.intensity = o.num("intensity", e.intensity, kNonNeg);
@@ -605,11 +648,26 @@ class SceneBuilder {
     obj.transform = o.has("transform") ? parseTransform(ctx_, o["transform"], o.at("transform"))
                                        : inherited.value_or(glm::mat4(1.0f));
     Mesh mesh;
+    // Tessellation budget, checked before the mesh is built (vertex counts of primitives.cpp).
+    auto budget = [&](int segments, int rings, size_t vertices) {
+      primitive_vertices_ += vertices;
+      if (primitive_vertices_ > kMaxPrimitiveVertices) {
+        o.fail("segments", std::to_string(segments) + " segments x " + std::to_string(rings) +
+                               " rings (" + std::to_string(vertices) +
+                               " vertices) exceed the scene's budget of " +
+                               std::to_string(kMaxPrimitiveVertices) +
+                               " primitive vertices (kMaxPrimitiveVertices)");
+      }
+    };
     switch (*kind) {
-      case PrimKind::Sphere:
-        mesh = makeSphere(o.num("radius", 0.5f, kPositive), o.integer("segments", 64, 3, 4096),
-                          o.integer("rings", 32, 2, 4096));
+      case PrimKind::Sphere: {
+        const float radius = o.num("radius", 0.5f, kPositive);
+        const int segments = o.integer("segments", 64, 3, 4096),
+                  rings = o.integer("rings", 32, 2, 4096);
+        budget(segments, rings, size_t(segments + 1) * size_t(rings + 1));
+        mesh = makeSphere(radius, segments, rings);
         break;
+      }
       case PrimKind::Plane: {
         glm::vec2 size(10.0f);
         if (o.has("size")) {
@@ -617,11 +675,12 @@ class SceneBuilder {
           if (v.is_number()) {
             size = glm::vec2(o.num("size", 10.0f, kPositive));
           } else if (v.is_array() && v.size() == 2 && v[0].is_number() && v[1].is_number() &&
-                     v[0].get<double>() > 0 && v[1].get<double>() > 0) {
-            size = glm::vec2(v[0].get<float>(), v[1].get<float>());
+                     kPositive.contains(v[0].get<double>()) &&
+                     kPositive.contains(v[1].get<double>())) {
+            size = glm::vec2(float(v[0].get<double>()), float(v[1].get<double>()));
           } else {
-            o.fail("size",
-                   "expected [size_x, size_z] (each > 0) or a number > 0, got " + shortDump(v));
+            o.fail("size", "expected [size_x, size_z], each " + kPositive.describe().substr(9) +
+                               ", or such a number, got " + shortDump(v));
           }
         }
         mesh = makePlane(size.x, size.y);
@@ -630,10 +689,15 @@ class SceneBuilder {
       case PrimKind::Box:
         mesh = makeBox(o.vec3("half_extents", glm::vec3(0.5f), kPositive));
         break;
-      case PrimKind::Capsule:
-        mesh = makeCapsule(o.num("radius", 0.25f, kPositive), o.num("half_length", 0.5f, kNonNeg),
-                           o.integer("segments", 48, 3, 4096), o.integer("rings", 24, 2, 4096));
+      case PrimKind::Capsule: {
+        const float radius = o.num("radius", 0.25f, kPositive);
+        const float half_length = o.num("half_length", 0.5f, kNonNeg);
+        const int segments = o.integer("segments", 48, 3, 4096),
+                  rings = o.integer("rings", 24, 2, 4096);
+        budget(segments, rings, size_t(segments + 1) * size_t(2 * ((rings + 1) / 2 + 1)));
+        mesh = makeCapsule(radius, half_length, segments, rings);
         break;
+      }
     }
     mesh.material = o.has("material") ? materialRef(o["material"], o.at("material"), obj.name)
                                       : defaultMaterial();
@@ -651,12 +715,23 @@ class SceneBuilder {
                                     : glm::mat4(1.0f);
     const std::string file = o.string("gltf", "");
     if (file.empty()) o.fail("gltf", "expected the path of a .gltf or .glb file");
-    const std::string path = ctx_.resolve(o.at("gltf"), file);
-    if (!fs::is_regular_file(path)) {
-      if (!o.has("fallback")) o.fail("gltf", "file not found: " + path);
-      sceneWarning(ctx_.file + ": " + o.at("gltf") + ": file not found: " + path +
-                       "; using the fallback object",
-                   ctx_.warnings);
+    // A model that cannot be found (a missing file, or a ${VAR} in its path that is not set) is
+    // replaced by the fallback object when there is one.
+    std::string path, missing;
+    try {
+      path = ctx_.resolve(o.at("gltf"), file);
+      if (!fs::is_regular_file(path)) missing = "file not found: " + path;
+    } catch (const SceneError& e) {
+      if (!o.has("fallback")) throw;
+      missing = e.what();
+    }
+    if (!missing.empty()) {
+      if (!o.has("fallback")) o.fail("gltf", missing);
+      sceneWarning(
+          (missing.rfind(ctx_.file, 0) == 0 ? missing
+                                            : ctx_.file + ": " + o.at("gltf") + ": " + missing) +
+              "; using the fallback object",
+          ctx_.warnings);
       const json& fb = o["fallback"];
       if (!fb.is_object() || !fb.contains("primitive")) {
         o.fail("fallback", "expected an object with a \"primitive\"");
@@ -692,9 +767,27 @@ class SceneBuilder {
   std::vector<std::string> material_names_;  // parallel to scene_.materials; "" = unnamed
   int default_material_ = -1;
   int object_count_ = 0;
+  size_t primitive_vertices_ = 0;
 };
 
+// nlohmann's message without its "[json.exception.parse_error.101] " prefix.
+std::string jsonErrorText(const json::exception& e) {
+  std::string m = e.what();
+  if (m.rfind("[json.exception.", 0) == 0) {
+    const size_t end = m.find("] ");
+    if (end != std::string::npos) m = m.substr(end + 2);
+  }
+  return m;
+}
+
 std::string readFile(const std::string& path) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) throw SceneError(path + ": cannot open file");
+  const uintmax_t size = fs::file_size(path, ec);
+  if (!ec && size > kMaxSceneFileBytes) {
+    throw SceneError(path + ": " + std::to_string(size) + " bytes exceed the limit of " +
+                     std::to_string(kMaxSceneFileBytes) + " for a scene file (kMaxSceneFileBytes)");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(path + ": cannot open file");
   std::ostringstream s;
@@ -715,8 +808,6 @@ std::string expandEnvVars(const std::string& text) {
       const char* value = std::getenv(var.c_str());
       if (value && *value) {
         out += value;
-      } else if (var == "HV_ASSETS_DIR") {
-        out += (fs::path(HV_SOURCE_DIR) / ".." / "shared" / "assets").lexically_normal().string();
       } else {
         throw SceneError("environment variable " + var + " (used in \"" + text + "\") is not set");
       }
@@ -755,7 +846,10 @@ void applyOverride(json& j, const std::string& text, const std::string& source_n
       size_t idx = 0;
       const bool numeric = std::all_of(part.begin(), part.end(), ::isdigit);
       if (!numeric) fail("\"" + part + "\" is not an array index");
-      idx = std::stoul(part);
+      // Parsed strictly: digits only, no overflow (an index past the list is an error below).
+      const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), idx);
+      if (ec != std::errc() || end != part.data() + part.size())
+        idx = std::numeric_limits<size_t>::max();
       if (idx > cur->size() || (idx == cur->size() && !last)) {
         fail("index " + part + " out of range (size " + std::to_string(cur->size()) + ")");
       }
@@ -802,6 +896,10 @@ Scene parseScene(const json& j, const std::string& source_name,
   }
   if (top.has("lights")) {
     const json& ls = list("lights");
+    if (ls.size() > kMaxSceneLights) {
+      top.fail("lights", std::to_string(ls.size()) + " lights exceed the budget of " +
+                             std::to_string(kMaxSceneLights) + " (kMaxSceneLights)");
+    }
     for (size_t i = 0; i < ls.size(); ++i) {
       scene.lights.push_back(parseLight(ctx, ls[i], "/lights/" + std::to_string(i)));
     }
@@ -817,17 +915,54 @@ Scene parseScene(const json& j, const std::string& source_name,
   return scene;
 }
 
-Scene loadScene(const std::string& path, const std::vector<std::string>& overrides,
-                std::vector<std::string>* warnings) {
-  const std::string text = readFile(path);
+Scene loadSceneFromString(std::string_view text, const std::string& source_name,
+                          const std::vector<std::string>& overrides,
+                          std::vector<std::string>* warnings) {
+  // nlohmann's lexer ends the input at a NUL byte: whatever follows would be ignored silently.
+  if (const size_t nul = text.find('\0'); nul != std::string_view::npos) {
+    throw SceneError(source_name + ": invalid JSON: NUL byte at offset " + std::to_string(nul) +
+                     " (not a text file?)");
+  }
   json j;
   try {
     j = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw SceneError(path + ": invalid JSON: " + e.what());
+  } catch (const json::parse_error& e) {  // its message gives line and column
+    throw SceneError(source_name + ": invalid JSON: " + jsonErrorText(e));
+  } catch (const json::exception& e) {
+    // out_of_range 406, a number beyond double range (1e400): nlohmann gives the token but no
+    // position; the token's first occurrence in the text gives it.
+    std::string where;
+    const std::string m = e.what();
+    const size_t q0 = m.find('\''), q1 = m.rfind('\'');
+    if (q0 != std::string::npos && q1 > q0 + 1) {
+      const size_t at = text.find(m.substr(q0 + 1, q1 - q0 - 1));
+      if (at != std::string_view::npos) {
+        const size_t line_start = text.rfind('\n', at);
+        where =
+            " at line " +
+            std::to_string(1 + std::count(text.begin(), text.begin() + long(at), '\n')) +
+            ", column " +
+            std::to_string(at - (line_start == std::string_view::npos ? 0 : line_start + 1) + 1);
+      }
+    }
+    throw SceneError(source_name + ": invalid JSON" + where + ": " + jsonErrorText(e) +
+                     " (numbers must fit a double)");
   }
-  for (const std::string& o : overrides) applyOverride(j, o, path);
-  return parseScene(j, path, warnings);
+  for (const std::string& o : overrides) applyOverride(j, o, source_name);
+  return parseScene(j, source_name, warnings);
+}
+
+Scene loadScene(const std::string& path, const std::vector<std::string>& overrides,
+                std::vector<std::string>* warnings) {
+  try {
+    return loadSceneFromString(readFile(path), path, overrides, warnings);
+  } catch (const SceneError&) {
+    throw;
+  } catch (const std::bad_alloc&) {
+    throw SceneError(path + ": out of memory while building the scene");
+  } catch (const std::exception& e) {  // a check missing in the loader (the fuzzer looks for these)
+    throw SceneError(path + ": " + e.what() + " (internal error: unchecked input)");
+  }
 }
 
 }  // namespace hv

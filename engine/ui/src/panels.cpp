@@ -5,13 +5,11 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <random>
 #include <stdexcept>
 
-#include <nlohmann/json.hpp>
-
 #include "halfvec/scene/enums.hpp"
+#include "halfvec/scene/scene_writer.hpp"
 
 namespace hv::ui {
 
@@ -36,19 +34,6 @@ bool sameLight(const Light& a, const Light& b) {
   return a.type == b.type && a.position == b.position && a.color == b.color &&
          a.intensity == b.intensity && a.radius == b.radius && a.length == b.length &&
          a.axis == b.axis && a.range == b.range;
-}
-
-nlohmann::ordered_json vec3Json(glm::vec3 v) {
-  return nlohmann::ordered_json::array({v.x, v.y, v.z});
-}
-
-void writeMaterialFields(nlohmann::ordered_json& j, const Material& m) {
-  j["base_color"] = vec3Json(m.base_color);
-  j["metallic"] = m.metallic;
-  j["roughness"] = m.roughness;
-  j["cavity"] = m.cavity;
-  j["emissive"] = vec3Json(m.emissive);
-  j["shading_model"] = std::string(toString(m.model));
 }
 
 }  // namespace
@@ -161,72 +146,19 @@ bool MaterialPanelModel::modified(int index) const {
 
 int MaterialPanelModel::saveMaterials(const std::string& path) const {
   if (!scene_) throw std::runtime_error("no scene");
-  nlohmann::ordered_json root;
-  {
-    std::ifstream in(path);
-    if (!in) throw std::runtime_error("cannot open " + path);
-    try {
-      root = nlohmann::ordered_json::parse(in);
-    } catch (const std::exception& e) {
-      throw std::runtime_error(path + ": " + e.what());
-    }
+  // Two scenes that differ only in their materials: the writer then edits only those.
+  Scene before, after;
+  before.materials = loaded_;
+  after.materials = scene_->materials;
+  before.materials.resize(std::min(before.materials.size(), after.materials.size()));
+  after.materials.resize(before.materials.size());
+  int changed = 0;
+  for (size_t i = 0; i < after.materials.size(); ++i) {
+    changed += !after.materials[i].source.empty() &&
+               !sameMaterial(before.materials[i], after.materials[i]);
   }
-  int written = 0;
-  std::vector<bool> done(scene_->materials.size(), false);
-  auto find = [&](const std::string& name) -> const Material* {
-    for (size_t i = 0; i < scene_->materials.size(); ++i) {
-      if (!done[i] && scene_->materials[i].name == name) {
-        done[i] = true;
-        return &scene_->materials[i];
-      }
-    }
-    return nullptr;
-  };
-  if (root.contains("materials")) {
-    auto& mats = root["materials"];
-    if (mats.is_object()) {
-      for (auto& [name, j] : mats.items()) {
-        if (const Material* m = find(name); m && j.is_object()) {
-          writeMaterialFields(j, *m);
-          ++written;
-        }
-      }
-    } else if (mats.is_array()) {
-      for (auto& j : mats) {
-        if (!j.is_object() || !j.contains("name") || !j["name"].is_string()) continue;
-        if (const Material* m = find(j["name"].get<std::string>())) {
-          writeMaterialFields(j, *m);
-          ++written;
-        }
-      }
-    }
-  }
-  // Inline materials carry their object's name (the loader's default "objectN" included).
-  if (root.contains("objects") && root["objects"].is_array()) {
-    auto& objs = root["objects"];
-    for (size_t i = 0; i < objs.size(); ++i) {
-      auto& o = objs[i];
-      if (!o.is_object() || !o.contains("material") || !o["material"].is_object()) continue;
-      const std::string name = o.contains("name") && o["name"].is_string()
-                                   ? o["name"].get<std::string>()
-                                   : "object" + std::to_string(i);
-      if (const Material* m = find(name)) {
-        writeMaterialFields(o["material"], *m);
-        ++written;
-      }
-    }
-  }
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp);
-    if (!out) throw std::runtime_error("cannot write " + tmp);
-    out << root.dump(2) << "\n";
-    if (!out) throw std::runtime_error("write failed: " + tmp);
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    throw std::runtime_error("cannot replace " + path);
-  }
-  return written;
+  saveSceneEdits(path, before, after);
+  return changed;
 }
 
 // ---------------------------------------------------------------------------------------------

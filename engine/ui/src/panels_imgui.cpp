@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <initializer_list>
 #include <string>
 
 #include "imgui.h"
@@ -12,16 +13,12 @@ namespace hv::ui {
 
 namespace {
 
-// Panel layout: two columns at the window edges, narrower on small windows so the middle of the
-// view stays visible. `column` 0 = left, 1 = right; `row` 0 = top half, 1 = bottom half.
-void placeNext(int column, int row) {
-  const ImVec2 d = ImGui::GetIO().DisplaySize;
-  const float w = std::min(340.0f, d.x * 0.28f);
-  const float h = std::max(60.0f, (d.y - 30.0f) * 0.5f);
-  const float x = column == 0 ? 10.0f : d.x - w - 10.0f;
-  const float y = 10.0f + float(row) * (h + 10.0f);
-  ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(w, h), ImGuiCond_FirstUseEver);
+// Widgets sized so that the widest of `labels` fits to their right: nothing is clipped at any
+// side bar width (the layout test checks it). Pops with ImGui::PopItemWidth().
+void pushLabelColumn(std::initializer_list<const char*> labels) {
+  float w = 0.0f;
+  for (const char* l : labels) w = std::max(w, ImGui::CalcTextSize(l, nullptr, true).x);
+  ImGui::PushItemWidth(-(w + ImGui::GetStyle().ItemInnerSpacing.x + 1.0f));
 }
 
 // Combo over a list of names; returns true when the user picked another entry.
@@ -47,19 +44,14 @@ bool nameCombo(const char* label, int* current, std::span<const std::string_view
 
 }  // namespace
 
-bool drawMaterialPanel(MaterialPanelModel& model, const std::string& scene_path,
-                       std::string* status) {
+bool drawMaterialContents(MaterialPanelModel& model, bool* save_requested) {
   bool changed = false;
-  placeNext(0, 0);
-  if (!ImGui::Begin("Material")) {
-    ImGui::End();
-    return false;
-  }
   if (model.count() == 0) {
     ImGui::TextUnformatted("no materials");
-    ImGui::End();
     return false;
   }
+  pushLabelColumn(
+      {"material", "base color", "metallic", "roughness", "cavity", "emissive", "shading model"});
   const Material& cur = model.current();
   std::string preview = cur.name.empty() ? "(unnamed)" : cur.name;
   if (ImGui::BeginCombo("material", preview.c_str())) {
@@ -90,20 +82,17 @@ bool drawMaterialPanel(MaterialPanelModel& model, const std::string& scene_path,
   if (nameCombo("shading model", &model_index, names)) {
     changed |= model.setShadingModel(ShadingModel(model_index + 1));
   }
+  ImGui::PopItemWidth();
   if (ImGui::Button("Reset")) changed |= model.reset();
   ImGui::SameLine();
   if (ImGui::Button("Reset all")) changed |= model.resetAll();
   ImGui::SameLine();
-  if (ImGui::Button("Save to scene file")) {
-    try {
-      const int n = model.saveMaterials(scene_path);
-      if (status) *status = "saved " + std::to_string(n) + " materials to " + scene_path;
-    } catch (const std::exception& e) {
-      if (status) *status = std::string("save failed: ") + e.what();
-    }
+  if (ImGui::Button("Save scene") && save_requested) *save_requested = true;
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "Write the edited materials, lights, environment and settings into the "
+        "scene file, changing only what changed");
   }
-  if (status && !status->empty()) ImGui::TextWrapped("%s", status->c_str());
-  ImGui::End();
   return changed;
 }
 
@@ -153,22 +142,21 @@ void drawLightTable(LightsPanelModel& model) {
 }
 }  // namespace
 
-bool drawLightsPanel(LightsPanelModel& model) {
+bool drawLightsContents(LightsPanelModel& model) {
   bool changed = false;
-  placeNext(0, 1);
-  if (!ImGui::Begin("Lights")) {
-    ImGui::End();
-    return false;
-  }
   ImGui::Text("%zu lights", model.count());
+  bool first = true;
   for (LightType t : {LightType::Point, LightType::Sphere, LightType::Tube}) {
     const std::string label = "+ " + std::string(toString(t));
-    ImGui::SameLine();
+    if (!first) ImGui::SameLine();
+    first = false;
     if (ImGui::SmallButton(label.c_str())) {
       model.add(t);
       changed = true;
     }
   }
+  pushLabelColumn({"type", "position", "color", "intensity", "range", "radius", "length", "axis",
+                   "count", "point", "sphere", "tube", "box min", "box max", "seed"});
   if (model.count() > 0) {
     drawLightTable(model);
     if (const Light* cur = model.current()) {
@@ -229,18 +217,23 @@ bool drawLightsPanel(LightsPanelModel& model) {
       changed = true;
     }
   }
-  ImGui::End();
+  ImGui::PopItemWidth();
   return changed;
 }
 
-bool drawRenderingPanel(RenderSettingsModel& model) {
+bool drawRenderingContents(RenderSettingsModel& model, render::ViewOptions* view_options) {
   bool changed = false;
-  placeNext(1, 0);
-  if (!ImGui::Begin("Rendering")) {
-    ImGui::End();
-    return false;
+  if (view_options) {
+    bool aa = view_options->aa == render::PostAA::Fxaa;
+    if (ImGui::Checkbox("anti-aliasing (FXAA)", &aa)) {
+      view_options->aa = aa ? render::PostAA::Fxaa : render::PostAA::None;
+    }
+    ImGui::Checkbox("show sphere and tube lights", &view_options->emitters);
   }
-  ImGui::PushItemWidth(ImGui::GetWindowWidth() * 0.5f);  // room for the long labels
+  float label_w = ImGui::CalcTextSize("rotation (deg)").x;
+  for (const auto& f : model.enumFields())
+    label_w = std::max(label_w, ImGui::CalcTextSize(f.label).x);
+  ImGui::PushItemWidth(-(label_w + ImGui::GetStyle().ItemInnerSpacing.x + 1.0f));
   const auto& enums = model.enumFields();
   for (size_t i = 0; i < enums.size(); ++i) {
     int v = enums[i].get(model.settings());
@@ -297,39 +290,33 @@ bool drawRenderingPanel(RenderSettingsModel& model) {
     changed = true;
   }
   ImGui::PopItemWidth();
-  ImGui::End();
   return changed;
 }
 
-void drawStatsPanel(const StatsModel& stats, size_t light_count, size_t lights_in_view,
-                    const std::string& gpu_name, const render::Manifest* manifest) {
-  placeNext(1, 1);
-  if (!ImGui::Begin("Stats")) {
-    ImGui::End();
-    return;
-  }
+void drawStatsContents(const StatsModel& stats, size_t light_count, size_t lights_in_view,
+                       const std::string& gpu_name, const render::Manifest* manifest) {
   const auto& last = stats.last();
   if (!gpu_name.empty()) ImGui::TextWrapped("%s", gpu_name.c_str());
   const double gbuffer_mib =
       double(last.width) * last.height * render::kGBufferBytesPerPixel / (1024.0 * 1024.0);
-  ImGui::Text("%dx%d  G-buffer %d B/px = %.2f MiB", last.width, last.height,
-              render::kGBufferBytesPerPixel, gbuffer_mib);
+  ImGui::TextWrapped("%dx%d, G-buffer %d B/px = %.2f MiB", last.width, last.height,
+                     render::kGBufferBytesPerPixel, gbuffer_mib);
   const size_t tiles = size_t((last.width + render::kTileSize - 1) / render::kTileSize) *
                        size_t((last.height + render::kTileHeight - 1) / render::kTileHeight);
   ImGui::Text("lights %zu, in view %zu", light_count, lights_in_view);
   if (tiles > 0 && last.tile_light_entries > 0) {
-    ImGui::Text("tile lists: %zu entries, %.1f lights/tile", last.tile_light_entries,
-                double(last.tile_light_entries) / double(tiles));
+    ImGui::TextWrapped("tile lists: %zu entries, %.1f lights/tile", last.tile_light_entries,
+                       double(last.tile_light_entries) / double(tiles));
   }
-  ImGui::Text("frame %.2f ms (%.0f fps)  GPU %.3f ms", stats.averageFrameMs(),
-              stats.averageFrameMs() > 0 ? 1000.0 / stats.averageFrameMs() : 0.0,
-              stats.averageGpuMs());
+  ImGui::TextWrapped("frame %.2f ms (%.1f fps), GPU %.3f ms", stats.averageFrameMs(),
+                     stats.averageFrameMs() > 0 ? 1000.0 / stats.averageFrameMs() : 0.0,
+                     stats.averageGpuMs());
   // Frame-time graph: explicit 0..1.25*max scale (auto-scaling with a flat history collapses the
   // range to nothing), label above the plot rather than an overlay.
   const auto& ft = stats.frameTimes();
   if (ft.size() >= 2) {
     const float top = *std::max_element(ft.begin(), ft.end());
-    ImGui::Text("frame ms, last %zu frames (max %.1f)", ft.size(), double(top));
+    ImGui::TextWrapped("frame ms, last %zu frames (max %.1f)", ft.size(), double(top));
     ImGui::PlotLines("##frame", ft.data(), int(ft.size()), 0, nullptr, 0.0f,
                      std::max(top * 1.25f, 1e-3f), ImVec2(ImGui::GetContentRegionAvail().x, 60));
   }
@@ -355,13 +342,15 @@ void drawStatsPanel(const StatsModel& stats, size_t light_count, size_t lights_i
                           p.from_binary_cache ? " (binary cache)" : "")) {
         if (!p.from_binary_cache)
           ImGui::Text("compile %.1f ms, link %.1f ms", p.compile_ms, p.link_ms);
-        for (const auto& r : p.reasons) ImGui::BulletText("%s", r.c_str());
+        for (const auto& r : p.reasons) {
+          ImGui::Bullet();
+          ImGui::TextWrapped("%s", r.c_str());
+        }
         ImGui::TreePop();
       }
       ImGui::PopID();
     }
   }
-  ImGui::End();
 }
 
 void drawErrorPanel(const std::string& title, const std::string& message) {

@@ -8,17 +8,16 @@
 #include "halfvec/image/image.hpp"
 #include "halfvec/reference/reference.hpp"
 #include "halfvec/render/renderer.hpp"
-#include "halfvec/scene/scene.hpp"
 
 namespace hv::eval {
 
-// Renders `scene` (already set on `renderer`) once per term with the term masks of
-// RenderSettings (HV_DIRECT_TERMS / HV_AMBIENT_TERMS: that one term, the others 0) and once with
-// every term masked; each AOV is its render minus the all-masked one, which removes the emissive
-// the G-buffer pass writes. Pixels that are not ShadingModel::DefaultLit are 0, as in the
-// reference's AOVs. The scene's masks are restored afterwards; the renderer's HDR target holds
-// the last (all-masked) frame.
-std::array<ImageRGBf, kReferenceAovCount> renderEngineAovs(render::Renderer& renderer, Scene& scene,
-                                                           int width, int height);
+// Renders the renderer's scene once per term through the Renderer's per-term debug views
+// (render::DebugView::DirectDiffuse ... AmbientSpecular, render::termView: that one term, no
+// emissive, black background; no emitter geometry whatever the renderer's ViewOptions) and
+// reads back each HDR image; pixels that are not
+// ShadingModel::DefaultLit are set to 0, as in the reference's AOVs. The next plain render()
+// renders the normal image again.
+std::array<ImageRGBf, kReferenceAovCount> renderEngineAovs(render::Renderer& renderer, int width,
+                                                           int height);
 
 }  // namespace hv::eval

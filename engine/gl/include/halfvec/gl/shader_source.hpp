@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -39,7 +40,21 @@ ExpandedSource expandShader(const std::filesystem::path& file, const DefineSet& 
 // location reads "path:line".
 std::string mapDiagnostics(const std::string& log, const std::vector<std::string>& files);
 
-// The shader folder: $HV_SHADER_DIR if set, else the source tree's shaders/.
+// Where the engine's shaders are read from (program paths are relative to it), first match:
+//  1. the folder in the environment variable HV_SHADER_DIR (the user's override);
+//  2. the folder given to setShaderDir (applications: e.g. an installed share/halfvec/shaders,
+//     for editing shaders and reloading them at run time);
+//  3. the copy of shaders/ compiled into the library at build time: embeddedShaderRoot(), a
+//     virtual folder no file system holds (so a program linking the library needs no files).
 std::filesystem::path shaderRoot();
+// Sets (or, with an empty path, clears) the shader folder of rule 2. Throws ShaderError naming
+// the folder when it does not hold passes/ and common/.
+void setShaderDir(const std::filesystem::path& dir);
+// The virtual folder of the embedded shaders; diagnostics name files under it
+// ("[embedded]/shaders/passes/light_shade.comp:12").
+const std::filesystem::path& embeddedShaderRoot();
+// The text of a shader file: from the embedded copy for paths under embeddedShaderRoot(), else
+// from disk. nullopt when there is no such file.
+std::optional<std::string> readShaderFile(const std::filesystem::path& path);
 
 }  // namespace hv::gl

@@ -69,11 +69,22 @@ glm::vec3 skySunDirection(const SkyParams& sky);
 glm::vec2 equirectUV(glm::vec3 dir);
 glm::vec3 equirectDirection(glm::vec2 uv);
 
-// Loads an equirectangular Radiance RGBE (.hdr) file. The header ("#?RADIANCE" or "#?RGBE",
-// FORMAT=32-bit_rle_rgbe, resolution "-Y H +X W", 2:1 aspect) and every scanline are checked
-// here before stb_image decodes it, so a missing, truncated or non-RGBE file gives an IblError
-// naming the file and the problem.
+// Largest Radiance image width accepted (height: half of it): 16384 x 8192 decodes to 1.5 GiB of
+// float RGB. Larger environments gain nothing at the engine's cube sizes (at most 4096 per face).
+constexpr int kMaxHdrWidth = 16384;
+
+// Loads an equirectangular Radiance RGBE (.hdr) file with the project's own decoder (header
+// "#?RADIANCE" or "#?RGBE", FORMAT=32-bit_rle_rgbe, resolution "-Y H +X W", 2:1 aspect, at most
+// kMaxHdrWidth wide). Scanlines are decoded as Radiance reads them: each one run-length encoded
+// or flat (with old-style repeat pixels), the encoding free to change from one scanline to the
+// next. The declared size is checked against the bytes that follow the header before anything is
+// allocated, and every run against the data and the scanline, so a missing, truncated, oversized
+// or corrupt file gives an IblError naming the file and the problem.
 ImageRGBf loadHdr(const std::string& path);
+// The same from the file's bytes (`path` names it in messages), at most `max_width` wide (fuzzers
+// lower it to keep each run small).
+ImageRGBf decodeHdr(const uint8_t* bytes, size_t size, const std::string& path,
+                    int max_width = kMaxHdrWidth);
 
 // Source of an Environment (loads the .hdr for HdrFile). Throws IblError for kind None.
 EnvSource makeEnvSource(const Environment& env, const SkyParams& sky = {});

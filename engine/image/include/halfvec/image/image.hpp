@@ -36,14 +36,26 @@ struct ImageRGBf {
 ImageRGBA8 makeImageRGBA8(int width, int height);  // zero-filled
 ImageRGBf makeImageRGBf(int width, int height, glm::vec3 fill = glm::vec3(0.0f));
 
+// Largest width and height the readers accept (the renderer's largest --size). Declared
+// dimensions are checked against it and against the file's size before pixels are allocated, so
+// no file makes a reader allocate more than about three times its size, and at most 1 GiB (PNG,
+// 8-bit RGBA) or 3 GiB (PFM, float RGB, which must be present in the file).
+constexpr int kMaxImageSide = 16384;
+
 // PNG through libstb (stb_image_write / stb_image). readPng always returns 4 channels.
 void writePng(const std::string& path, const ImageRGBA8& img);
 ImageRGBA8 readPng(const std::string& path);
+// The same from the file's bytes (`path` names it in messages), at most `max_side` pixels wide
+// and high (fuzzers lower it to keep each run small).
+ImageRGBA8 decodePng(const uint8_t* bytes, size_t size, const std::string& path,
+                     int max_side = kMaxImageSide);
 
 // Portable float map, color ("PF") only on write; reads "PF" and grayscale "Pf" (expanded to
 // RGB), either byte order (negative scale = little-endian). Bit-exact round trip.
 void writePfm(const std::string& path, const ImageRGBf& img);
 ImageRGBf readPfm(const std::string& path);
+ImageRGBf decodePfm(const uint8_t* bytes, size_t size, const std::string& path,
+                    int max_side = kMaxImageSide);
 
 // Linear float -> 8-bit sRGB-encoded (IEC 61966-2-1 curve), after multiplying by exposure and
 // clamping to [0, 1]; alpha = 255. NaN maps to magenta so it is visible.

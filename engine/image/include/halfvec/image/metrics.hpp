@@ -2,6 +2,9 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "halfvec/image/image.hpp"
 
@@ -38,6 +41,17 @@ struct ErrorMetrics {
 
 // Throws ImageError when the sizes differ.
 ErrorMetrics compareImages(const ImageRGBf& test, const ImageRGBf& ref);
+
+// Regression-test tolerances (`halfvec compare --max-rel-rmse/--max-p99/--max-abs`, Filament
+// renderdiff's habit): each given one must hold. A test image with more NaN/Inf pixels than the
+// reference is outside any tolerance.
+struct Tolerances {
+  std::optional<double> max_rel_rmse, max_p99_rel, max_abs;
+  bool any() const { return max_rel_rmse || max_p99_rel || max_abs; }
+};
+
+// One line per tolerance that `m` exceeds ("rel_rmse 0.031 > 0.02"); empty when within all.
+std::vector<std::string> toleranceViolations(const ErrorMetrics& m, const Tolerances& t);
 
 // The per-pixel relative error e defined above (NaN if either pixel is not finite).
 double relativeError(glm::vec3 test, glm::vec3 ref);

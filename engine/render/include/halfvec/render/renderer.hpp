@@ -14,6 +14,7 @@
 #include "halfvec/render/frame_data.hpp"
 #include "halfvec/render/gpu_scene.hpp"
 #include "halfvec/render/variant_key.hpp"
+#include "halfvec/render/view_options.hpp"
 #include "halfvec/scene/scene.hpp"
 #include "halfvec/shading/gbuffer_data.hpp"
 
@@ -131,7 +132,13 @@ class Renderer {
   FrameStats render(int width, int height, DebugView view = DebugView::None,
                     std::optional<GLuint> present_fbo = std::nullopt);
 
+  // Output options beyond the scene (halfvec/render/view_options.hpp): post-AA, emitter geometry,
+  // the highlighted object. All off by default.
+  void setViewOptions(const ViewOptions& options) { view_options_ = options; }
+  const ViewOptions& viewOptions() const { return view_options_; }
+
   ImageRGBf readHdr() const;
+  // The 8-bit output of the last frame, after the highlight and post-AA when they ran.
   ImageRGBA8 readLdr() const;
   GBufferReadback readGBuffer() const;
 
@@ -195,6 +202,17 @@ class Renderer {
   gl::Sampler nearest_;
   size_t tile_entries_ = 0;  // entries the last culling pass produced (read at frame end)
   DebugOptions debug_;
+
+  // Optional stages (post_passes.cpp): emitter geometry, highlight, post-AA.
+  ViewOptions view_options_;
+  struct PostStages;
+  std::unique_ptr<PostStages> post_;
+  PostStages& postStages();
+  size_t lights_version_ = 0;  // bumped by setScene and updateLights (emitter instances follow)
+  GLuint final_ldr_ = 0;       // the texture readLdr reads: the tone-mapped or anti-aliased image
+  void emitterPass(DebugView view);
+  bool postPassesActive(DebugView view) const;
+  void postPasses(DebugView view, std::optional<GLuint> present_fbo, int width, int height);
 };
 
 }  // namespace hv::render

@@ -37,7 +37,7 @@ HV_ENUM_NAMES(DiffuseTerm, "lambert", "burley");
 HV_ENUM_NAMES(SphereDiffuse, "karis_point", "horizon_correct");
 HV_ENUM_NAMES(TubeSpecular, "closest_point_eq19", "smallest_angle_eq18");
 HV_ENUM_NAMES(Culling, "tiled", "brute_force");
-HV_ENUM_NAMES(ToneMap, "reinhard", "reinhard_luminance", "none");
+HV_ENUM_NAMES(ToneMap, "reinhard", "reinhard_luminance", "none", "pbr_neutral", "aces");
 HV_ENUM_NAMES(Gamma, "gamma22", "srgb");
 HV_ENUM_NAMES(EnvBrdf, "table", "analytic");
 HV_ENUM_NAMES(Irradiance, "sh9", "cubemap");

@@ -56,6 +56,10 @@ enum class AlphaMode : uint8_t { Opaque, Mask, Blend };
 
 struct Material {
   std::string name;
+  // Where the material is defined in its scene file, as the loader's JSON pointer
+  // (/materials/gold, /objects/3/material); empty for glTF and default materials. Scene save
+  // (scene_writer.hpp) writes edits there.
+  std::string source;
   glm::vec3 base_color{0.8f};  // linear
   float metallic = 0.0f;
   float roughness = 0.5f;    // perceptual; alpha = roughness^2 (Karis 2013)
@@ -137,7 +141,8 @@ enum class DiffuseTerm : uint8_t { Lambert, Burley };
 enum class SphereDiffuse : uint8_t { KarisPoint, HorizonCorrect };
 enum class TubeSpecular : uint8_t { ClosestPointEq19, SmallestAngleEq18 };
 enum class Culling : uint8_t { Tiled, BruteForce };
-enum class ToneMap : uint8_t { Reinhard, ReinhardLuminance, None };
+// HV_TONEMAP in shaders/common/tonemap.glsl (same values).
+enum class ToneMap : uint8_t { Reinhard, ReinhardLuminance, None, PbrNeutral, Aces };
 enum class Gamma : uint8_t { Gamma22, SRGB };
 enum class EnvBrdf : uint8_t { Table, Analytic };
 enum class Irradiance : uint8_t { SH9, Cubemap };

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -12,17 +13,32 @@
 
 namespace hv {
 
+// Budgets of one scene file (docs/scene-format.md): a few KB of JSON must not ask for gigabytes.
+// Lights, explicit and generated (a Light is 64 bytes; the GPU holds each once or twice).
+constexpr size_t kMaxSceneLights = size_t(1) << 20;
+// Vertices of all analytic primitives together (56 bytes each: 0.9 GiB).
+constexpr size_t kMaxPrimitiveVertices = size_t(1) << 24;
+// Size of a scene file.
+constexpr size_t kMaxSceneFileBytes = size_t(64) << 20;
+
 // Loads the scene file at `path`. `overrides` are "json.path=value" strings applied to the JSON
 // before validation, e.g. "settings.width=640", "lights.0.intensity=5",
 // "camera.position=[0,1,4]", "environment.type=uniform": the path is split at '.', numeric
 // components index arrays, missing object keys are created; the value is parsed as JSON and
 // taken as a plain string when that fails. Relative glTF/HDR paths resolve against the scene
-// file's folder; "${VAR}" in paths expands environment variables (HV_ASSETS_DIR defaults to the
-// ../shared/assets folder next to the repository). Returns a complete Scene or throws
+// file's folder; "${VAR}" in paths expands environment variables (an unset one is an error,
+// except in a glTF object's path when the object has a "fallback"). Returns a complete Scene or throws
 // SceneError; warnings (a missing glTF replaced by its fallback, BLEND materials) go to stderr,
 // or to `warnings` when given.
 Scene loadScene(const std::string& path, const std::vector<std::string>& overrides = {},
                 std::vector<std::string>* warnings = nullptr);
+
+// The same from the file's text; `source_name` names it in messages and is the base of relative
+// paths. For fuzzers and tests: it lets an exception other than SceneError through (a check the
+// loader misses), where loadScene turns it into a SceneError naming the file.
+Scene loadSceneFromString(std::string_view text, const std::string& source_name,
+                          const std::vector<std::string>& overrides = {},
+                          std::vector<std::string>* warnings = nullptr);
 
 // Validates and converts already-parsed JSON. `source_name` is used in error messages and as the
 // base for relative paths (its parent folder).
@@ -34,8 +50,7 @@ Scene parseScene(const nlohmann::json& json, const std::string& source_name,
 void applyOverride(nlohmann::json& json, const std::string& override_text,
                    const std::string& source_name);
 
-// Expands "${VAR}" using the environment (HV_ASSETS_DIR has a default, see loadScene); throws
-// SceneError for an unset variable.
+// Expands "${VAR}" using the environment; throws SceneError for an unset variable.
 std::string expandEnvVars(const std::string& text);
 
 }  // namespace hv

@@ -23,6 +23,8 @@ namespace {
 #include "halfvec/shaders/common/gbuffer.glsl"
 #include "halfvec/shaders/common/probes.glsl"
 #include "halfvec/shaders/common/tonemap.glsl"
+#include "halfvec/shaders/common/fxaa.glsl"
+#include "halfvec/shaders/common/emitter.glsl"
 }  // namespace
 }  // namespace hv::glsl
 #pragma GCC diagnostic pop

@@ -57,10 +57,9 @@ class MaterialPanelModel {
     return d;
   }
 
-  // Writes the edited materials back into the scene file at `path` (base_color, metallic,
-  // roughness, cavity, emissive, shading_model), keeping everything else. Named materials are
-  // matched by name in "materials" (object or list), inline ones by their object's name.
-  // Returns the number of materials written; throws std::runtime_error on I/O or JSON errors.
+  // Writes the edited materials back into the scene file at `path` (hv::saveSceneEdits: only the
+  // changed fields of the changed materials, every other byte of the file kept). Returns the
+  // number of materials changed; throws on I/O or JSON errors (SceneError, OutputError).
   int saveMaterials(const std::string& path) const;
 
  private:
@@ -209,17 +208,20 @@ class StatsModel {
 };
 
 // ---------------------------------------------------------------------------------------------
-// ImGui drawing (needs a current ImGui context and frame). Each returns true on a change.
+// ImGui drawing of the models: the contents of the side bar's tabs (sidebar.hpp; needs a current
+// ImGui context, frame and window). Widgets leave room for their labels at any window width.
+// Each returns true when the scene changed.
 
-bool drawMaterialPanel(MaterialPanelModel& model, const std::string& scene_path,
-                       std::string* status);
-bool drawLightsPanel(LightsPanelModel& model);
-bool drawRenderingPanel(RenderSettingsModel& model);
+// `save_requested` is set when "Save scene" is pressed.
+bool drawMaterialContents(MaterialPanelModel& model, bool* save_requested);
+bool drawLightsContents(LightsPanelModel& model);
+// With view options: the post-AA and emitter toggles too (they change no scene field).
+bool drawRenderingContents(RenderSettingsModel& model, render::ViewOptions* view_options);
 // With a manifest: a "Programs" section listing the last frame's programs, their keys, why each
 // define is on and their compile times (docs/variants.md).
 // `lights_in_view`: render::countLightsInView of the frame.
-void drawStatsPanel(const StatsModel& stats, size_t light_count, size_t lights_in_view,
-                    const std::string& gpu_name, const render::Manifest* manifest = nullptr);
+void drawStatsContents(const StatsModel& stats, size_t light_count, size_t lights_in_view,
+                       const std::string& gpu_name, const render::Manifest* manifest = nullptr);
 // A red error box; nothing when `message` is empty.
 void drawErrorPanel(const std::string& title, const std::string& message);
 
