@@ -106,20 +106,14 @@ void main() {
     for (int i = 0; i < 9; ++i) sh[i] = u_sh[i].rgb;
     vec3 E = evalSH9Irradiance(sh, N);
 #endif
-    // Lambert: albedo / pi times irradiance; Cavity occludes ambient diffuse (Karis 2013).
-    vec3 diffuse = s.diffuse_color * E * (INV_PI * s.cavity);
+    vec3 diffuse = ambientDiffuse(s, E);
 #if HV_ENV_BRDF_ANALYTIC
     vec2 ab = EnvBRDFApproxScaleBias(s.roughness, NoV);
 #else
     vec2 ab = texture(t_env_brdf, vec2(NoV, s.roughness)).rg;
 #endif
-    vec3 specular = specularIBL(radiance, s.f0, ab);
-#if HV_ENERGY_COMPENSATION
-    specular *= energyCompensation(s.f0, ab);
-#endif
-#if HV_SPECULAR_OCCLUSION
-    specular *= specularOcclusion(NoV, s.cavity, s.alpha);
-#endif
+    vec3 specular = ambientSpecular(s, radiance, ab, NoV, HV_ENERGY_COMPENSATION != 0,
+                                    HV_SPECULAR_OCCLUSION != 0);
 #if (HV_AMBIENT_TERMS & 1) == 0
     diffuse = vec3(0.0);
 #endif
