@@ -27,6 +27,29 @@ void printCost(const eval::FrameCost& c) {
   row(c.frame);
   std::fflush(stdout);
 }
+
+// --vs-brute: one line per scene, and the markdown table for --report.
+std::string tiledVsBrute(const std::vector<Scene>& scenes, const std::vector<std::string>& paths,
+                         const FrameBenchOptions& o) {
+  std::printf("%-16s %12s %12s %14s  %s\n", "scene", "tiled ms", "brute ms", "tiled / brute",
+              "95% interval");
+  std::string md =
+      "| scene | tiled frame ms | brute-force frame ms | tiled / brute (95% interval) |\n"
+      "|---|---:|---:|---:|\n";
+  for (size_t i = 0; i < scenes.size(); ++i) {
+    const std::string name = std::filesystem::path(paths[i]).stem().string();
+    const eval::TiledVsBrute r =
+        eval::measureTiledVsBruteForce(scenes[i], name, o.width, o.height, o.frames);
+    std::printf("%-16s %12.2f %12.2f %14.2f  %.2f - %.2f\n", name.c_str(), r.tiled_ms, r.brute_ms,
+                r.ratio.median, r.ratio.lo, r.ratio.hi);
+    std::fflush(stdout);
+    char row[256];
+    std::snprintf(row, sizeof row, "| %s | %.1f | %.1f | %.2f (%.2f - %.2f) |\n", name.c_str(),
+                  r.tiled_ms, r.brute_ms, r.ratio.median, r.ratio.lo, r.ratio.hi);
+    md += row;
+  }
+  return md;
+}
 }  // namespace
 
 std::vector<std::string> sampleScenePaths() {
@@ -54,8 +77,16 @@ int benchFrame(const FrameBenchOptions& o) {
       "renderer: %s, %dx%d; x floor = median over frames of (pass ms / floor pass ms of "
       "the same frame)\n\n",
       ctx->renderer().c_str(), o.width, o.height);
+  std::string md = "Renderer: " + ctx->renderer() + ", " + std::to_string(o.width) + "x" +
+                   std::to_string(o.height) + ", " + std::to_string(o.frames) +
+                   " frames per scene after a warm-up frame; ";
+  if (o.vs_brute) {
+    if (!o.shader_dirs.empty()) throw UsageError{"--vs-brute does not take --shaders"};
+    md += "whole-frame GPU ms, medians; ratio: median over interleaved rounds.\n\n" +
+          tiledVsBrute(loaded, scenes, o);
+  }
   std::vector<eval::FrameCost> costs;
-  for (size_t i = 0; i < scenes.size(); ++i) {
+  for (size_t i = 0; i < scenes.size() && !o.vs_brute; ++i) {
     const std::string name = std::filesystem::path(scenes[i]).stem().string();
     if (o.shader_dirs.empty()) {
       costs.push_back(eval::measureFrameCost(loaded[i], name, o.width, o.height, o.frames));
@@ -70,11 +101,12 @@ int benchFrame(const FrameBenchOptions& o) {
     std::printf("\n");
   }
   if (!o.report.empty()) {
-    std::string md = "Renderer: " + ctx->renderer() + ", " + std::to_string(o.width) + "x" +
-                     std::to_string(o.height) + ", " + std::to_string(o.frames) +
-                     " frames per scene after a warm-up frame; each cell: median GPU ms (median "
-                     "over frames of pass ms / floor ms of the same frame).\n\n";
-    md += eval::frameCostMarkdown(costs);
+    if (!o.vs_brute) {
+      md +=
+          "each cell: median GPU ms (median over frames of pass ms / floor ms of the same "
+          "frame).\n\n" +
+          eval::frameCostMarkdown(costs);
+    }
     std::ofstream(report_tmp) << md;
     outputs.commit();
     std::printf("wrote %s\n", o.report.c_str());

@@ -57,7 +57,10 @@ ratios.
                multiple of the floor pass (a compute pass that reads the G-buffer and writes an
                RGBA16F target) timed in the same frames, median over --frames (default 9) with
                its 95% interval; with --shaders DIR,... one set per shader tree, frames
-               interleaved; --report FILE.md also writes the table as markdown
+               interleaved; --report FILE.md also writes the table as markdown;
+               --vs-brute: instead, each scene's whole frame with tiled culling against the
+               same scene with culling brute_force (every pixel loops over every light),
+               frames interleaved, as the median ratio with its 95% interval
   --variants   instead: programs specialized to the scene vs the uber build, GPU ms per pass on
                every scene of samples/scenes, as a markdown table (--quick: at most 640x360)
 )";
@@ -274,6 +277,7 @@ int cmdBench(const Args& args) {
   bool variants = false;
   bool show_breakdown = false;
   bool frame_mode = false;
+  bool vs_brute = false;
   std::string report;
   bool frames_given = false;
   int types = -1;  // --types: -1 mixed, else a hv::LightType
@@ -322,12 +326,15 @@ int cmdBench(const Args& args) {
       show_breakdown = true;
     } else if (a == "--frame") {
       frame_mode = true;
+    } else if (a == "--vs-brute") {
+      vs_brute = true;
     } else if (a == "--report") {
       report = value();
     } else {
       throw UsageError{"unknown option '" + a + "'"};
     }
   }
+  if (vs_brute && !frame_mode) throw UsageError{"--vs-brute goes with --frame"};
   if (frame_mode) {
     FrameBenchOptions o;
     o.width = w;
@@ -336,6 +343,7 @@ int cmdBench(const Args& args) {
     o.scene = scene_path;
     o.shader_dirs = shader_dirs;
     o.report = report;
+    o.vs_brute = vs_brute;
     return benchFrame(o);
   }
   if (variants)

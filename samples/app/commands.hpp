@@ -24,6 +24,7 @@ struct FrameBenchOptions {
   std::string scene;                     // empty: every sample scene
   std::vector<std::string> shader_dirs;  // A/B shader trees (needs `scene`)
   std::string report;                    // markdown table to write (empty: none)
+  bool vs_brute = false;  // instead: whole frame, tiled culling vs brute force (interleaved)
 };
 int benchFrame(const FrameBenchOptions& options);
 // The sample scene files (samples/scenes/*.json), sorted.

@@ -70,3 +70,29 @@ TEST(Bench, FrameCostReportsEveryPassAgainstTheFloor) {
   EXPECT_GT(sum, 0.0);
   EXPECT_NE(hv::eval::frameCostMarkdown({c}).find("| tiny |"), std::string::npos);
 }
+
+// bench --frame --vs-brute: both renderers run every round (one ratio per round), whatever the
+// scene's own culling setting.
+TEST(Bench, TiledVsBruteForcePairsEveryRound) {
+  auto ctx = hv::createHeadlessContext();
+  hv::Scene s;
+  s.camera.position = {0.0f, 1.5f, 3.0f};
+  s.camera.target = {0.0f, 0.4f, 0.0f};
+  hv::Material m;
+  hv::addMeshObject(s, hv::makePlane(6.0f, 6.0f), m, glm::vec3(0.0f));
+  for (int i = 0; i < 4; ++i) {
+    hv::Light l;
+    l.position = {float(i) - 1.5f, 1.0f, 0.0f};
+    s.lights.push_back(l);
+  }
+  s.settings.culling = hv::Culling::BruteForce;
+  const hv::eval::TiledVsBrute r = hv::eval::measureTiledVsBruteForce(s, "four", 64, 48, 3);
+  EXPECT_EQ(r.scene, "four");
+  EXPECT_EQ(r.frames, 3);
+  EXPECT_EQ(r.ratio.n, 3u);
+  EXPECT_GT(r.tiled_ms, 0.0);
+  EXPECT_GT(r.brute_ms, 0.0);
+  EXPECT_GT(r.ratio.median, 0.0);
+  EXPECT_LE(r.ratio.lo, r.ratio.median);
+  EXPECT_GE(r.ratio.hi, r.ratio.median);
+}

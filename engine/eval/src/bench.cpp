@@ -145,6 +145,40 @@ std::vector<FrameCost> measureFrameCostTrees(const Scene& scene,
   return out;
 }
 
+TiledVsBrute measureTiledVsBruteForce(const Scene& scene, const std::string& name, int width,
+                                      int height, int frames) {
+  Scene tiled = scene, brute = scene;  // the renderers keep pointers: both outlive them
+  tiled.settings.culling = Culling::Tiled;
+  brute.settings.culling = Culling::BruteForce;
+  render::DebugOptions d;
+  d.finish_each_pass = true;  // as bench --frame: each pass timed whole
+  std::vector<std::unique_ptr<FrameRunner>> runs;
+  runs.push_back(std::make_unique<FrameRunner>(tiled, width, height, d));
+  runs.push_back(std::make_unique<FrameRunner>(brute, width, height, d));
+  runInterleaved(runs, frames);
+  auto totals = [](const PassSeries& s) {
+    std::vector<double> t;
+    for (const std::string& pass : s.order) {
+      const std::vector<double>& ms = s.of(pass);
+      if (t.size() < ms.size()) t.resize(ms.size(), 0.0);
+      for (size_t i = 0; i < ms.size(); ++i) t[i] += ms[i];
+    }
+    return t;
+  };
+  const std::vector<double> a = totals(runs[0]->series()), b = totals(runs[1]->series());
+  std::vector<double> ratios;
+  for (size_t i = 0; i < std::min(a.size(), b.size()); ++i) {
+    if (b[i] > 0.0) ratios.push_back(a[i] / b[i]);
+  }
+  TiledVsBrute r;
+  r.scene = name;
+  r.frames = frames;
+  r.tiled_ms = medianInterval(a).median;
+  r.brute_ms = medianInterval(b).median;
+  r.ratio = medianInterval(ratios);
+  return r;
+}
+
 std::string frameCostMarkdown(const std::vector<FrameCost>& costs) {
   std::vector<std::string> passes;
   for (const FrameCost& c : costs) {

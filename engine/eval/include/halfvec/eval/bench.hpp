@@ -79,6 +79,19 @@ FrameCost measureFrameCost(const Scene& scene, const std::string& name, int widt
 std::vector<FrameCost> measureFrameCostTrees(const Scene& scene,
                                              const std::vector<std::string>& dirs, int width,
                                              int height, int frames);
+// ---- bench --frame --vs-brute
+// The scene's whole frame with tiled culling against the same scene with Culling::BruteForce
+// (no culling pass; the light pass loops over every light at every pixel: a minimal brute-force
+// deferred renderer with the same G-buffer, shading and ambient), frames interleaved.
+struct TiledVsBrute {
+  std::string scene;
+  int frames = 0;
+  double tiled_ms = 0.0, brute_ms = 0.0;  // median whole-frame GPU ms
+  MedianInterval ratio;                   // per round: tiled frame ms / brute-force frame ms
+};
+TiledVsBrute measureTiledVsBruteForce(const Scene& scene, const std::string& name, int width,
+                                      int height, int frames);
+
 // Markdown table: one row per scene, per pass "ms (x floor)".
 std::string frameCostMarkdown(const std::vector<FrameCost>& costs);
 
