@@ -53,12 +53,20 @@ ratios.
   --breakdown  instead: table (d) alone at 1024 lights (or --lights N), per type: the light pass
                split into per-pixel setup, walking the lists and fetching the lights, and the
                shading arithmetic, each measured by a probe build of the pass with frames
-               interleaved (Renderer::LightPassProbe); "if only shading" is the rate the pass
+               interleaved (render::LightPassProbe); "if only shading" is the rate the pass
                would reach were setup and fetching free
   --methods    instead: table (e) alone: per light type (sphere, tube), the light pass of each
                method (representative point, ltc) at 1024 lights (or --lights N), frames
                interleaved, with the FetchOnly probe's time subtracted as "shading"; the ratio
                ltc / representative point of the pass and of its shading arithmetic
+  --frame      instead: every pass of every sample scene (or of --scene FILE) in ms and as a
+               multiple of the floor pass (a compute pass that reads the G-buffer and writes an
+               RGBA16F target) timed in the same frames, median over --frames (default 9) with
+               its 95% interval; with --shaders DIR,... one set per shader tree, frames
+               interleaved; --report FILE.md also writes the table as markdown;
+               --vs-brute: instead, each scene's whole frame with tiled culling against the
+               same scene with culling brute_force (every pixel loops over every light),
+               frames interleaved, as the median ratio with its 95% interval
   --variants   instead: programs specialized to the scene vs the uber build, GPU ms per pass on
                every scene of samples/scenes, as a markdown table (--quick: at most 640x360)
 )";
@@ -109,8 +117,11 @@ struct Runner {
   std::vector<double> cull, light;
   std::vector<std::pair<std::string, double>> fastest;  // per pass, the fastest frame's ms
   Runner(const Scene& scene, int w, int h,
-         render::Renderer::LightPassProbe probe = render::Renderer::LightPassProbe::Shade) {
-    r.setLightPassProbe(probe);
+         render::LightPassProbe probe = render::LightPassProbe::Shade) {
+    render::DebugOptions debug;
+    debug.light_probe = probe;
+    debug.finish_each_pass = true;  // no pass timed with the previous one's deferred raster
+    r.setDebugOptions(debug);
     r.setScene(scene);
     r.render(w, h);  // warm up: compiles the variants
   }
@@ -229,7 +240,7 @@ int compareShaderTrees(const Scene& scene, const std::vector<std::string>& dirs,
 
 // --breakdown (and table (d)): the light pass of one scene three times, frames interleaved: the
 // real pass, the FetchOnly probe (lists walked, lights fetched, no shading) and the SetupOnly
-// probe (no light loop); see Renderer::LightPassProbe. Differences of medians give the time of
+// probe (no light loop); see render::LightPassProbe. Differences of medians give the time of
 // per-pixel setup, of walking the lists and fetching the lights, and of the shading arithmetic;
 // "if only shading" is the evaluation rate the pass would reach were the other two free.
 struct Breakdown {
@@ -239,7 +250,7 @@ struct Breakdown {
   double shadingOnlyRate() const { return mevalsPerSecond(full.evals, shading()); }
 };
 Breakdown breakdown(const Scene& scene, int w, int h, int frames) {
-  using Probe = render::Renderer::LightPassProbe;
+  using Probe = render::LightPassProbe;
   std::vector<std::unique_ptr<Runner>> runs;
   for (Probe p : {Probe::Shade, Probe::FetchOnly, Probe::SetupOnly}) {
     runs.push_back(std::make_unique<Runner>(scene, w, h, p));
@@ -295,6 +306,10 @@ int cmdBench(const Args& args) {
   bool variants = false;
   bool show_breakdown = false;
   bool methods = false;
+  bool frame_mode = false;
+  bool vs_brute = false;
+  std::string report;
+  bool frames_given = false;
   int types = -1;  // --types: -1 mixed, else a hv::LightType
   std::vector<std::string> shader_dirs;
   std::string scene_path;
@@ -308,6 +323,7 @@ int cmdBench(const Args& args) {
       parseSize(value(), w, h);
     } else if (a == "--frames") {
       frames = std::max(1, std::atoi(value().c_str()));
+      frames_given = true;
     } else if (a == "--max-lights") {
       max_lights = std::atoi(value().c_str());
     } else if (a == "--lights") {
@@ -340,9 +356,27 @@ int cmdBench(const Args& args) {
       show_breakdown = true;
     } else if (a == "--methods") {
       methods = true;
+    } else if (a == "--frame") {
+      frame_mode = true;
+    } else if (a == "--vs-brute") {
+      vs_brute = true;
+    } else if (a == "--report") {
+      report = value();
     } else {
       throw UsageError{"unknown option '" + a + "'"};
     }
+  }
+  if (vs_brute && !frame_mode) throw UsageError{"--vs-brute goes with --frame"};
+  if (frame_mode) {
+    FrameBenchOptions o;
+    o.width = w;
+    o.height = h;
+    if (frames_given) o.frames = frames;
+    o.scene = scene_path;
+    o.shader_dirs = shader_dirs;
+    o.report = report;
+    o.vs_brute = vs_brute;
+    return benchFrame(o);
   }
   if (variants)
     return quick ? benchVariants(std::min(w, 640), std::min(h, 360), frames)

@@ -18,6 +18,17 @@ int cmdReference(const Args& args);
 int cmdView(const Args&);
 // `bench --variants` (bench_variants.cpp): specialized vs uber programs per pass per sample scene.
 int benchVariants(int width, int height, int frames);
+// `bench --frame` (bench_frame.cpp): every pass as a multiple of the floor pass, per sample scene.
+struct FrameBenchOptions {
+  int width = 1280, height = 720, frames = 9;
+  std::string scene;                     // empty: every sample scene
+  std::vector<std::string> shader_dirs;  // A/B shader trees (needs `scene`)
+  std::string report;                    // markdown table to write (empty: none)
+  bool vs_brute = false;  // instead: whole frame, tiled culling vs brute force (interleaved)
+};
+int benchFrame(const FrameBenchOptions& options);
+// The sample scene files (samples/scenes/*.json), sorted.
+std::vector<std::string> sampleScenePaths();
 int cmdAccuracy(const Args& args);
 int cmdTrade(const Args& args);
 int cmdLtcFit(const Args& args);

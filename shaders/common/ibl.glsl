@@ -5,6 +5,7 @@
 #define HV_IBL_GLSL
 
 #include "math.glsl"
+#include "brdf.glsl"
 
 // --- Prefiltered radiance: roughness <-> mip ------------------------------------------------
 // Mip 0 is the unfiltered environment (roughness 0); the last mip holds roughness 1. The mapping
@@ -61,6 +62,34 @@ vec3 energyCompensation(vec3 f0, vec2 scaleBias) {
 // `roughness` is alpha (the squared perceptual roughness).
 float specularOcclusion(float NoV, float ao, float alpha) {
   return saturate(pow(NoV + ao, exp2(-16.0f * alpha - 1.0f)) - 1.0f + ao);
+}
+
+// --- The ambient terms of a surface -----------------------------------------------------------
+// How the image-based terms combine, written once for the ambient pass (ambient.comp) and the
+// CPU reference (which integrates the environment instead of looking it up, but weights the terms
+// the same way). Diffuse (Lambert): albedo / pi times irradiance, occluded by the cavity (Karis
+// 2013, "Material Model": cavity on ambient diffuse).
+vec3 ambientDiffuse(Surface s, vec3 irradiance) {
+  return s.diffuse_color * irradiance * (INV_PI * s.cavity);
+}
+
+// The factor the ambient specular is multiplied by: the multiple-scattering energy compensation
+// (energyCompensation) and the specular occlusion from the cavity (specularOcclusion), each when
+// enabled (RenderSettings::energy_compensation, ::specular_occlusion). `scaleBias` is the env BRDF
+// (scale, bias) at (NoV, roughness).
+vec3 ambientSpecularScale(Surface s, vec2 scaleBias, float NoV, bool energy_compensation,
+                          bool specular_occlusion) {
+  vec3 scale = vec3(1.0f);
+  if (energy_compensation) scale = energyCompensation(s.f0, scaleBias);
+  if (specular_occlusion) scale = scale * specularOcclusion(NoV, s.cavity, s.alpha);
+  return scale;
+}
+
+// Split-sum ambient specular (Karis 2013 eq. 8) with ambientSpecularScale.
+vec3 ambientSpecular(Surface s, vec3 prefiltered, vec2 scaleBias, float NoV,
+                     bool energy_compensation, bool specular_occlusion) {
+  return specularIBL(prefiltered, s.f0, scaleBias) *
+         ambientSpecularScale(s, scaleBias, NoV, energy_compensation, specular_occlusion);
 }
 
 // --- Diffuse: order-2 spherical harmonics ---------------------------------------------------

@@ -43,16 +43,16 @@
 
 layout(local_size_x = HV_TILE_SIZE, local_size_y = HV_TILE_SIZE) in;
 
-layout(binding = 0) uniform sampler2D t_base_cavity;
-layout(binding = 1) uniform sampler2D t_material;
-layout(binding = 2) uniform sampler2D t_normal;
-layout(binding = 3) uniform sampler2D t_depth;
-layout(binding = 5) uniform samplerCube t_radiance;    // prefiltered: one roughness per mip
-layout(binding = 6) uniform sampler2D t_env_brdf;      // (scale, bias) over (NoV, roughness)
-layout(binding = 7) uniform samplerCube t_irradiance;  // E(n), not divided by pi
-layout(rgba16f, binding = 0) uniform image2D i_hdr;
+layout(binding = HV_UNIT_BASE_CAVITY) uniform sampler2D t_base_cavity;
+layout(binding = HV_UNIT_MATERIAL) uniform sampler2D t_material;
+layout(binding = HV_UNIT_NORMAL) uniform sampler2D t_normal;
+layout(binding = HV_UNIT_DEPTH) uniform sampler2D t_depth;
+layout(binding = HV_UNIT_RADIANCE) uniform samplerCube t_radiance;    // prefiltered: one roughness per mip
+layout(binding = HV_UNIT_ENV_BRDF) uniform sampler2D t_env_brdf;      // (scale, bias) over (NoV, roughness)
+layout(binding = HV_UNIT_IRRADIANCE) uniform samplerCube t_irradiance;  // E(n), not divided by pi
+layout(rgba16f, binding = HV_IMAGE_HDR) uniform image2D i_hdr;
 
-layout(std140, binding = 1) uniform EnvironmentBlock {
+layout(std140, binding = HV_UBO_ENVIRONMENT) uniform EnvironmentBlock {
   vec4 u_sh[9];      // radiance SH9 (ibl.glsl order)
   vec4 u_env;        // max mip, env BRDF table size, 1 = environment present, unused
 };
@@ -106,20 +106,14 @@ void main() {
     for (int i = 0; i < 9; ++i) sh[i] = u_sh[i].rgb;
     vec3 E = evalSH9Irradiance(sh, N);
 #endif
-    // Lambert: albedo / pi times irradiance; Cavity occludes ambient diffuse (Karis 2013).
-    vec3 diffuse = s.diffuse_color * E * (INV_PI * s.cavity);
+    vec3 diffuse = ambientDiffuse(s, E);
 #if HV_ENV_BRDF_ANALYTIC
     vec2 ab = EnvBRDFApproxScaleBias(s.roughness, NoV);
 #else
     vec2 ab = texture(t_env_brdf, vec2(NoV, s.roughness)).rg;
 #endif
-    vec3 specular = specularIBL(radiance, s.f0, ab);
-#if HV_ENERGY_COMPENSATION
-    specular *= energyCompensation(s.f0, ab);
-#endif
-#if HV_SPECULAR_OCCLUSION
-    specular *= specularOcclusion(NoV, s.cavity, s.alpha);
-#endif
+    vec3 specular = ambientSpecular(s, radiance, ab, NoV, HV_ENERGY_COMPENSATION != 0,
+                                    HV_SPECULAR_OCCLUSION != 0);
 #if (HV_AMBIENT_TERMS & 1) == 0
     diffuse = vec3(0.0);
 #endif

@@ -4,10 +4,10 @@
 #include "../common/frame.glsl"
 #include "../common/gbuffer.glsl"
 
-layout(binding = 0) uniform sampler2D t_base_cavity;
-layout(binding = 1) uniform sampler2D t_material;
-layout(binding = 2) uniform sampler2D t_normal;
-layout(binding = 3) uniform sampler2D t_depth;
+layout(binding = HV_UNIT_BASE_CAVITY) uniform sampler2D t_base_cavity;
+layout(binding = HV_UNIT_MATERIAL) uniform sampler2D t_material;
+layout(binding = HV_UNIT_NORMAL) uniform sampler2D t_normal;
+layout(binding = HV_UNIT_DEPTH) uniform sampler2D t_depth;
 layout(std430, binding = HV_BINDING_TILE_RANGES) readonly buffer TileRangeBlock { uvec2 tile_ranges[]; };
 
 layout(location = 0) in vec2 v_uv;

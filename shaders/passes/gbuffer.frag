@@ -6,13 +6,13 @@
 #include "../common/gbuffer.glsl"
 #include "../common/material.glsl"
 
-layout(location = 2) uniform int u_material;
+layout(location = HV_LOC_MATERIAL) uniform int u_material;
 
-layout(binding = 0) uniform sampler2D t_base_color;  // sRGB texture: sampled linear
-layout(binding = 1) uniform sampler2D t_metal_rough;
-layout(binding = 2) uniform sampler2D t_normal;
-layout(binding = 3) uniform sampler2D t_occlusion;
-layout(binding = 4) uniform sampler2D t_emissive;
+layout(binding = HV_UNIT_MATERIAL_TEXTURES + 0) uniform sampler2D t_base_color;  // sRGB texture: sampled linear
+layout(binding = HV_UNIT_MATERIAL_TEXTURES + 1) uniform sampler2D t_metal_rough;
+layout(binding = HV_UNIT_MATERIAL_TEXTURES + 2) uniform sampler2D t_normal;
+layout(binding = HV_UNIT_MATERIAL_TEXTURES + 3) uniform sampler2D t_occlusion;
+layout(binding = HV_UNIT_MATERIAL_TEXTURES + 4) uniform sampler2D t_emissive;
 
 layout(location = 0) in vec3 v_normal;
 #if HV_MAT_NORMAL_MAP

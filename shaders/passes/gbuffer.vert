@@ -10,8 +10,8 @@ layout(location = 2) in vec4 a_tangent;
 layout(location = 3) in vec2 a_uv0;
 layout(location = 4) in vec2 a_uv1;
 
-layout(location = 0) uniform mat4 u_model;
-layout(location = 1) uniform mat4 u_normal_matrix;  // inverse transpose of u_model
+layout(location = HV_LOC_MODEL) uniform mat4 u_model;
+layout(location = HV_LOC_NORMAL_MATRIX) uniform mat4 u_normal_matrix;  // inverse transpose of u_model
 
 layout(location = 0) out vec3 v_normal;
 #if HV_MAT_NORMAL_MAP

@@ -23,11 +23,11 @@
 #define HV_LIGHT_ROWS_PER_TILE (HV_TILE_HEIGHT / HV_LIGHT_PIXELS)
 layout(local_size_x = HV_TILE_SIZE, local_size_y = HV_LIGHT_ROWS_PER_TILE * HV_LIGHT_GROUP_TILES) in;
 
-layout(binding = 0) uniform sampler2D t_base_cavity;
-layout(binding = 1) uniform sampler2D t_material;
-layout(binding = 2) uniform sampler2D t_normal;
-layout(binding = 3) uniform sampler2D t_depth;
-layout(rgba16f, binding = 0) uniform image2D i_hdr;
+layout(binding = HV_UNIT_BASE_CAVITY) uniform sampler2D t_base_cavity;
+layout(binding = HV_UNIT_MATERIAL) uniform sampler2D t_material;
+layout(binding = HV_UNIT_NORMAL) uniform sampler2D t_normal;
+layout(binding = HV_UNIT_DEPTH) uniform sampler2D t_depth;
+layout(rgba16f, binding = HV_IMAGE_HDR) uniform image2D i_hdr;
 
 layout(std430, binding = HV_BINDING_LIGHTS) readonly buffer LightBlock { GpuLight lights[]; };
 #ifndef HV_LIGHTS_TEXTURE
@@ -47,10 +47,10 @@ layout(std430, binding = HV_BINDING_TILE_INDICES) readonly buffer TileIndexBlock
 #if HV_LIGHTS_TEXTURE
 // The same two buffers as buffer textures (light_pass.cpp): texelFetch is a vector gather on
 // llvmpipe, an SSBO read at a loaded index is one load per lane (about 3x slower loop there).
-layout(binding = 4) uniform samplerBuffer t_lights;        // 4 RGBA32F texels per GpuLight
-layout(binding = 5) uniform usamplerBuffer t_tile_indices;  // header (4 uints), then indices
+layout(binding = HV_UNIT_LIGHT_TEXELS) uniform samplerBuffer t_lights;        // 4 RGBA32F texels per GpuLight
+layout(binding = HV_UNIT_TILE_INDEX_TEXELS) uniform usamplerBuffer t_tile_indices;  // header (4 uints), then indices
 GpuLight tileLight(uint i) {
-  int base = int(texelFetch(t_tile_indices, int(i) + 4).r) * 4;
+  int base = int(texelFetch(t_tile_indices, int(i) + HV_TILE_LIST_HEADER_UINTS).r) * 4;
   GpuLight l;
   l.position_radius = texelFetch(t_lights, base);
   l.color_inv_range = texelFetch(t_lights, base + 1);
@@ -63,12 +63,18 @@ GpuLight tileLight(uint i) { return lights[tile_indices[i]]; }
 #endif
 #endif
 
-// Benchmark probes (Renderer::LightPassProbe, `halfvec bench --breakdown`); 0 = the real pass.
-// 1: the same loops and light fetches with no shading: each light adds its premultiplied color
-// (times step(0, radius) and, for tubes, step(0, length), both 1, so that every texel the real
-// evaluation reads is read). 2: no light loop. Both render wrong images by design.
+// Benchmark probes (render::LightPassProbe, `halfvec bench --breakdown`); 0 = the real pass. Both
+// probes start every pixel's sum at setupProbeValue (probes.glsl), a function of every field of
+// the per-pixel setup, so the setup they include is really computed (the compiler drops what is
+// not stored). 1: the same loops and light fetches with no shading: each light adds its
+// premultiplied color (times step(0, radius) and, for tubes, step(0, length), both 1, so that
+// every texel the real evaluation reads is read). 2: no light loop. Both render wrong images by
+// design; LightPass.BenchmarkProbesDoWhatTheyMeasure checks each stored value.
 #ifndef HV_LIGHT_PROBE
 #define HV_LIGHT_PROBE 0
+#endif
+#if HV_LIGHT_PROBE != 0
+#include "../common/probes.glsl"
 #endif
 #if HV_LIGHT_PROBE == 1
 vec3 probeLight(GpuLight l) { return l.color_inv_range.rgb * step(0.0, l.position_radius.w); }
@@ -115,7 +121,11 @@ void main() {
   if (!any_lit) return;
 
   vec3 sum[HV_LIGHT_PIXELS];
+#if HV_LIGHT_PROBE != 0
+  for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] = setupProbeValue(s[j], sp[j]);
+#else
   for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] = vec3(0.0);
+#endif
 #if HV_CULLING_BRUTE_FORCE
   uint n = u_counts.x;
   for (uint i = 0u; i < n; ++i) {

@@ -4,7 +4,7 @@
 #include "../common/frame.glsl"
 #include "../common/tonemap.glsl"
 
-layout(binding = 0) uniform sampler2D t_hdr;
+layout(binding = HV_UNIT_HDR) uniform sampler2D t_hdr;
 layout(location = 0) in vec2 v_uv;
 layout(location = 0) out vec4 o_color;
 

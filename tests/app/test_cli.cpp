@@ -95,8 +95,8 @@ TEST(Cli, RendersDefaultSceneFiniteAndNotUniform) {
     const size_t defines = key.empty() ? 0 : size_t(std::count(key.begin(), key.end(), ';')) + 1;
     EXPECT_EQ(p["reasons"].size(), defines) << p["program"];
   }
-  EXPECT_EQ(names, (std::set<std::string>{"gbuffer", "light_cull_bounds", "light_cull_lights",
-                                          "light_cull_scan", "light", "ambient", "emitters",
+  EXPECT_EQ(names, (std::set<std::string>{"gbuffer", "light_cull_bounds", "light_cull_bin",
+                                          "light_cull_tiles", "light", "ambient", "emitters",
                                           "tonemap", "fxaa"}));
 }
 

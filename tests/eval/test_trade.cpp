@@ -103,7 +103,7 @@ TEST(TradePlan, SkipsOptionsThatDoNotApply) {
   for (size_t i = 0; i < p.configs.size(); ++i)
     for (size_t j = i + 1; j < p.configs.size(); ++j)
       EXPECT_FALSE(p.configs[i].prefilter_samples == p.configs[j].prefilter_samples &&
-                   hv::eval::sameSettings(p.configs[i].settings, p.configs[j].settings))
+                   p.configs[i].settings == p.configs[j].settings)
           << p.configs[i].name << " / " << p.configs[j].name;
 }
 

@@ -1,3 +1,4 @@
+#include <gtest/gtest-spi.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -189,4 +190,11 @@ TEST(Program, ReloadAllKeepsLastGoodProgramOnError) {
   cache.reloadAll();
   EXPECT_FLOAT_EQ(run(cache.get(d)), 7.0f);
   fs::remove_all(dir);
+}
+
+// tests/gl_errors.cpp makes any GL API error a failure of the test that caused it: binding a
+// texture name that was never created is GL_INVALID_OPERATION in a core profile.
+TEST(GlDebug, ApiErrorFailsTheTest) {
+  testContext();
+  EXPECT_NONFATAL_FAILURE(glBindTexture(GL_TEXTURE_2D, 0x7fffffffu), "GL_DEBUG_TYPE_ERROR");
 }

@@ -122,6 +122,36 @@ TEST(IblMath, MipRoughnessInverseAndFinite) {
   EXPECT_NEAR(g::specularOcclusion(1.0f, 1.0f, 0.25f), 1.0f, 1e-6f);  // no AO -> no occlusion
 }
 
+// The ambient terms' combination (ibl.glsl), shared by the ambient pass and the reference: the
+// diffuse is Lambert times irradiance occluded by the cavity, and the specular's factor is each
+// enabled factor alone, or their product.
+TEST(IblMath, AmbientTermsCombineAsTheirParts) {
+  const glm::vec3 N(0.0f, 0.0f, 1.0f);
+  const g::Surface dielectric = g::makeSurface(N, glm::vec3(0.8f, 0.5f, 0.2f), 0.0f, 0.6f, 0.5f);
+  const glm::vec3 d = g::ambientDiffuse(dielectric, glm::vec3(kPi));
+  EXPECT_NEAR(d.x, 0.4f, 1e-6f);  // 0.8 / pi * pi * cavity 0.5
+  EXPECT_NEAR(d.y, 0.25f, 1e-6f);
+  EXPECT_NEAR(d.z, 0.1f, 1e-6f);
+
+  const g::Surface metal = g::makeSurface(N, glm::vec3(0.9f, 0.6f, 0.3f), 1.0f, 0.7f, 0.4f);
+  const float nov = 0.3f;
+  const glm::vec2 ab = hv::integrateEnvBrdfAt(nov, metal.roughness, 256);
+  const glm::vec3 ec = g::energyCompensation(metal.f0, ab);
+  const float so = g::specularOcclusion(nov, metal.cavity, metal.alpha);
+  ASSERT_GT(ec.x, 1.01f);  // both factors do something here, so a lost factor shows
+  ASSERT_LT(so, 0.99f);
+  auto near = [](glm::vec3 a, glm::vec3 b) {
+    return glm::all(glm::lessThan(glm::abs(a - b), glm::vec3(1e-6f)));
+  };
+  EXPECT_TRUE(near(g::ambientSpecularScale(metal, ab, nov, false, false), glm::vec3(1.0f)));
+  EXPECT_TRUE(near(g::ambientSpecularScale(metal, ab, nov, true, false), ec));
+  EXPECT_TRUE(near(g::ambientSpecularScale(metal, ab, nov, false, true), glm::vec3(so)));
+  EXPECT_TRUE(near(g::ambientSpecularScale(metal, ab, nov, true, true), ec * so));
+  const glm::vec3 prefiltered(2.0f, 1.0f, 0.5f);
+  EXPECT_TRUE(near(g::ambientSpecular(metal, prefiltered, ab, nov, true, true),
+                   g::specularIBL(prefiltered, metal.f0, ab) * ec * so));
+}
+
 TEST(Ibl, FurnaceUniform) {
   hv::Environment env;
   env.kind = hv::EnvironmentKind::Uniform;

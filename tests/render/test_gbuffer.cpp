@@ -103,3 +103,28 @@ TEST(GBuffer, BackgroundIsMarked) {
   EXPECT_EQ(g.depth[0], 0.0f);
   EXPECT_EQ(g.model[size_t(16) * 32 + 16], static_cast<uint32_t>(ShadingModel::DefaultLit));
 }
+
+// The floor pass (DebugOptions::floor_pass) is timed as its own pass and leaves the frame's
+// images exactly as they are without it.
+TEST(FloorPass, TimedAndLeavesTheImageUnchanged) {
+  testContext();
+  hv::Material m;
+  m.base_color = {0.5f, 0.6f, 0.7f};
+  hv::Scene s = planeScene(m);
+  hv::Light l;
+  l.position = {0.0f, 1.0f, 0.0f};
+  s.lights.push_back(l);
+  hv::render::Renderer r;
+  r.setScene(s);
+  r.render(32, 24);
+  const auto hdr = r.readHdr();
+  const auto ldr = r.readLdr();
+  hv::render::DebugOptions floor;
+  floor.floor_pass = true;
+  r.setDebugOptions(floor);
+  const auto stats = r.render(32, 24);
+  ASSERT_FALSE(stats.passes.empty());
+  EXPECT_EQ(stats.passes.back().first, "floor");
+  EXPECT_EQ(r.readHdr().px, hdr.px);
+  EXPECT_EQ(r.readLdr().px, ldr.px);
+}

@@ -123,18 +123,33 @@ TEST(LightPass, TiledEqualsBruteForceWith4096Lights) {
   EXPECT_EQ(r.tileListReadbacks(), 0u);
   EXPECT_GT(stats.tile_light_entries, 1000u);
   EXPECT_GE(r.tileListCapacity(), stats.tile_light_entries);
-  r.setLightTexelLimit(1);  // the SSBO path of the light pass (no buffer textures)
+  render::DebugOptions ssbo;
+  ssbo.light_texel_limit = 1;  // the SSBO path of the light pass (no buffer textures)
+  r.setDebugOptions(ssbo);
   r.render(w, h2);
   const auto tiled_ssbo = r.readHdr();
   // The read-back path (bound over the limit): a fresh renderer, so the list starts small and
   // has to grow from the exact total read back between the scan and the fill.
   render::Renderer r2;
-  r2.setTileListBoundLimit(0);
+  render::DebugOptions readback;
+  readback.tile_bound_limit = 0;
+  r2.setDebugOptions(readback);
   r2.setScene(s);
   const auto stats2 = r2.render(w, h2);
   const auto tiled_readback = r2.readHdr();
   EXPECT_EQ(r2.tileListReadbacks(), 1u);
   EXPECT_EQ(stats2.tile_light_entries, stats.tile_light_entries);
+  // The batched culling path (count, reserve, fill per batch of lights), in 5 batches of 1,000.
+  render::Renderer r3;
+  render::DebugOptions batched;
+  batched.cull_batch_lights = 1000;
+  r3.setDebugOptions(batched);
+  r3.setScene(s);
+  const auto stats3 = r3.render(w, h2);
+  const auto tiled_batched = r3.readHdr();
+  EXPECT_EQ(stats3.tile_light_entries, stats.tile_light_entries);
+  // Each tile's list is in light order whatever the run: the same image to the bit.
+  EXPECT_EQ(tiled_batched.px, tiled.px);
   s.settings.culling = Culling::BruteForce;
   r.render(w, h2);
   const auto brute = r.readHdr();
@@ -145,6 +160,7 @@ TEST(LightPass, TiledEqualsBruteForceWith4096Lights) {
       ASSERT_NEAR(a, b, 1e-3f * b + 1e-5f) << "pixel " << i;
       ASSERT_NEAR(tiled_ssbo.px[i][k], b, 1e-3f * b + 1e-5f) << "SSBO path, pixel " << i;
       ASSERT_NEAR(tiled_readback.px[i][k], b, 1e-3f * b + 1e-5f) << "read-back path, pixel " << i;
+      ASSERT_NEAR(tiled_batched.px[i][k], b, 1e-3f * b + 1e-5f) << "batched path, pixel " << i;
       max_rel = std::max(max_rel, double(std::abs(a - b) / (b + 1e-6f)));
       mean += b;
     }
@@ -275,14 +291,124 @@ TEST(LightPass, TiledEqualsBruteForceDepthEdgesAndCameraInsideLights) {
   EXPECT_GT(mean / tiled.px.size(), 0.01) << "lights should light the scene";
 }
 
-// The benchmark probes of the light pass (Renderer::LightPassProbe, `halfvec bench --breakdown`)
-// measure what they claim: FetchOnly walks each pixel's tile list and reads its lights (every lit
-// pixel = the sum of the premultiplied colors of the lights in its tile, so a light outside the
-// view adds nothing), SetupOnly runs no light loop (the image of the scene without lights), and
-// switching back to Shade gives the real image again. Tolerance: RGBA16F, 2^-11 relative.
+namespace {
+// Largest relative difference between two images (and the mean of b), asserting tiled == brute
+// force at every pixel within float summation-order tolerance: 1e-3 relative + 1e-5 absolute.
+double expectTiledEqualsBrute(const ImageRGBf& tiled, const ImageRGBf& brute, int w) {
+  double mean = 0.0;
+  for (size_t i = 0; i < tiled.px.size(); ++i) {
+    for (int k = 0; k < 3; ++k) {
+      const float a = tiled.px[i][k], b = brute.px[i][k];
+      EXPECT_NEAR(a, b, 1e-3f * b + 1e-5f) << "pixel " << i % size_t(w) << "," << i / size_t(w);
+      if (std::abs(a - b) > 1e-3f * b + 1e-5f) return -1.0;  // one message is enough
+      mean += b;
+    }
+  }
+  return mean / double(tiled.px.size());
+}
+}  // namespace
+
+// 16,384 small lights (range 0.1 to 0.25 m, radius 2 cm): many lights per tile group, few per
+// tile; the fused culling at its largest light count (8 chunks of 2,048 per group). Tiled equals
+// brute force, and two renderers produce the same image to the bit (each tile's list in light
+// order, whatever the run).
+TEST(LightPass, TiledEqualsBruteForceWith16384SmallLights) {
+  testContext();
+  Material m;
+  m.base_color = glm::vec3(0.7f);
+  m.roughness = 0.5f;
+  Scene s = planeScene(m, 8.0f);
+  s.camera.position = {0.0f, 3.0f, 4.0f};
+  s.camera.up = {0.0f, 1.0f, 0.0f};
+  RandomLights lights;
+  lights.count = 16384;
+  lights.seed = 5;
+  lights.y1 = 0.3f;
+  lights.intensity = 0.02f;
+  lights.range0 = 0.1f;
+  lights.range_span = 0.15f;
+  lights.radius = 0.02f;
+  lights.length = 0.1f;
+  addRandomLights(s, lights);
+  const int w = 96, h2 = 64;
+  render::Renderer r;
+  r.setScene(s);
+  const auto stats = r.render(w, h2);
+  const auto tiled = r.readHdr();
+  EXPECT_GT(stats.tile_light_entries, 2000u);
+  render::Renderer again;
+  again.setScene(s);
+  again.render(w, h2);
+  EXPECT_EQ(again.readHdr().px, tiled.px) << "renders must be reproducible";
+  s.settings.culling = Culling::BruteForce;
+  r.render(w, h2);
+  EXPECT_GT(expectTiledEqualsBrute(tiled, r.readHdr(), w), 0.01) << "lights should light the plane";
+}
+
+// Lights centered on tile corners (their spheres straddle 2 to 4 tiles) at view distances before,
+// on and just behind the near plane (0.1 m) and further away, with ranges of 0.15 to 0.6 m: the
+// rectangles of spheres crossing the near plane (the whole screen), of spheres entirely nearer
+// than it (none), and the tangent rectangles of the others at tile borders. Tiled equals brute
+// force, at a size that leaves partial tiles on two edges.
+TEST(LightPass, TiledEqualsBruteForceLightsStraddlingTilesAndNearPlane) {
+  testContext();
+  Material m;
+  m.base_color = glm::vec3(0.8f);
+  m.roughness = 0.45f;
+  Scene s = planeScene(m, 6.0f);
+  s.camera.position = {0.0f, 0.25f, 0.0f};
+  s.camera.target = {0.0f, 0.05f, -1.0f};
+  s.camera.up = {0.0f, 1.0f, 0.0f};
+  s.camera.near_plane = 0.1f;
+  const int w = 125, h2 = 70;  // partial tiles at the right and top edges, an odd width
+  const auto frame = render::makeFrameBlock(s, w, h2);
+  const glm::mat4 inv_view = glm::inverse(frame.view);
+  int n = 0;
+  for (int ty = 0; ty <= h2 / render::kTileHeight; ty += 3) {
+    for (int tx = 0; tx <= w / render::kTileSize; tx += 3) {
+      for (float z : {0.02f, 0.08f, 0.1f, 0.12f, 0.3f}) {
+        const glm::vec2 ndc(2.0f * float(tx * render::kTileSize) / float(w) - 1.0f,
+                            2.0f * float(ty * render::kTileHeight) / float(h2) - 1.0f);
+        const glm::vec4 view(ndc.x * z / frame.proj[0][0], ndc.y * z / frame.proj[1][1], -z, 1.0f);
+        Light l;
+        l.type = static_cast<LightType>(n % 3);
+        l.position = glm::vec3(inv_view * view);
+        l.color = {0.3f + 0.1f * float(n % 7), 0.5f, 0.9f - 0.1f * float(n % 5)};
+        l.intensity = 0.01f;
+        l.range = 0.15f + 0.05f * float(n % 10);
+        l.radius = l.type == LightType::Point ? 0.0f : 0.01f;
+        l.length = l.type == LightType::Tube ? 0.05f : 0.0f;
+        s.lights.push_back(l);
+        ++n;
+      }
+    }
+  }
+  render::Renderer r;
+  r.setScene(s);
+  r.render(w, h2);
+  const auto tiled = r.readHdr();
+  s.settings.culling = Culling::BruteForce;
+  r.render(w, h2);
+  EXPECT_GT(expectTiledEqualsBrute(tiled, r.readHdr(), w), 1e-3) << "lights should light the floor";
+}
+
+// The benchmark probes of the light pass (render::LightPassProbe, `halfvec bench --breakdown`)
+// measure what they claim. Both start each lit pixel at setupProbeValue (shaders/common/
+// probes.glsl) of its per-pixel setup, recomputed here on the CPU from the read-back G-buffer: the
+// stored value proves the G-buffer fetches, position reconstruction and surface setup ran (a
+// probe whose compiler dropped the setup would store something else). FetchOnly also walks each
+// pixel's tile list and reads its lights: it adds the sum of the premultiplied colors of the
+// lights in its tile (a light outside the view adds nothing). SetupOnly runs no light loop.
+// Switching back to Shade gives the real image again. Tolerance: RGBA16F (2^-11 relative) plus
+// float differences between the two compilers, as GpuMatchesSharedCpuCode: 4e-3 relative.
 TEST(LightPass, BenchmarkProbesDoWhatTheyMeasure) {
   testContext();
-  using Probe = render::Renderer::LightPassProbe;
+  using Probe = render::LightPassProbe;
+  auto probe = [](Probe p) {
+    render::DebugOptions o;
+    o.light_probe = p;
+    return o;
+  };
   Scene s = litPlane(LightType::Point);
   s.lights[0].color = {1.0f, 0.5f, 0.25f};
   Light sphere = litPlane(LightType::Sphere).lights[0];
@@ -302,31 +428,42 @@ TEST(LightPass, BenchmarkProbesDoWhatTheyMeasure) {
   r.setScene(s);
   r.render(w, h);
   const auto shaded = r.readHdr();
-
-  r.setLightPassProbe(Probe::FetchOnly);
-  r.render(w, h);
-  const auto fetched = r.readHdr();
-  for (size_t i = 0; i < fetched.px.size(); ++i) {
-    for (int k = 0; k < 3; ++k) {
-      ASSERT_NEAR(fetched.px[i][k], in_view[k], 1e-3f * in_view[k]) << "pixel " << i;
+  const auto g = r.readGBuffer();
+  const auto frame = render::makeFrameBlock(s, w, h);
+  // The probes' setup value of every pixel, from the CPU's copy of the shared code.
+  std::vector<glm::vec3> setup(size_t(w) * h);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const size_t i = size_t(y) * w + x;
+      ASSERT_EQ(g.model[i], static_cast<uint32_t>(ShadingModel::DefaultLit)) << "pixel " << i;
+      const glm::vec2 uv((x + 0.5f) / w, 1.0f - (y + 0.5f) / h);
+      const glm::vec3 P = glsl::reconstructWorldPosition(uv, g.depth[i], frame.inv_view_proj);
+      const glsl::Surface surf = glsl::makeSurface(g.normal[i], g.base_color[i], g.metallic[i],
+                                                   g.roughness[i], g.cavity[i]);
+      setup[i] = glsl::setupProbeValue(
+          surf, glsl::makeShadingPoint(surf, P, glm::normalize(s.camera.position - P)));
     }
   }
+  auto expectNear = [](const ImageRGBf& img, const std::vector<glm::vec3>& want, const char* what) {
+    for (size_t i = 0; i < want.size(); ++i) {
+      for (int k = 0; k < 3; ++k) {
+        ASSERT_NEAR(img.px[i][k], want[i][k], 4e-3f * want[i][k] + 1e-4f)
+            << what << ", pixel " << i << " channel " << k;
+      }
+    }
+  };
 
-  r.setLightPassProbe(Probe::SetupOnly);
+  r.setDebugOptions(probe(Probe::FetchOnly));
   r.render(w, h);
-  const auto setup_only = r.readHdr();
-  Scene dark = s;
-  dark.lights.clear();
-  render::Renderer rd;
-  rd.setScene(dark);
-  rd.render(w, h);
-  const auto no_lights = rd.readHdr();
-  ASSERT_EQ(setup_only.px.size(), no_lights.px.size());
-  for (size_t i = 0; i < no_lights.px.size(); ++i) {
-    ASSERT_EQ(setup_only.px[i], no_lights.px[i]) << "pixel " << i;
-  }
+  std::vector<glm::vec3> want = setup;
+  for (glm::vec3& v : want) v += in_view;
+  expectNear(r.readHdr(), want, "FetchOnly = setup + lights in the tile");
 
-  r.setLightPassProbe(Probe::Shade);
+  r.setDebugOptions(probe(Probe::SetupOnly));
+  r.render(w, h);
+  expectNear(r.readHdr(), setup, "SetupOnly = setup");
+
+  r.setDebugOptions(probe(Probe::Shade));
   r.render(w, h);
   const auto again = r.readHdr();
   float lit = 0.0f;

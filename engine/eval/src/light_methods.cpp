@@ -38,7 +38,10 @@ std::vector<MethodTiming> timeLightMethods(const Scene& scene,
     auto run = std::make_unique<Run>();
     run->scene = scene;
     run->scene.settings = m.settings;
-    if (m.fetch_only) run->r.setLightPassProbe(render::Renderer::LightPassProbe::FetchOnly);
+    render::DebugOptions debug;
+    if (m.fetch_only) debug.light_probe = render::LightPassProbe::FetchOnly;
+    debug.finish_each_pass = true;  // as bench: no pass timed with the previous one's raster
+    run->r.setDebugOptions(debug);
     run->r.setScene(run->scene);
     run->r.render(width, height);  // warm-up: compiles the programs
     runs.push_back(std::move(run));

@@ -160,19 +160,6 @@ RenderSettings truthSettings(const RenderSettings& s) {
   return t;
 }
 
-bool sameSettings(const RenderSettings& a, const RenderSettings& b) {
-  return a.width == b.width && a.height == b.height && a.exposure == b.exposure &&
-         a.tone_map == b.tone_map && a.gamma == b.gamma && a.dither == b.dither && a.d == b.d &&
-         a.v == b.v && a.f == b.f && a.diffuse == b.diffuse &&
-         a.remap_roughness == b.remap_roughness && a.falloff_plus_one == b.falloff_plus_one &&
-         a.sphere_diffuse == b.sphere_diffuse && a.sphere_normalization == b.sphere_normalization &&
-         a.sphere_specular == b.sphere_specular && a.tube_specular == b.tube_specular &&
-         a.tube_normalization == b.tube_normalization && a.tube_diffuse == b.tube_diffuse &&
-         a.culling == b.culling && a.env_brdf == b.env_brdf &&
-         a.energy_compensation == b.energy_compensation && a.irradiance == b.irradiance &&
-         a.specular_occlusion == b.specular_occlusion;
-}
-
 TradePlan tradePlan(const Scene& scene, int max_brute_force_lights) {
   TradePlan plan;
   const RenderSettings& b = scene.settings;
@@ -259,7 +246,7 @@ TradePlan tradePlan(const Scene& scene, int max_brute_force_lights) {
 
   for (TradeConfig& t : c) {
     auto same = std::find_if(plan.configs.begin(), plan.configs.end(), [&](const TradeConfig& o) {
-      return o.prefilter_samples == t.prefilter_samples && sameSettings(o.settings, t.settings);
+      return o.prefilter_samples == t.prefilter_samples && o.settings == t.settings;
     });
     if (same != plan.configs.end()) {
       same->aliases.push_back(t.name);

@@ -1,6 +1,8 @@
 #include "halfvec/gl/timer.hpp"
 
 #include <cstring>
+#include <functional>
+#include <utility>
 
 #include "halfvec/gl/log.hpp"
 
@@ -22,6 +24,7 @@ void PassTimer::begin(const std::string& pass) {
 }
 
 void PassTimer::end() {
+  if (finish_each_pass_) glFinish();
   for (auto it = entries_.rbegin(); it != entries_.rend(); ++it) {
     if (!it->stop) {
       it->stop = take();
@@ -56,6 +59,11 @@ ScopedPass::~ScopedPass() {
 }
 
 namespace {
+std::function<void(const std::string&)>& errorHandler() {
+  static std::function<void(const std::string&)> handler;
+  return handler;
+}
+
 void APIENTRY debugCallback(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
                             const GLchar* message, const void*) {
   if (type == GL_DEBUG_TYPE_PUSH_GROUP || type == GL_DEBUG_TYPE_POP_GROUP) return;
@@ -63,6 +71,9 @@ void APIENTRY debugCallback(GLenum source, GLenum type, GLuint id, GLenum severi
                      " (id " + std::to_string(id) + ")";
   // Compiler/linker messages repeat what ShaderError already carries: keep them at debug level.
   if (source == GL_DEBUG_SOURCE_SHADER_COMPILER) severity = GL_DEBUG_SEVERITY_NOTIFICATION;
+  if (type == GL_DEBUG_TYPE_ERROR && source != GL_DEBUG_SOURCE_SHADER_COMPILER && errorHandler()) {
+    errorHandler()(text);
+  }
   switch (severity) {
     case GL_DEBUG_SEVERITY_HIGH:
       log::error(text);
@@ -79,6 +90,10 @@ void APIENTRY debugCallback(GLenum source, GLenum type, GLuint id, GLenum severi
   }
 }
 }  // namespace
+
+void setDebugErrorHandler(std::function<void(const std::string&)> handler) {
+  errorHandler() = std::move(handler);
+}
 
 void installDebugOutput() {
   glEnable(GL_DEBUG_OUTPUT);

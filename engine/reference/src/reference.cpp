@@ -150,16 +150,13 @@ PixelOut shadePixel(const Context& ctx, size_t index, int x, int y) {
   // since the cosine strategy covers the hemisphere and pdfs are evaluated consistently.
   glm::vec3 Vs = glm::normalize(glm::vec3(Vt.x, Vt.y, std::max(Vt.z, 1e-4f)));
   float NoV = glm::clamp(glm::dot(N, V), 1e-4f, 1.0f);  // as the ambient pass
-  float spec_occlusion =
-      settings.specular_occlusion ? glsl::specularOcclusion(NoV, s.cavity, s.alpha) : 1.0f;
-  glm::vec3 energy(1.0f);
-  if (settings.energy_compensation) {
-    // The engine's factor 1 + f0 (1/E - 1) with E(NoV, roughness) integrated here rather than
-    // looked up in the 128^2 table; see docs/reference.md.
-    glm::vec2 ab = integrateEnvBrdfAt(NoV, s.roughness, 1024, ctx.brdf);
-    energy = glsl::energyCompensation(s.f0, ab);
-  }
-  const glm::vec3 ambient_spec_scale = energy * spec_occlusion;
+  // The ambient specular's factors as the engine applies them (ambientSpecularScale, ibl.glsl),
+  // with the energy compensation's E(NoV, roughness) integrated here rather than looked up in the
+  // 128^2 table; see docs/reference.md.
+  glm::vec2 ab(0.0f);
+  if (settings.energy_compensation) ab = integrateEnvBrdfAt(NoV, s.roughness, 1024, ctx.brdf);
+  const glm::vec3 ambient_spec_scale = glsl::ambientSpecularScale(
+      s, ab, NoV, settings.energy_compensation, settings.specular_occlusion);
 
   Moments m[kReferenceAovCount];
   Moments total_m;  // of the per-sample sum of the AOVs

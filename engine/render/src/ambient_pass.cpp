@@ -1,10 +1,8 @@
 // Ambient pass and the environment's GPU resources. In: G-buffer, the IBL bake (prefiltered
 // radiance cube, env BRDF table, SH9, irradiance cube). Out: ambient light added to the HDR target,
 // the environment drawn on background pixels.
-#include "halfvec/ibl/ibl.hpp"
+#include "passes.hpp"
 #include "pipeline_state.hpp"
-#include "halfvec/render/renderer.hpp"
-#include "targets.hpp"
 
 namespace hv::render {
 
@@ -27,15 +25,13 @@ gl::Texture uploadCube(const char* name, const CubeMapF& c) {
 }
 }  // namespace
 
-void Renderer::setEnvironment(const Scene& scene) {
-  env_ = std::make_unique<Environment>();
-  Environment& e = *env_;
-  e.block = gl::createBuffer("environment uniforms", sizeof(EnvironmentBlock));
-  e.trilinear = gl::createSampler("environment trilinear");
-  glSamplerParameteri(e.trilinear.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-  glSamplerParameteri(e.trilinear.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+GpuEnvironment::GpuEnvironment(const Scene& scene) {
+  block_ = gl::createBuffer("environment uniforms", sizeof(EnvironmentBlock));
+  trilinear_ = gl::createSampler("environment trilinear");
+  glSamplerParameteri(trilinear_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glSamplerParameteri(trilinear_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   for (GLenum w : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) {
-    glSamplerParameteri(e.trilinear.id(), w, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(trilinear_.id(), w, GL_CLAMP_TO_EDGE);
   }
   glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
   EnvironmentBlock block{};
@@ -44,61 +40,57 @@ void Renderer::setEnvironment(const Scene& scene) {
     opt.brdf = BrdfConfig::fromSettings(scene.settings);
     opt.irradiance_size = scene.settings.irradiance == Irradiance::Cubemap ? 32 : 0;
     const IblBake bake = bakeEnvironment(scene.environment, opt);
-    e.timings = bake.timings;
-    e.radiance = uploadCube("prefiltered radiance", bake.radiance);
-    if (bake.irradiance.size > 0) e.irradiance = uploadCube("irradiance", bake.irradiance);
-    e.env_brdf = gl::createTexture2D("environment BRDF (scale, bias)", GL_RG16F, bake.env_brdf_size,
-                                     bake.env_brdf_size);
-    glTextureSubImage2D(e.env_brdf.id(), 0, 0, 0, bake.env_brdf_size, bake.env_brdf_size, GL_RG,
+    timings_ = bake.timings;
+    radiance_ = uploadCube("prefiltered radiance", bake.radiance);
+    if (bake.irradiance.size > 0) irradiance_ = uploadCube("irradiance", bake.irradiance);
+    env_brdf_ = gl::createTexture2D("environment BRDF (scale, bias)", GL_RG16F, bake.env_brdf_size,
+                                    bake.env_brdf_size);
+    glTextureSubImage2D(env_brdf_.id(), 0, 0, 0, bake.env_brdf_size, bake.env_brdf_size, GL_RG,
                         GL_FLOAT, bake.env_brdf.data());
     for (int i = 0; i < 9; ++i) block.sh[i] = glm::vec4(bake.sh[i], 0.0f);
     block.env =
         glm::vec4(float(bake.radiance.mipCount() - 1), float(bake.env_brdf_size), 1.0f, 0.0f);
-    e.present = true;
-  }
-  glNamedBufferSubData(e.block.id(), 0, sizeof block, &block);
-}
-
-const BakeTimings* Renderer::environmentTimings() const {
-  return env_ && env_->present ? &env_->timings : nullptr;
-}
-
-void Renderer::ambientPass() {
-  gl::ScopedPass pass(timer_, "ambient");
-  applyState(PipelineState{});
-  Targets& t = *targets_;
-  // Defines from the variant key: environment presence, shading models, IBL options.
-  const GLuint prog = programs_.get(ambient_desc_);
-  glUseProgram(prog);
-  const GLuint inputs[4] = {t.base_cavity.id(), t.material.id(), t.normal.id(), t.depth.id()};
-  for (GLuint u = 0; u < 4; ++u) {
-    glBindTextureUnit(u, inputs[u]);
-    glBindSampler(u, nearest_.id());
-  }
-  const Environment& e = *env_;
-  // Units 5-7 always hold a texture of the right type (GL requires it for a sampled unit).
-  const GLuint radiance = e.radiance ? e.radiance.id() : fallbackCube();
-  glBindTextureUnit(5, radiance);
-  glBindTextureUnit(6, e.env_brdf ? e.env_brdf.id() : t.base_cavity.id());
-  glBindTextureUnit(7, e.irradiance ? e.irradiance.id() : radiance);
-  for (GLuint u = 5; u < 8; ++u) glBindSampler(u, e.trilinear.id());
-  glBindBufferBase(GL_UNIFORM_BUFFER, 1, e.block.id());
-  glBindImageTexture(0, t.hdr.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
-  glDispatchCompute((t.width + kTileSize - 1) / kTileSize, (t.height + kTileSize - 1) / kTileSize,
-                    1);
-  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-  for (GLuint u = 0; u < 8; ++u) glBindSampler(u, 0);
-  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
-  glUseProgram(0);
-}
-
-GLuint Renderer::fallbackCube() {
-  if (!fallback_cube_) {
-    fallback_cube_ = gl::createTextureCube("black cube", GL_RGBA16F, 1, 1);
+    present_ = true;
+  } else {
+    black_cube_ = gl::createTextureCube("black cube", GL_RGBA16F, 1, 1);
     const float black[4] = {0, 0, 0, 0};
-    glClearTexImage(fallback_cube_.id(), 0, GL_RGBA, GL_FLOAT, black);
+    glClearTexImage(black_cube_.id(), 0, GL_RGBA, GL_FLOAT, black);
   }
-  return fallback_cube_.id();
+  glNamedBufferSubData(block_.id(), 0, sizeof block, &block);
+}
+
+void GpuEnvironment::bind(GLuint fallback_2d) const {
+  // The units always hold a texture of the right type (GL requires it for a sampled unit).
+  const GLuint radiance = radiance_ ? radiance_.id() : black_cube_.id();
+  glBindTextureUnit(HV_UNIT_RADIANCE, radiance);
+  glBindTextureUnit(HV_UNIT_ENV_BRDF, env_brdf_ ? env_brdf_.id() : fallback_2d);
+  glBindTextureUnit(HV_UNIT_IRRADIANCE, irradiance_ ? irradiance_.id() : radiance);
+  for (GLuint u : {HV_UNIT_RADIANCE, HV_UNIT_ENV_BRDF, HV_UNIT_IRRADIANCE}) {
+    glBindSampler(u, trilinear_.id());
+  }
+  glBindBufferBase(GL_UNIFORM_BUFFER, HV_UBO_ENVIRONMENT, block_.id());
+}
+
+void GpuEnvironment::unbind() const {
+  for (GLuint u : {HV_UNIT_RADIANCE, HV_UNIT_ENV_BRDF, HV_UNIT_IRRADIANCE}) glBindSampler(u, 0);
+}
+
+void runAmbientPass(const PassContext& ctx, const AmbientPassInput& in, GLuint hdr, int width,
+                    int height) {
+  gl::ScopedPass pass(ctx.timer, "ambient");
+  applyState(PipelineState{});
+  // Defines from the variant key: environment presence, shading models, IBL options.
+  const GLuint prog = ctx.programs.get(in.program);
+  glUseProgram(prog);
+  bindGBuffer(in.gbuffer, ctx.nearest);
+  in.environment.bind(in.gbuffer.base_cavity);
+  glBindImageTexture(HV_IMAGE_HDR, hdr, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
+  glDispatchCompute((width + kTileSize - 1) / kTileSize, (height + kTileSize - 1) / kTileSize, 1);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+  unbindGBuffer();
+  in.environment.unbind();
+  glBindImageTexture(HV_IMAGE_HDR, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
+  glUseProgram(0);
 }
 
 }  // namespace hv::render

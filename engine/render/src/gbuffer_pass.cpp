@@ -3,15 +3,14 @@
 // One program per material variant of the scene's VariantKey (docs/variants.md).
 #include <glm/gtc/type_ptr.hpp>
 
+#include "passes.hpp"
 #include "pipeline_state.hpp"
-#include "halfvec/render/renderer.hpp"
-#include "targets.hpp"
 
 namespace hv::render {
 
-void Renderer::gbufferPass(const FrameBlock& frame) {
-  gl::ScopedPass pass(timer_, "gbuffer");
-  Targets& t = *targets_;
+void runGBufferPass(const PassContext& ctx, const GBufferPassInput& in,
+                    const GBufferPassOutput& out) {
+  gl::ScopedPass pass(ctx.timer, "gbuffer");
   PipelineState st;
   st.depth_test = true;
   st.depth_write = true;
@@ -21,36 +20,35 @@ void Renderer::gbufferPass(const FrameBlock& frame) {
   st.reversed_z_clip = true;
   applyState(st);
 
-  glBindFramebuffer(GL_FRAMEBUFFER, t.gbuffer.id());
-  glViewport(0, 0, t.width, t.height);
+  glBindFramebuffer(GL_FRAMEBUFFER, out.framebuffer);
+  glViewport(0, 0, out.width, out.height);
   const float zero[4] = {0, 0, 0, 0};
-  for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(t.gbuffer.id(), GL_COLOR, i, zero);
+  for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(out.framebuffer, GL_COLOR, i, zero);
   const float far_depth = 0.0f;  // reversed Z clears to 0 (infinity)
-  glClearNamedFramebufferfv(t.gbuffer.id(), GL_DEPTH, 0, &far_depth);
+  glClearNamedFramebufferfv(out.framebuffer, GL_DEPTH, 0, &far_depth);
   // Per-term debug views: the HDR target (attachment 3) keeps its clear value, 0, instead of the
   // emissive (after the clear: the color mask also masks clears).
-  const bool no_emissive = (frame.counts.w & kFrameNoEmissive) != 0;
-  if (no_emissive) glColorMaski(3, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  if (!in.emissive) glColorMaski(3, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
 
-  glBindVertexArray(gpu_->vertexArray());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, gpu_->materialBuffer());
+  glBindVertexArray(in.gpu.vertexArray());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_MATERIALS, in.gpu.materialBuffer());
   int bound_material = -1;
   int bound_variant = -1;
   bool culling = true;
-  const auto& draws = gpu_->draws();
-  // draw_order_ groups the draws by material variant: one program switch per variant.
-  for (size_t di : draw_order_) {
+  const auto& draws = in.gpu.draws();
+  // draw_order groups the draws by material variant: one program switch per variant.
+  for (size_t di : in.draw_order) {
     const DrawItem& d = draws[di];
-    const int variant = key_.material_variant[size_t(d.material)];
+    const int variant = in.key.material_variant[size_t(d.material)];
     if (variant != bound_variant) {
       bound_variant = variant;
-      glUseProgram(programs_.get(gbuffer_descs_.at(size_t(variant))));
+      glUseProgram(ctx.programs.get(in.programs.at(size_t(variant))));
       bound_material = -1;  // uniforms are per program
     }
-    const glm::mat4& model = scene_->objects[d.object].transform;
+    const glm::mat4& model = in.scene.objects[d.object].transform;
     const glm::mat4 normal_matrix = glm::transpose(glm::inverse(model));
-    glUniformMatrix4fv(0, 1, GL_FALSE, glm::value_ptr(model));
-    glUniformMatrix4fv(1, 1, GL_FALSE, glm::value_ptr(normal_matrix));
+    glUniformMatrix4fv(HV_LOC_MODEL, 1, GL_FALSE, glm::value_ptr(model));
+    glUniformMatrix4fv(HV_LOC_NORMAL_MATRIX, 1, GL_FALSE, glm::value_ptr(normal_matrix));
     // A mirroring transform flips the winding: cull the other face.
     const bool mirrored = glm::determinant(glm::mat3(model)) < 0.0f;
     glFrontFace(mirrored ? GL_CW : GL_CCW);
@@ -60,23 +58,26 @@ void Renderer::gbufferPass(const FrameBlock& frame) {
     }
     if (d.material != bound_material) {
       bound_material = d.material;
-      glUniform1i(2, d.material);
-      const auto tex = gpu_->materialTextures(d.material);
+      glUniform1i(HV_LOC_MATERIAL, d.material);
+      const auto tex = in.gpu.materialTextures(d.material);
+      static_assert(std::tuple_size_v<decltype(tex)> == HV_MATERIAL_TEXTURE_COUNT);
       for (GLuint u = 0; u < tex.size(); ++u) {
-        glBindTextureUnit(u, tex[u].texture);
-        glBindSampler(u, tex[u].sampler);
+        glBindTextureUnit(HV_UNIT_MATERIAL_TEXTURES + u, tex[u].texture);
+        glBindSampler(HV_UNIT_MATERIAL_TEXTURES + u, tex[u].sampler);
       }
     }
     glDrawElementsBaseVertex(
         GL_TRIANGLES, GLsizei(d.index_count), GL_UNSIGNED_INT,
         reinterpret_cast<const void*>(size_t(d.first_index) * sizeof(uint32_t)), d.base_vertex);
   }
-  for (GLuint u = 0; u < 5; ++u) glBindSampler(u, 0);
+  for (GLuint u = 0; u < HV_MATERIAL_TEXTURE_COUNT; ++u) {
+    glBindSampler(HV_UNIT_MATERIAL_TEXTURES + u, 0);
+  }
   glBindVertexArray(0);
   glUseProgram(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glFrontFace(GL_CCW);
-  if (no_emissive) glColorMaski(3, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  if (!in.emissive) glColorMaski(3, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
 }  // namespace hv::render

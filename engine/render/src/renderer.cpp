@@ -1,5 +1,4 @@
 #include "halfvec/render/renderer.hpp"
-#include "ltc_textures.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -67,7 +66,7 @@ void Renderer::applyTermView(VariantKey& key) const {
   key.settings.ambient_terms = term_view_->ambient_terms;
 }
 
-Renderer::Renderer() : targets_(std::make_unique<Targets>()) {
+Renderer::Renderer() : targets_(std::make_unique<Targets>()), passes_(std::make_unique<Passes>()) {
   frame_ubo_ = gl::createBuffer("frame uniforms", sizeof(FrameBlock));
   empty_vao_ = gl::createVertexArray("fullscreen triangle");
   programs_.setBinaryCacheDir(gl::defaultProgramCacheDir());
@@ -84,7 +83,7 @@ void Renderer::setScene(const Scene& scene) {
   scene_ = &scene;
   ++lights_version_;
   gpu_ = std::make_unique<GpuScene>(scene);
-  setEnvironment(scene);
+  passes_->environment = std::make_unique<GpuEnvironment>(scene);
   refreshVariants();
 }
 
@@ -194,28 +193,59 @@ FrameStats Renderer::render(int width, int height, DebugView view,
   // Settings edited in place (viewer), or another term view: other term masks.
   if (!(scene_->settings == key_settings_) || terms_changed) refreshVariants();
   programs_.beginFrame();
-  FrameBlock frame = makeFrameBlock(*scene_, width, height);
-  frame.counts.x = static_cast<uint32_t>(gpu_->lightCount());
-  frame.counts.y = static_cast<uint32_t>(tile_capacity_);
-  frame.counts.z = static_cast<uint32_t>(view);
-  // Term views: no background (ambient.comp), no emissive (masked out in gbufferPass).
-  frame.counts.w = !terms            ? 0u
-                   : terms->emissive ? kFrameNoBackground
-                                     : kFrameNoBackground | kFrameNoEmissive;
-  glNamedBufferSubData(frame_ubo_.id(), 0, sizeof frame, &frame);
-  glBindBufferBase(GL_UNIFORM_BUFFER, 0, frame_ubo_.id());
+  Targets& t = *targets_;
+  Passes& p = *passes_;
+  FrameUniforms frame{makeFrameBlock(*scene_, width, height), frame_ubo_.id()};
+  frame.block.counts.x = static_cast<uint32_t>(gpu_->lightCount());
+  frame.block.counts.y = static_cast<uint32_t>(p.culling.capacity());
+  frame.block.counts.z = static_cast<uint32_t>(view);
+  // Term views: no background (ambient.comp), no emissive (masked out in the G-buffer pass).
+  frame.block.counts.w = !terms            ? 0u
+                         : terms->emissive ? kFrameNoBackground
+                                           : kFrameNoBackground | kFrameNoEmissive;
+  frame.upload();
+  glBindBufferBase(GL_UNIFORM_BUFFER, HV_UBO_FRAME, frame_ubo_.id());
+  const PassContext ctx{programs_, timer_, nearest_.id()};
+  const GBufferView gbuffer = t.gbufferView();
 
-  gbufferPass(frame);
+  runGBufferPass(ctx,
+                 {*scene_, *gpu_, key_, gbuffer_descs_, draw_order_,
+                  (frame.block.counts.w & kFrameNoEmissive) == 0},
+                 {t.gbuffer.id(), width, height});
   const bool culled =
       scene_->settings.culling == Culling::Tiled || view == DebugView::LightsPerTile;
-  if (culled) cullLightsPass(frame);
-  lightPass(frame);
-  ambientPass();
+  TileListView tiles;
+  if (culled) {
+    tiles = p.culling.run(
+        ctx, frame,
+        {t.depth.id(), gpu_->lightBuffer(), gpu_->lightCount(), &gpu_->lightCullSpheres(),
+         debug_.tile_bound_limit, debug_.cull_batch_lights});
+  }
+  LightPass::Input light{
+      gbuffer,
+      gpu_->lightBuffer(),
+      gpu_->lightCount(),
+      scene_->settings.culling == Culling::Tiled ? p.culling.view() : TileListView{},
+      lightingDefines(),
+      debug_.light_probe,
+      debug_.light_texel_limit,
+      lightPassNeedsLtc()};
+  p.light.run(ctx, frame.block, light, t.hdr.id());
+  runAmbientPass(ctx, {gbuffer, *p.environment, ambient_desc_}, t.hdr.id(), width, height);
   emitterPass(view);
   const bool post = postPassesActive(view);
   final_ldr_ = 0;
-  tonemapPass(view, post ? std::nullopt : present_fbo, width, height);
+  // With post passes, the tone map writes the output target and postPasses presents it.
+  const bool present = present_fbo.has_value() && !post;
+  runTonemapPass(
+      ctx, {t.hdr.id(), gbuffer, p.culling.view().ranges, view, scene_->settings},
+      {present ? *present_fbo : t.output.id(), present ? t.output.id() : 0u, width, height},
+      empty_vao_.id());
   if (post) postPasses(view, present_fbo, width, height);
+  if (debug_.floor_pass) {
+    if (!t.floor) t.floor = gl::createTexture2D("floor pass scratch", GL_RGBA16F, width, height);
+    runFloorPass(ctx, gbuffer, t.floor.id(), width, height);
+  }
   applyState(PipelineState{});
 
   FrameStats stats;
@@ -226,11 +256,29 @@ FrameStats Renderer::render(int width, int height, DebugView view,
   if (culled) {
     // The scan's total, for the stats: read after the timers, which already waited for the frame.
     uint32_t total = 0;
-    glGetNamedBufferSubData(tile_indices_.id(), 0, sizeof total, &total);
+    glGetNamedBufferSubData(tiles.indices, 0, sizeof total, &total);
     tile_entries_ = total;
   }
   stats.tile_light_entries = tile_entries_;
   return stats;
+}
+
+void Renderer::setDebugOptions(const DebugOptions& options) {
+  debug_ = options;
+  timer_.setFinishEachPass(options.finish_each_pass);
+}
+
+size_t Renderer::tileListReadbacks() const {
+  return passes_->culling.readbacks();
+}
+
+size_t Renderer::tileListCapacity() const {
+  return passes_->culling.capacity();
+}
+
+const BakeTimings* Renderer::environmentTimings() const {
+  const auto& env = passes_->environment;
+  return env && env->present() ? &env->timings() : nullptr;
 }
 
 namespace {
@@ -277,8 +325,9 @@ Renderer::LightWork Renderer::lightWork() const {
   const int tiles_x = (t.width + kTileSize - 1) / kTileSize;
   const int tiles_y = (t.height + kTileHeight - 1) / kTileHeight;
   std::vector<uint32_t> ranges(size_t(tiles_x) * tiles_y * 2);
-  if (!brute && tile_ranges_) {
-    glGetNamedBufferSubData(tile_ranges_.id(), 0, GLsizeiptr(ranges.size() * sizeof(uint32_t)),
+  const TileListView tiles = passes_->culling.view();
+  if (!brute && tiles) {
+    glGetNamedBufferSubData(tiles.ranges, 0, GLsizeiptr(ranges.size() * sizeof(uint32_t)),
                             ranges.data());
   }
   LightWork w;
@@ -331,6 +380,14 @@ GBufferReadback Renderer::readGBuffer() const {
     g.normal[i] = glsl::octDecode(glsl::vec2(nrm[2 * i], nrm[2 * i + 1]));
   }
   return g;
+}
+
+// The light program reads the LTC table (lights.glsl HV_LTC_TABLE) when a light type it compiles
+// shades its specular with it.
+bool Renderer::lightPassNeedsLtc() const {
+  const RenderSettings& s = key_.settings;
+  return (key_.sphere_lights && s.sphere_specular == SphereSpecular::Ltc) ||
+         (key_.tube_lights && s.tube_specular == TubeSpecular::Ltc);
 }
 
 }  // namespace hv::render

@@ -1,9 +1,9 @@
-// The frame's render targets (private to engine/render).
+// The frame's render targets and the pass objects (private to engine/render).
 #pragma once
 
 #include "halfvec/gl/objects.hpp"
-#include "halfvec/ibl/ibl.hpp"
 #include "halfvec/render/renderer.hpp"
+#include "passes.hpp"
 
 namespace hv::render {
 
@@ -15,17 +15,19 @@ struct Renderer::Targets {
   gl::Texture depth;        // DEPTH_COMPONENT32F reversed Z
   gl::Texture hdr;          // RGBA16F accumulation
   gl::Texture ldr;          // RGBA8 output
+  gl::Texture floor;        // RGBA16F scratch of the floor pass (created when first needed)
   gl::Framebuffer gbuffer;  // base, material, normal, hdr + depth
   gl::Framebuffer output;   // ldr
+  GBufferView gbufferView() const {
+    return {base_cavity.id(), material.id(), normal.id(), depth.id()};
+  }
 };
 
-// The environment's GPU resources (uploaded IBL bake).
-struct Renderer::Environment {
-  gl::Texture radiance, irradiance, env_brdf;
-  gl::Buffer block;
-  gl::Sampler trilinear;
-  bool present = false;
-  BakeTimings timings;
+// The passes that keep resources from frame to frame, and the scene's environment.
+struct Renderer::Passes {
+  LightCulling culling;
+  LightPass light;
+  std::unique_ptr<GpuEnvironment> environment;
 };
 
 }  // namespace hv::render

@@ -19,7 +19,7 @@ struct MethodTiming {
 };
 
 // One method: a name and the scene settings it renders with; `fetch_only` renders the light pass's
-// FetchOnly probe instead (render::Renderer::LightPassProbe: the same lists and light fetches,
+// FetchOnly probe instead (render::LightPassProbe: the same lists and light fetches,
 // no shading), whose time subtracted from a method's is that method's shading arithmetic.
 struct TimedMethod {
   std::string name;

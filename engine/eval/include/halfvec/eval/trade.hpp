@@ -41,9 +41,6 @@ struct TradeConfig {
 // the environment are integrated exactly by the reference whatever the scene's methods.
 RenderSettings truthSettings(const RenderSettings& s);
 
-// True when every field of a and b is equal.
-bool sameSettings(const RenderSettings& a, const RenderSettings& b);
-
 struct TradePlan {
   std::vector<TradeConfig> configs;  // first: "scene" (the scene's own settings)
   std::vector<std::string> skipped;  // options left out for this scene, each with the reason

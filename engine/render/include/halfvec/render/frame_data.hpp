@@ -6,18 +6,19 @@
 #include <glm/glm.hpp>
 
 #include "halfvec/scene/scene.hpp"
+#include "halfvec/shaders/common/bindings.glsl"
 
 namespace hv::render {
 
-constexpr int kTileSize = 8;    // HV_TILE_SIZE in frame.glsl (culling tile width)
-constexpr int kTileHeight = 4;  // HV_TILE_HEIGHT in frame.glsl (culling tile height)
-// HV_LIGHT_GROUP_TILES in frame.glsl: tiles per workgroup (a column) of the light pass.
-constexpr int kLightGroupTiles = 8;
+constexpr int kTileSize = HV_TILE_SIZE;      // culling tile width (shaders/common/bindings.glsl)
+constexpr int kTileHeight = HV_TILE_HEIGHT;  // culling tile height
+// Tiles per workgroup (a column) of the light pass.
+constexpr int kLightGroupTiles = HV_LIGHT_GROUP_TILES;
 
-// FrameBlock::counts.w bits (HV_FRAME_* in frame.glsl), set for the per-term debug views.
+// FrameBlock::counts.w bits (HV_FRAME_* in bindings.glsl), set for the per-term debug views.
 enum FrameFlag : uint32_t {
-  kFrameNoBackground = 1,  // the ambient pass writes 0 on background pixels
-  kFrameNoEmissive = 2,    // the G-buffer pass leaves the HDR target at 0 (no emissive)
+  kFrameNoBackground = HV_FRAME_NO_BACKGROUND,  // the ambient pass writes 0 on background pixels
+  kFrameNoEmissive = HV_FRAME_NO_EMISSIVE,      // the G-buffer pass leaves the HDR target at 0
 };
 
 struct alignas(16) FrameBlock {

@@ -77,6 +77,42 @@ struct Manifest {
 
 constexpr int kGBufferBytesPerPixel = 16;  // RGBA8 + RGBA8 + RG16 + D32F (docs/gbuffer.md)
 
+// Benchmark instrument (`halfvec bench --breakdown`): what the light pass runs per light.
+//  Shade      the real pass
+//  FetchOnly  the same loops and light fetches, each light adding its premultiplied color
+//             (no shading math): the cost of walking the lists and reading the lights
+//  SetupOnly  G-buffer reads, per-pixel setup and the store, no light loop at all
+// The two probes act on the tiled pass (the brute-force baseline ignores them) and render wrong
+// images by design; never left on outside a measurement.
+enum class LightPassProbe { Shade = 0, FetchOnly = 1, SetupOnly = 2 };
+
+// Knobs for benchmarks and tests, kept off the renderer's normal API (Renderer::setDebugOptions).
+// The defaults are the normal renderer.
+struct DebugOptions {
+  LightPassProbe light_probe = LightPassProbe::Shade;
+  // The tiled light pass reads lights and tile lists through buffer textures when they fit in
+  // min(GL_MAX_TEXTURE_BUFFER_SIZE, this many texels; 0 = no extra cap), else through the SSBOs.
+  // Tests set a small cap to run the SSBO path.
+  size_t light_texel_limit = 0;
+  // The tile index list is sized from a CPU upper bound of the culling's (tile, light) pairs
+  // when that bound is at most this many entries (default 32 Mi = 128 MiB), else from the GPU's
+  // exact count read back mid-frame. Tests set 0 to run the read-back path.
+  size_t tile_bound_limit = size_t(32) << 20;
+  // Light culling runs in one dispatch per group of tiles up to HV_CULL_FUSED_MAX_LIGHTS (16,384)
+  // lights, else in batches of that many lights (count, reserve, fill; docs/lights.md). A value
+  // in [1, 16384) forces the batched path with batches of this many lights (tests).
+  size_t cull_batch_lights = 0;
+  // Adds the floor pass ("floor", after the tone map): a compute pass that reads the G-buffer and
+  // writes an RGBA16F scratch target, the least a full-screen pass costs (shaders/passes/
+  // floor.comp). `halfvec bench --frame` reports every pass as a multiple of it, from the same
+  // frames. The image is unchanged.
+  bool floor_pass = false;
+  // Every pass waits for its commands to complete before its end timestamp
+  // (gl::PassTimer::setFinishEachPass), so that a raster pass whose rasterization the driver
+  // defers (llvmpipe) is not timed in the next pass. `halfvec bench --frame` sets it.
+  bool finish_each_pass = false;
+};
+
 class Renderer {
  public:
   Renderer();  // needs a current GL 4.5 context
@@ -113,27 +149,13 @@ class Renderer {
   // Counts the light pass's work of the last frame (reads back; for benchmarks and tests).
   LightWork lightWork() const;
 
-  // The tiled light pass reads lights and tile lists through buffer textures when they fit in
-  // min(GL_MAX_TEXTURE_BUFFER_SIZE, this many texels; 0 = no extra cap), else through the SSBOs.
-  // Tests set a small cap to run the SSBO path.
-  void setLightTexelLimit(size_t texels) { light_texel_limit_ = texels; }
-  // The tile index list is sized from a CPU upper bound of the culling's (tile, light) pairs
-  // when that bound is at most this many entries (default 32 Mi = 128 MiB), else from the GPU's
-  // exact count read back mid-frame. Tests set 0 to run the read-back path.
-  void setTileListBoundLimit(size_t entries) { tile_bound_limit_ = entries; }
-  // Benchmark instrument (`halfvec bench --breakdown`): what the light pass runs per light.
-  //  Shade      the real pass
-  //  FetchOnly  the same loops and light fetches, each light adding its premultiplied color
-  //             (no shading math): the cost of walking the lists and reading the lights
-  //  SetupOnly  G-buffer reads, per-pixel setup and the store, no light loop at all
-  // The two probes act on the tiled pass (the brute-force baseline ignores them) and render wrong
-  // images by design; never left on outside a measurement.
-  enum class LightPassProbe { Shade = 0, FetchOnly = 1, SetupOnly = 2 };
-  void setLightPassProbe(LightPassProbe probe) { light_probe_ = probe; }
+  // Benchmark and test instruments (DebugOptions); the defaults are the normal renderer.
+  void setDebugOptions(const DebugOptions& options);
+  const DebugOptions& debugOptions() const { return debug_; }
   // Frames so far whose culling read the list total back mid-frame (the bound was too large).
-  size_t tileListReadbacks() const { return list_readbacks_; }
+  size_t tileListReadbacks() const;
   // Capacity of the tile index list (entries).
-  size_t tileListCapacity() const { return tile_capacity_; }
+  size_t tileListCapacity() const;
 
   // Timings of the environment bake of the current scene (nullptr without an environment).
   const BakeTimings* environmentTimings() const;
@@ -154,13 +176,8 @@ class Renderer {
 
  private:
   struct Targets;
+  struct Passes;  // the pass objects and their resources (engine/render/src/passes.hpp)
   void ensureTargets(int width, int height);
-  void setEnvironment(const Scene& scene);
-  void gbufferPass(const FrameBlock& frame);
-  void cullLightsPass(FrameBlock& frame);  // may grow the list: updates frame.counts.y
-  void lightPass(const FrameBlock& frame);
-  void ambientPass();
-  void tonemapPass(DebugView view, std::optional<GLuint> present_fbo, int width, int height);
   void refreshVariants();  // key, program descriptions, draw order
   // Overrides the key's term masks with those of the per-term view being rendered (none: the
   // scene's own). refreshVariants applies it; render sets it from its view.
@@ -177,29 +194,15 @@ class Renderer {
   const Scene* scene_ = nullptr;
   std::unique_ptr<GpuScene> gpu_;
   std::unique_ptr<Targets> targets_;
+  std::unique_ptr<Passes> passes_;
   gl::ProgramCache programs_;
   gl::PassTimer timer_;
   gl::Buffer frame_ubo_;
-  // Tiled culling (light_pass.cpp, shaders/passes/light_cull.comp). Per tile: ranges (offset,
-  // count), types (points, spheres), bounds (surface AABB), counters (per light type).
-  gl::Buffer tile_ranges_, tile_types_, tile_bounds_, tile_counters_, tile_indices_;
-  size_t tile_capacity_ = 0;       // uints in the tile index list (sized from the exact count)
-  size_t tile_buffers_tiles_ = 0;  // tiles the per-tile buffers hold
-  size_t tile_entries_ = 0;        // entries the last culling pass produced (read at frame end)
-  size_t tile_bound_limit_ = size_t(32) << 20;
-  size_t list_readbacks_ = 0;
-  void growTileList(size_t need);
-  gl::Texture light_texels_, tile_index_texels_;  // buffer-texture views for the light pass
-  size_t light_texel_limit_ = 0;                  // see setLightTexelLimit
-  LightPassProbe light_probe_ = LightPassProbe::Shade;
   gl::VertexArray empty_vao_;
   gl::Sampler nearest_;
-  gl::Texture fallback_cube_;
-  GLuint fallbackCube();
-  std::unique_ptr<class LtcTextures> ltc_;  // the LTC table, for the LTC light modes
-  bool lightPassNeedsLtc() const;
-  struct Environment;
-  std::unique_ptr<Environment> env_;
+  size_t tile_entries_ = 0;  // entries the last culling pass produced (read at frame end)
+  DebugOptions debug_;
+  bool lightPassNeedsLtc() const;  // the light program reads the LTC table (lights.glsl)
 
   // Optional stages (post_passes.cpp): emitter geometry, highlight, post-AA.
   ViewOptions view_options_;

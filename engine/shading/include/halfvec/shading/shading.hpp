@@ -24,6 +24,7 @@ namespace {
 #include "halfvec/shaders/common/lights.glsl"
 #include "halfvec/shaders/common/cull.glsl"
 #include "halfvec/shaders/common/gbuffer.glsl"
+#include "halfvec/shaders/common/probes.glsl"
 #include "halfvec/shaders/common/tonemap.glsl"
 #include "halfvec/shaders/common/fxaa.glsl"
 #include "halfvec/shaders/common/emitter.glsl"

@@ -1,0 +1,185 @@
+// Light culling (compute: tile bounds, light binning into groups of tiles, per-tile walks).
+// In: depth, lights. Out: per-tile light lists (TileListView).
+#include <algorithm>
+
+#include "passes.hpp"
+#include "pipeline_state.hpp"
+#include "halfvec/shading/shading.hpp"
+
+namespace hv::render {
+
+namespace {
+constexpr size_t kTileHeaderUints = HV_TILE_LIST_HEADER_UINTS;
+// Upper bound of the (tile, light) pairs the culling can find: the sum of the lights' tile
+// rectangles (sphereTileRect, the function the GPU runs), each widened by one tile on every side
+// so that rounding differences between the two compilers cannot make it smaller than the GPU's.
+size_t listBound(const std::vector<glm::vec4>& spheres, const FrameBlock& frame) {
+  const glm::vec2 scale(frame.proj[0][0], frame.proj[1][1]);
+  const glm::vec2 viewport(frame.viewport.x, frame.viewport.y);
+  const glm::ivec2 tiles(frame.viewport.z, frame.viewport.w);
+  const glm::vec2 tile_px(kTileSize, kTileHeight);
+  size_t bound = 0;
+  for (const glm::vec4& s : spheres) {
+    const glm::vec3 c = glm::vec3(frame.view * glm::vec4(glm::vec3(s), 1.0f));
+    glm::ivec4 r;
+    if (!glsl::sphereTileRect(c, s.w, scale, frame.near_params.x, viewport, tiles, tile_px, r)) {
+      continue;
+    }
+    const glm::ivec2 lo = glm::max(glm::ivec2(r.x, r.y) - 1, glm::ivec2(0));
+    const glm::ivec2 hi = glm::min(glm::ivec2(r.z, r.w) + 1, tiles - 1);
+    bound += size_t(hi.x - lo.x + 1) * size_t(hi.y - lo.y + 1);
+  }
+  return bound;
+}
+}  // namespace
+
+void LightCulling::growList(size_t need) {
+  capacity_ = std::max(capacity_, need + need / 4);  // headroom: fewer reallocations
+  indices_ =
+      gl::createBuffer("tile light indices", (kTileHeaderUints + capacity_) * sizeof(uint32_t));
+}
+
+TileListView LightCulling::view() const {
+  return {ranges_.id(), types_.id(), indices_.id(), capacity_};
+}
+
+void LightCulling::ensureBuffers(size_t tiles, size_t groups, size_t lights, size_t mask_uints) {
+  if (!ranges_ || tiles > tiles_ || groups > groups_) {
+    tiles_ = std::max(tiles, tiles_);
+    groups_ = std::max(groups, groups_);
+    ranges_ = gl::createBuffer("tile light ranges", tiles_ * 2 * sizeof(uint32_t));
+    types_ = gl::createBuffer("tile light type split", tiles_ * 2 * sizeof(uint32_t));
+    tile_state_ =
+        gl::createBuffer("culling tile counts and cursors", tiles_ * 4 * sizeof(uint32_t));
+    // Per tile, per block (8 per group), per group: min and max.
+    bounds_ = gl::createBuffer("culling tile, block and group bounds",
+                               (tiles_ + groups_ * 9) * 2 * 4 * sizeof(float));
+  }
+  if (!lights_ || lights > lights_capacity_) {
+    lights_capacity_ = std::max<size_t>(lights, 1);
+    lights_ = gl::createBuffer("culling lights (view sphere, tile rectangle)",
+                               lights_capacity_ * 8 * sizeof(uint32_t));
+  }
+  if (!masks_ || mask_uints > mask_uints_) {
+    mask_uints_ = mask_uints;
+    masks_ = gl::createBuffer("culling group light masks", mask_uints_ * sizeof(uint32_t));
+    const uint32_t zero = 0;  // the walks keep them 0 between frames
+    glClearNamedBufferData(masks_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  }
+}
+
+// Tiled culling (shaders/passes/light_cull.comp; docs/lights.md): per tile, its surface bounds
+// (and per block of 2 x 4 tiles and per group of 8 x 8 tiles); per light and band of group rows,
+// its view sphere and tile rectangle, and its bit in the light mask of every group its sphere
+// touches; per group, the mask refined per block, then each tile's walk of its block's mask in
+// light order, twice: count, then (after one reservation per group) write. Up to
+// HV_CULL_FUSED_MAX_LIGHTS lights the last steps are one dispatch; above, the lights are binned
+// and walked in batches. No cap on a tile's list: the index list is sized before the dispatches
+// from an upper bound computed on the CPU (listBound: the lights' tile rectangles, which contain
+// every pair the GPU can find), so nothing waits for the GPU. Only when that bound exceeds
+// Input::bound_limit (32 Mi entries, 128 MiB, by default) is the exact total read back after the
+// dispatches (a pipeline stall on a GPU) and, if the list was too small, the list grown to it
+// and the culling run again.
+TileListView LightCulling::run(const PassContext& ctx, FrameUniforms& frame, const Input& in) {
+  gl::ScopedPass pass(ctx.timer, "light_cull");
+  applyState(PipelineState{});
+  const FrameBlock& f = frame.block;
+  const size_t tiles = size_t(f.viewport.z) * f.viewport.w;
+  const GLuint groups_x = (f.viewport.z + HV_CULL_GROUP_TILES - 1) / HV_CULL_GROUP_TILES;
+  const GLuint groups_y = (f.viewport.w + HV_CULL_GROUP_TILES - 1) / HV_CULL_GROUP_TILES;
+  const size_t groups = size_t(groups_x) * groups_y;
+  const size_t batch_lights = in.batch_lights > 0 && in.batch_lights < HV_CULL_FUSED_MAX_LIGHTS
+                                  ? in.batch_lights
+                                  : HV_CULL_FUSED_MAX_LIGHTS;
+  const bool fused = in.light_count <= batch_lights && batch_lights == HV_CULL_FUSED_MAX_LIGHTS;
+  // Mask words per group: one bit per light of a batch; summary words: one bit per mask word.
+  const size_t words = (std::min(in.light_count, batch_lights) + 31) / 32;
+  const size_t summary = (words + 31) / 32;
+  ensureBuffers(tiles, groups, in.light_count, groups * (words + summary));
+  if (!indices_) growList(std::max<size_t>(tiles * 16, 1 << 16));
+  const uint32_t zero = 0;
+  if (in.light_count == 0) {  // empty lists
+    glClearNamedBufferSubData(indices_.id(), GL_R32UI, 0, sizeof zero, GL_RED_INTEGER,
+                              GL_UNSIGNED_INT, &zero);
+    for (GLuint b : {ranges_.id(), types_.id()}) {
+      glClearNamedBufferSubData(b, GL_R32UI, 0, tiles * 2 * sizeof(uint32_t), GL_RED_INTEGER,
+                                GL_UNSIGNED_INT, &zero);
+    }
+    return view();
+  }
+  // Size the list before anything runs, from the CPU bound when it is small enough.
+  const size_t bound = listBound(*in.cull_spheres, f);
+  const bool bounded = bound <= in.bound_limit;
+  if (bounded && bound > capacity_) growList(bound);
+  auto stage = [&](const char* name, const char* value) {
+    return ctx.programs.get(
+        {name, {{GL_COMPUTE_SHADER, "passes/light_cull.comp"}}, {{"HV_CULL_STAGE", value}}});
+  };
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_LIGHTS, in.lights);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_CULL_LIGHTS, lights_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_CULL_BOUNDS, bounds_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_CULL_MASKS, masks_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_CULL_TILE_STATE, tile_state_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_TILE_RANGES, ranges_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_TILE_TYPES, types_.id());
+  glBindTextureUnit(HV_UNIT_DEPTH, in.depth);
+  glBindSampler(HV_UNIT_DEPTH, ctx.nearest);
+  const GLuint bands = (groups_y + HV_CULL_BIN_GROUP_ROWS - 1) / HV_CULL_BIN_GROUP_ROWS;
+  // One stage over the lights [first, end) of a batch (BIN: per light and band; others: per
+  // group of tiles).
+  auto dispatch = [&](GLuint program, size_t first, size_t end, bool per_light) {
+    glUseProgram(program);
+    glProgramUniform4ui(program, HV_LOC_CULL_BATCH, uint32_t(first), uint32_t(end), uint32_t(words),
+                        uint32_t(summary));
+    if (per_light) {
+      glDispatchCompute(GLuint((end - first + 63) / 64), bands, 1);
+    } else {
+      glDispatchCompute(groups_x, groups_y, 1);
+    }
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  };
+  auto cull = [&] {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_TILE_INDICES, indices_.id());
+    const GLuint bin = stage("light_cull_bin", "1");
+    dispatch(stage("light_cull_bounds", "0"), 0, 0, false);  // also sets the list's total to 0
+    if (fused) {
+      dispatch(bin, 0, in.light_count, true);
+      dispatch(stage("light_cull_tiles", "2"), 0, in.light_count, false);
+    } else {
+      const GLuint count = stage("light_cull_count", "3"), fill = stage("light_cull_fill", "5");
+      for (size_t b = 0; b < in.light_count; b += batch_lights) {
+        const size_t end = std::min(b + batch_lights, in.light_count);
+        dispatch(bin, b, end, true);
+        dispatch(count, b, end, false);
+      }
+      dispatch(stage("light_cull_reserve", "4"), 0, 0, false);
+      for (size_t b = 0; b < in.light_count; b += batch_lights) {
+        const size_t end = std::min(b + batch_lights, in.light_count);
+        dispatch(bin, b, end, true);
+        dispatch(fill, b, end, false);
+      }
+    }
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  };
+  if (frame.block.counts.y != capacity_) {  // the list was created or grown: tell the shaders
+    frame.block.counts.y = static_cast<uint32_t>(capacity_);
+    frame.upload();
+  }
+  cull();
+  if (!bounded) {  // the bound is too loose to allocate: read the exact total back (a stall)
+    uint32_t total = 0;
+    glGetNamedBufferSubData(indices_.id(), 0, sizeof total, &total);
+    ++readbacks_;
+    if (total > capacity_) {  // the fill left entries out: grow to the need, cull again
+      growList(total);
+      frame.block.counts.y = static_cast<uint32_t>(capacity_);
+      frame.upload();
+      cull();
+    }
+  }
+  glBindSampler(HV_UNIT_DEPTH, 0);
+  glUseProgram(0);
+  return view();
+}
+
+}  // namespace hv::render

@@ -1,0 +1,178 @@
+// The passes of a frame, each with its inputs and outputs in its signature (private to
+// engine/render). A pass reads only what its input struct names and writes only what its output
+// names; the Renderer (renderer.cpp) owns the targets and wires one pass's output into the next.
+// Adding a pass: a struct of what it reads and writes, a run function in its own .cpp, one line in
+// Renderer::render. Resource slots are the #defines of shaders/common/bindings.glsl, which the
+// shaders include too.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "halfvec/gl/objects.hpp"
+#include "halfvec/gl/program.hpp"
+#include "halfvec/gl/timer.hpp"
+#include "halfvec/ibl/ibl.hpp"
+#include "halfvec/render/frame_data.hpp"
+#include "halfvec/render/gpu_scene.hpp"
+#include "halfvec/render/renderer.hpp"
+#include "halfvec/render/variant_key.hpp"
+#include "halfvec/shaders/common/bindings.glsl"
+#include "ltc_textures.hpp"
+
+namespace hv::render {
+
+// What every pass runs with: the program cache, the frame's timer (each pass is one timed,
+// named scope) and the samplers the compute passes share.
+struct PassContext {
+  gl::ProgramCache& programs;
+  gl::PassTimer& timer;
+  GLuint nearest = 0;  // nearest, clamp to edge: for texelFetch-style reads
+};
+
+// The per-frame uniform block and its buffer (binding HV_UBO_FRAME for the whole frame). A pass
+// that changes a field (culling grows the tile list) uploads it again.
+struct FrameUniforms {
+  FrameBlock block;
+  GLuint ubo = 0;
+  void upload() const;
+};
+
+// The four G-buffer targets as the passes after the G-buffer pass read them.
+struct GBufferView {
+  GLuint base_cavity = 0, material = 0, normal = 0, depth = 0;
+};
+// Binds the G-buffer on units HV_UNIT_BASE_CAVITY .. HV_UNIT_DEPTH with `sampler`.
+void bindGBuffer(const GBufferView& g, GLuint sampler);
+// Releases what bindGBuffer bound (the samplers of those units).
+void unbindGBuffer();
+
+// The tile light lists: culling's output, read by the light pass, the lights_per_tile view and
+// Renderer::lightWork. `ranges`: per tile (offset, count) into `indices` (after a 4-uint header
+// whose first uint is the total); `types`: per tile (points, spheres), tubes follow.
+struct TileListView {
+  GLuint ranges = 0, types = 0, indices = 0;
+  size_t capacity = 0;  // entries `indices` holds after its header
+  explicit operator bool() const { return indices != 0; }
+};
+
+// ---- G-buffer (gbuffer_pass.cpp) --------------------------------------------------------------
+struct GBufferPassInput {
+  const Scene& scene;
+  const GpuScene& gpu;
+  const VariantKey& key;
+  const std::vector<gl::ProgramDesc>& programs;  // per material variant of `key`
+  const std::vector<size_t>& draw_order;         // gpu.draws() indices, grouped by variant
+  bool emissive = true;                          // false: the HDR attachment keeps its clear, 0
+};
+struct GBufferPassOutput {
+  GLuint framebuffer = 0;  // base+cavity, material, normal, HDR color attachments + depth
+  int width = 0, height = 0;
+};
+void runGBufferPass(const PassContext& ctx, const GBufferPassInput& in,
+                    const GBufferPassOutput& out);
+
+// ---- Light culling (light_cull_pass.cpp) -------------------------------------------------------
+class LightCulling {
+ public:
+  struct Input {
+    GLuint depth = 0;   // the G-buffer's depth
+    GLuint lights = 0;  // GpuLight records (std430)
+    size_t light_count = 0;
+    const std::vector<glm::vec4>* cull_spheres = nullptr;  // world bounding spheres per light
+    size_t bound_limit = size_t(32) << 20;                 // DebugOptions::tile_bound_limit
+    size_t batch_lights = 0;                               // DebugOptions::cull_batch_lights
+  };
+  // Builds the lists for `frame`; updates frame.block.counts.y (list capacity) when it grows.
+  TileListView run(const PassContext& ctx, FrameUniforms& frame, const Input& in);
+  TileListView view() const;
+  size_t readbacks() const { return readbacks_; }
+  size_t capacity() const { return capacity_; }
+
+ private:
+  void growList(size_t need);
+  // Sizes the per-tile, per-group and per-light buffers (masks cleared when created).
+  void ensureBuffers(size_t tiles, size_t groups, size_t lights, size_t mask_uints);
+  gl::Buffer ranges_, types_, indices_;  // the lists (TileListView)
+  gl::Buffer lights_;                    // per light: view-space sphere, tile rectangle
+  gl::Buffer bounds_;                    // per tile, block and group: surface AABB
+  gl::Buffer masks_;                     // per group: light mask (0 between frames)
+  gl::Buffer tile_state_;                // per tile: counts, then cursors (batched culling)
+  size_t capacity_ = 0;                  // uints in the index list after its header
+  size_t tiles_ = 0, groups_ = 0, lights_capacity_ = 0, mask_uints_ = 0;
+  size_t readbacks_ = 0;
+};
+
+// ---- Light pass (light_pass.cpp) ---------------------------------------------------------------
+class LightPass {
+ public:
+  struct Input {
+    GBufferView gbuffer;
+    GLuint lights = 0;
+    size_t light_count = 0;
+    TileListView tiles;     // empty: brute force over every light
+    gl::DefineSet defines;  // the scene's lighting defines (Renderer::lightingDefines)
+    LightPassProbe probe = LightPassProbe::Shade;
+    size_t texel_limit = 0;  // DebugOptions::light_texel_limit
+    bool ltc = false;        // the program reads the LTC table (Renderer::lightPassNeedsLtc)
+  };
+  // Adds the direct light of every lit pixel into `hdr` (RGBA16F image).
+  void run(const PassContext& ctx, const FrameBlock& frame, const Input& in, GLuint hdr);
+
+ private:
+  gl::Texture light_texels_, tile_index_texels_;  // buffer-texture views of the two buffers
+  std::unique_ptr<LtcTextures> ltc_;  // the LTC table, created when a program first needs it
+};
+
+// ---- Ambient pass and the environment (ambient_pass.cpp) ---------------------------------------
+// The environment's GPU resources: the uploaded IBL bake.
+class GpuEnvironment {
+ public:
+  explicit GpuEnvironment(const Scene& scene);  // bakes (or loads the cached bake) and uploads
+  bool present() const { return present_; }
+  const BakeTimings& timings() const { return timings_; }
+  // Binds units HV_UNIT_RADIANCE .. HV_UNIT_IRRADIANCE and the environment block; a missing
+  // texture is replaced by one of the right type (`fallback_2d`, a black cube).
+  void bind(GLuint fallback_2d) const;
+  void unbind() const;
+
+ private:
+  gl::Texture radiance_, irradiance_, env_brdf_, black_cube_;
+  gl::Buffer block_;
+  gl::Sampler trilinear_;
+  bool present_ = false;
+  BakeTimings timings_;
+};
+struct AmbientPassInput {
+  GBufferView gbuffer;
+  const GpuEnvironment& environment;
+  const gl::ProgramDesc& program;  // Renderer::ambientProgram()
+};
+// Adds the image-based light into `hdr` and draws the environment on background pixels.
+void runAmbientPass(const PassContext& ctx, const AmbientPassInput& in, GLuint hdr, int width,
+                    int height);
+
+// ---- Tone map and debug views (tonemap_pass.cpp) -----------------------------------------------
+struct TonemapPassInput {
+  GLuint hdr = 0;
+  GBufferView gbuffer;     // the G-buffer debug views
+  GLuint tile_ranges = 0;  // lights_per_tile (0: none yet)
+  DebugView view = DebugView::None;
+  const RenderSettings& settings;
+};
+struct TonemapPassOutput {
+  GLuint framebuffer = 0;  // where the tone-mapped image goes
+  GLuint capture = 0;      // if not 0 and not `framebuffer`: a copy is blitted there (captures)
+  int width = 0, height = 0;
+};
+void runTonemapPass(const PassContext& ctx, const TonemapPassInput& in,
+                    const TonemapPassOutput& out, GLuint fullscreen_vao);
+
+// ---- Floor (floor_pass.cpp) -------------------------------------------------------------------
+// Reads the G-buffer, writes `scratch` (RGBA16F, width x height): DebugOptions::floor_pass.
+void runFloorPass(const PassContext& ctx, const GBufferView& gbuffer, GLuint scratch, int width,
+                  int height);
+
+}  // namespace hv::render

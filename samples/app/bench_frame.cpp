@@ -1,0 +1,117 @@
+// `halfvec bench --frame`: every pass of every sample scene (or of --scene FILE) as a multiple of
+// the floor pass timed in the same frames (halfvec/eval/bench.hpp); with --shaders, one column
+// set per shader tree, frames interleaved.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "app/commands.hpp"
+#include "halfvec/core/output_files.hpp"
+#include "halfvec/eval/bench.hpp"
+#include "halfvec/platform/context.hpp"
+#include "halfvec/scene/scene_loader.hpp"
+
+namespace hv::app {
+
+namespace {
+void printCost(const eval::FrameCost& c) {
+  std::printf("%s (%dx%d, %d frames; floor %.2f ms)\n", c.scene.c_str(), c.width, c.height,
+              c.frames, c.floor_ms);
+  std::printf("  %-12s %9s %9s  %s\n", "pass", "ms", "x floor", "95% interval of x floor");
+  auto row = [](const eval::PassCost& p) {
+    std::printf("  %-12s %9.2f %9.2f  %.2f - %.2f\n", p.pass.c_str(), p.ms, p.floor_ratio.median,
+                p.floor_ratio.lo, p.floor_ratio.hi);
+  };
+  for (const eval::PassCost& p : c.passes) row(p);
+  row(c.frame);
+  std::fflush(stdout);
+}
+
+// --vs-brute: one line per scene, and the markdown table for --report.
+std::string tiledVsBrute(const std::vector<Scene>& scenes, const std::vector<std::string>& paths,
+                         const FrameBenchOptions& o) {
+  std::printf("%-16s %12s %12s %14s  %s\n", "scene", "tiled ms", "brute ms", "tiled / brute",
+              "95% interval");
+  std::string md =
+      "| scene | tiled frame ms | brute-force frame ms | tiled / brute (95% interval) |\n"
+      "|---|---:|---:|---:|\n";
+  for (size_t i = 0; i < scenes.size(); ++i) {
+    const std::string name = std::filesystem::path(paths[i]).stem().string();
+    const eval::TiledVsBrute r =
+        eval::measureTiledVsBruteForce(scenes[i], name, o.width, o.height, o.frames);
+    std::printf("%-16s %12.2f %12.2f %14.2f  %.2f - %.2f\n", name.c_str(), r.tiled_ms, r.brute_ms,
+                r.ratio.median, r.ratio.lo, r.ratio.hi);
+    std::fflush(stdout);
+    char row[256];
+    std::snprintf(row, sizeof row, "| %s | %.1f | %.1f | %.2f (%.2f - %.2f) |\n", name.c_str(),
+                  r.tiled_ms, r.brute_ms, r.ratio.median, r.ratio.lo, r.ratio.hi);
+    md += row;
+  }
+  return md;
+}
+}  // namespace
+
+std::vector<std::string> sampleScenePaths() {
+  std::vector<std::string> files;
+  for (const auto& e : std::filesystem::directory_iterator(HV_SAMPLES_DIR)) {
+    if (e.path().extension() == ".json") files.push_back(e.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+int benchFrame(const FrameBenchOptions& o) {
+  OutputFiles outputs;
+  std::filesystem::path report_tmp;  // reserved now: a report that cannot be written fails early
+  if (!o.report.empty()) report_tmp = outputs.add(o.report);
+  const std::vector<std::string> scenes =
+      o.scene.empty() ? sampleScenePaths() : std::vector<std::string>{o.scene};
+  if (!o.shader_dirs.empty() && scenes.size() != 1) {
+    throw UsageError{"--frame --shaders needs --scene FILE"};
+  }
+  std::vector<Scene> loaded;
+  for (const std::string& s : scenes) loaded.push_back(loadScene(s));  // fail before rendering
+  auto ctx = createHeadlessContext();
+  std::printf(
+      "renderer: %s, %dx%d; x floor = median over frames of (pass ms / floor pass ms of "
+      "the same frame)\n\n",
+      ctx->renderer().c_str(), o.width, o.height);
+  std::string md = "Renderer: " + ctx->renderer() + ", " + std::to_string(o.width) + "x" +
+                   std::to_string(o.height) + ", " + std::to_string(o.frames) +
+                   " frames per scene after a warm-up frame; ";
+  if (o.vs_brute) {
+    if (!o.shader_dirs.empty()) throw UsageError{"--vs-brute does not take --shaders"};
+    md += "whole-frame GPU ms, medians; ratio: median over interleaved rounds.\n\n" +
+          tiledVsBrute(loaded, scenes, o);
+  }
+  std::vector<eval::FrameCost> costs;
+  for (size_t i = 0; i < scenes.size() && !o.vs_brute; ++i) {
+    const std::string name = std::filesystem::path(scenes[i]).stem().string();
+    if (o.shader_dirs.empty()) {
+      costs.push_back(eval::measureFrameCost(loaded[i], name, o.width, o.height, o.frames));
+      printCost(costs.back());
+    } else {
+      for (const auto& c :
+           eval::measureFrameCostTrees(loaded[i], o.shader_dirs, o.width, o.height, o.frames)) {
+        costs.push_back(c);
+        printCost(c);
+      }
+    }
+    std::printf("\n");
+  }
+  if (!o.report.empty()) {
+    if (!o.vs_brute) {
+      md +=
+          "each cell: median GPU ms (median over frames of pass ms / floor ms of the same "
+          "frame).\n\n" +
+          eval::frameCostMarkdown(costs);
+    }
+    std::ofstream(report_tmp) << md;
+    outputs.commit();
+    std::printf("wrote %s\n", o.report.c_str());
+  }
+  return 0;
+}
+
+}  // namespace hv::app

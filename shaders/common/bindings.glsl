@@ -1,0 +1,84 @@
+// Resource slots and tile sizes every pass agrees on, written once: the shaders include this file
+// (through frame.glsl) and so does the renderer's C++ (halfvec/render/frame_data.hpp,
+// engine/render/src/passes.hpp), as "halfvec/shaders/common/bindings.glsl". Plain #defines only,
+// so that both languages read the same numbers (zeux/niagara's config.h does the same).
+#ifndef HV_BINDINGS_GLSL
+#define HV_BINDINGS_GLSL
+
+// ---- Uniform blocks ----------------------------------------------------------------------------
+#define HV_UBO_FRAME 0        // FrameBlock (frame.glsl), bound for the whole frame
+#define HV_UBO_ENVIRONMENT 1  // EnvironmentBlock (ambient.comp): SH9, mip count, presence
+
+// ---- Storage buffers ---------------------------------------------------------------------------
+// At most 8 binding points (0..7: GL 4.5's minimum of GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS), so a
+// pass may give a slot another meaning than a pass that does not run at the same time.
+#define HV_BINDING_CULL_MASKS 0       // culling: per group of tiles, its light mask
+#define HV_BINDING_CULL_TILE_STATE 1  // culling (batched): per tile, counts then write cursors
+#define HV_BINDING_MATERIALS 1
+#define HV_BINDING_LIGHTS 2
+#define HV_BINDING_CULL_LIGHTS 3  // culling: per light, its view-space sphere and tile rectangle
+#define HV_BINDING_TILE_RANGES 4
+#define HV_BINDING_TILE_INDICES 5
+#define HV_BINDING_TILE_TYPES 6   // per tile: (points, spheres) of its range, tubes follow
+#define HV_BINDING_CULL_BOUNDS 7  // culling: per tile, block and group, the surface AABB
+// The tile index list starts with a header of this many uints (the first: the total entries).
+#define HV_TILE_LIST_HEADER_UINTS 4
+
+// ---- Texture units of the passes that read the G-buffer -----------------------------------------
+// The four G-buffer targets, bound together by bindGBuffer (engine/render/src/passes.hpp).
+#define HV_UNIT_BASE_CAVITY 0
+#define HV_UNIT_MATERIAL 1
+#define HV_UNIT_NORMAL 2
+#define HV_UNIT_DEPTH 3
+// Light pass: the light records and the tile index list as buffer textures (HV_LIGHTS_TEXTURE).
+#define HV_UNIT_LIGHT_TEXELS 4
+#define HV_UNIT_TILE_INDEX_TEXELS 5
+// Light pass with an LTC light mode: the LTC table's two textures on units 6 and 7
+// (HV_LTC_TEXTURE_UNIT0 / UNIT1, defined in ltc.glsl, which the C++ reference also compiles).
+// Ambient pass: the environment's prefiltered radiance, env BRDF table and irradiance cube.
+#define HV_UNIT_RADIANCE 5
+#define HV_UNIT_ENV_BRDF 6
+#define HV_UNIT_IRRADIANCE 7
+// Tone map: the HDR target.
+#define HV_UNIT_HDR 0
+// G-buffer pass: a material's textures on units HV_UNIT_MATERIAL_TEXTURES + 0..4 (base color,
+// metal-rough, normal, occlusion, emissive).
+#define HV_UNIT_MATERIAL_TEXTURES 0
+#define HV_MATERIAL_TEXTURE_COUNT 5
+
+// ---- Image units -------------------------------------------------------------------------------
+#define HV_IMAGE_HDR 0    // the RGBA16F accumulation target the compute passes add into
+#define HV_IMAGE_FLOOR 1  // the floor pass's scratch target (DebugOptions::floor_pass)
+
+// ---- Uniform locations (explicit, so the C++ never looks a name up) ------------------------------
+#define HV_LOC_MODEL 0          // gbuffer.vert: object to world
+#define HV_LOC_NORMAL_MATRIX 1  // gbuffer.vert: inverse transpose of the model matrix
+#define HV_LOC_MATERIAL 2       // gbuffer.frag: material index
+#define HV_LOC_CULL_BATCH 0     // light_cull.comp: lights [x, y), mask words per group
+
+// ---- FrameBlock::counts.w bits (hv::render::FrameFlag), set for the per-term debug views -------
+#define HV_FRAME_NO_BACKGROUND 1u  // background pixels stay black (ambient.comp)
+#define HV_FRAME_NO_EMISSIVE 2u    // no emissive in the HDR target (C++ masks the G-buffer write)
+
+// ---- Tiles -------------------------------------------------------------------------------------
+// Light culling tile: HV_TILE_SIZE x HV_TILE_HEIGHT pixels (also the light pass's workgroup;
+// the ambient pass uses HV_TILE_SIZE square groups). Why 8 x 4: docs/lights.md "Tiled culling".
+#define HV_TILE_SIZE 8
+#define HV_TILE_HEIGHT 4
+// Tiles per workgroup of the light pass (stacked vertically, each with its own light list): with
+// 4 pixels per invocation a tile is 8 invocations, which alone would fill a quarter of a 32-wide
+// GPU SIMD unit. 8 tiles = 64 invocations. Neutral on llvmpipe (1, 2, 4, 8: same time, measured).
+#define HV_LIGHT_GROUP_TILES 8
+// Light culling: a workgroup culls a group of HV_CULL_GROUP_TILES x HV_CULL_GROUP_TILES tiles (64 x
+// 32 pixels), one invocation per tile, the unit the lights are binned into (docs/lights.md "Tiled
+// culling").
+#define HV_CULL_GROUP_TILES 8
+// Group rows per invocation of the binning stage: a light is binned by one invocation per band.
+#define HV_CULL_BIN_GROUP_ROWS 4
+// Up to this many lights are binned and walked in one step; above, in batches of this many lights
+// (count, reserve, fill; docs/lights.md). A batch bounds the masks' memory and the loop
+// iterations of one invocation (at most about 2 per light of the batch): llvmpipe ends any shader
+// invocation's loops after 65,535 iterations in all, silently.
+#define HV_CULL_FUSED_MAX_LIGHTS 16384
+
+#endif
