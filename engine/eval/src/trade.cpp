@@ -3,18 +3,19 @@
 #include "halfvec/core/output_files.hpp"
 
 #include <algorithm>
-#include <functional>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <map>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
+#include "halfvec/eval/bench.hpp"
 #include "halfvec/ibl/ibl.hpp"
 #include "halfvec/image/plot.hpp"
 #include "halfvec/render/renderer.hpp"
@@ -490,6 +491,15 @@ TradeReport runTrade(const Scene& scene, const TradeOptions& opt) {
   }
   for (size_t k = 0; k < rep.rows.size(); ++k) {
     rep.rows[k].total_ms = median(times[k].totals);
+    std::vector<double> ratios;  // frame by frame against the scene row, same round and index
+    for (size_t i = 0; i < std::min(times[k].totals.size(), times[0].totals.size()); ++i) {
+      if (times[0].totals[i] > 0.0) ratios.push_back(times[k].totals[i] / times[0].totals[i]);
+    }
+    const MedianInterval cost = medianInterval(ratios);
+    rep.rows[k].cost_ratio = cost.median;
+    rep.rows[k].cost_lo = cost.lo;
+    rep.rows[k].cost_hi = cost.hi;
+    rep.rows[k].same_cost = cost.contains(1.0);
     for (const std::string& p : times[k].order)
       rep.rows[k].pass_ms.push_back({p, median(times[k].per_pass[p])});
     const TradeConfig& c = rep.rows[k].config;
@@ -545,7 +555,7 @@ std::string tradeCsv(const TradeReport& r) {
   o << "scene,configuration,aliases,group";
   for (const auto& p : passes) o << "," << p << "_ms";
   o << ",total_ms,rel_rmse,bias_rel_rmse,p99_rel,max_abs,rmse,within_noise,pareto,"
-       "nonfinite_pixels\n";
+       "nonfinite_pixels,cost_ratio,cost_lo,cost_hi,same_cost\n";
   for (const TradeRow& row : r.rows) {
     std::string aliases;
     for (const auto& a : row.config.aliases) aliases += (aliases.empty() ? "" : ";") + a;
@@ -555,7 +565,9 @@ std::string tradeCsv(const TradeReport& r) {
     o << "," << fmtNum(row.total_ms, "%.4f") << "," << fmtNum(row.error.rel_rmse, "%.6g") << ","
       << fmtNum(row.bias_rel_rmse, "%.6g") << "," << fmtNum(row.error.p99_rel, "%.6g") << ","
       << fmtNum(row.error.max_abs, "%.6g") << "," << fmtNum(row.error.rmse, "%.6g") << ","
-      << (row.within_noise ? 1 : 0) << "," << (row.pareto ? 1 : 0) << "," << row.nonfinite << "\n";
+      << (row.within_noise ? 1 : 0) << "," << (row.pareto ? 1 : 0) << "," << row.nonfinite << ","
+      << fmtNum(row.cost_ratio, "%.4f") << "," << fmtNum(row.cost_lo, "%.4f") << ","
+      << fmtNum(row.cost_hi, "%.4f") << "," << (row.same_cost ? 1 : 0) << "\n";
   }
   return o.str();
 }
@@ -566,8 +578,11 @@ std::string tradeMarkdown(const TradeReport& r, const std::string& prefix, int l
   o << h << " " << sceneName(r) << " (`" << r.scene_path << "`)\n\n";
   o << r.width << "x" << r.height << ", GPU ms = median of " << r.frames * r.rounds << " frames ("
     << r.rounds << " rounds over all configurations of " << r.frames
-    << " frames after a warm-up frame). Reference: " << r.samples << " samples per pixel over "
-    << (r.lit_pixels + r.unconverged_pixels) << " lit pixels"
+    << " frames after a warm-up frame); x scene: the median over those frames of the row's frame "
+       "time / the scene row's of the same round and frame, with its 95% interval (\"same cost\" "
+       "where it includes 1). Reference: "
+    << r.samples << " samples per pixel over " << (r.lit_pixels + r.unconverged_pixels)
+    << " lit pixels"
     << (r.reference_cached ? " (read from the cache; computed in " : " (computed in ")
     << fmtNum(r.reference.seconds, "%.1f")
     << " s); its mean relative standard error of luminance is "
@@ -580,9 +595,9 @@ std::string tradeMarkdown(const TradeReport& r, const std::string& prefix, int l
   const auto passes = passNames(r);
   o << "| configuration |";
   for (const auto& p : passes) o << " " << p << " ms |";
-  o << " total ms | rel. RMSE | bias | p99 rel. | max abs | |\n|---|";
+  o << " total ms | x scene (95%) | rel. RMSE | bias | p99 rel. | max abs | |\n|---|";
   for (size_t i = 0; i < passes.size(); ++i) o << "---:|";
-  o << "---:|---:|---:|---:|---:|---|\n";
+  o << "---:|---:|---:|---:|---:|---:|---|\n";
   for (size_t i = 0; i < r.rows.size(); ++i) {
     const TradeRow& row = r.rows[i];
     std::string name = "`" + row.config.name + "`";
@@ -596,9 +611,14 @@ std::string tradeMarkdown(const TradeReport& r, const std::string& prefix, int l
     if (int(i) == r.most_accurate_within_ms) flags += "most-accurate ";
     if (row.nonfinite) flags += "NaN/Inf:" + std::to_string(row.nonfinite) + " ";
     if (!row.heatmap.empty()) flags += "[heat map](" + prefix + row.heatmap + ")";
-    o << " " << fmtNum(row.total_ms, "%.3f") << " | " << fmtNum(row.error.rel_rmse, "%.4f") << " | "
-      << fmtNum(row.bias_rel_rmse, "%.4f") << " | " << fmtNum(row.error.p99_rel, "%.4f") << " | "
-      << fmtNum(row.error.max_abs, "%.3g") << " | " << flags << " |\n";
+    const std::string cost =
+        i == 0 ? std::string("1")
+               : fmtNum(row.cost_ratio, "%.2f") + " (" + fmtNum(row.cost_lo, "%.2f") + "-" +
+                     fmtNum(row.cost_hi, "%.2f") + ")" + (row.same_cost ? " same cost" : "");
+    o << " " << fmtNum(row.total_ms, "%.3f") << " | " << cost << " | "
+      << fmtNum(row.error.rel_rmse, "%.4f") << " | " << fmtNum(row.bias_rel_rmse, "%.4f") << " | "
+      << fmtNum(row.error.p99_rel, "%.4f") << " | " << fmtNum(row.error.max_abs, "%.3g") << " | "
+      << flags << " |\n";
   }
   o << "\n";
   if (r.cheapest_within_error >= 0) {
