@@ -233,6 +233,13 @@ vec3 computeDiffuseColor(vec3 baseColor, float metallic) { return baseColor * (1
 // roughness. Only Schlick-GGX is remapped (see visibility()).
 float remappedVisibilityAlpha(float roughness) { return sq(0.5f * (roughness + 1.0f)); }
 
+// The one statement of when that remap applies (Karis 2013 eq. 4 defines it for Schlick-GGX's k
+// with analytic lights): the shaders' visibility(), the C++ BRDF (evalV) and the variant key's
+// canonical settings all ask this function. v_term is an HV_V_* value.
+bool remapAppliesTo(bool remap_roughness, int v_term) {
+  return remap_roughness && v_term == HV_V_SCHLICK_GGX;
+}
+
 // ---- Surface ----
 
 struct Surface {
@@ -295,11 +302,10 @@ float visibilityForAlpha(float alpha, float NoV, float NoL, float NoH, float VoH
 // HV_BRDF_V == HV_V_SCHLICK_GGX, k = alpha_remapped / 2. Every other V term (Smith exact, its
 // approximation, Beckmann, Cook-Torrance, implicit) uses alpha = roughness^2 unchanged.
 float visibility(float roughness, float alpha, float NoV, float NoL, float NoH, float VoH) {
-#if HV_REMAP_ROUGHNESS && HV_BRDF_V == HV_V_SCHLICK_GGX
-  float alpha_v = remappedVisibilityAlpha(roughness);
-#else
-  float alpha_v = alpha;
-#endif
+  // Both arguments are compile-time constants: the compiler folds the choice.
+  float alpha_v = remapAppliesTo(HV_REMAP_ROUGHNESS != 0, HV_BRDF_V)
+                      ? remappedVisibilityAlpha(roughness)
+                      : alpha;
   return visibilityForAlpha(alpha_v, NoV, NoL, NoH, VoH);
 }
 

@@ -59,10 +59,10 @@ MaterialFeatures allMaterialFeatures() {
   return f;
 }
 
-// Karis 2013 eq. 4: the Disney (roughness+1)/2 remap is defined for Schlick-GGX's k with
-// analytic lights, and brdf.glsl applies it to that term only.
+// Karis 2013 eq. 4: whether the Disney (roughness+1)/2 remap changes anything for V term v is
+// brdf.glsl's rule (remapAppliesTo), the one the shaders and the C++ BRDF use.
 bool remapMeaningful(VisibilityTerm v) {
-  return v == VisibilityTerm::SchlickGGX;
+  return glsl::remapAppliesTo(true, static_cast<int>(v));
 }
 
 RenderSettings canonicalSettings(const RenderSettings& s, const VariantKey& key) {

@@ -48,8 +48,8 @@ float evalVForAlpha(const BrdfConfig& c, float alpha, float NoV, float NoL, floa
 
 float evalV(const BrdfConfig& c, float roughness, float alpha, float NoV, float NoL, float NoH,
             float VoH) {
-  // Karis 2013 eq. 4: the Disney remap applies to Schlick-GGX only (= glsl visibility()).
-  const bool remap = c.remap_roughness && c.v == VisibilityTerm::SchlickGGX;
+  // Karis 2013 eq. 4: the rule of brdf.glsl's visibility().
+  const bool remap = g::remapAppliesTo(c.remap_roughness, static_cast<int>(c.v));
   float alpha_v = remap ? g::remappedVisibilityAlpha(roughness) : alpha;
   return evalVForAlpha(c, alpha_v, NoV, NoL, NoH, VoH);
 }
