@@ -299,155 +299,127 @@ void header() {
 
 }  // namespace
 
-int cmdBench(const Args& args) {
+namespace {
+// The command line of `halfvec bench`, parsed.
+struct BenchArgs {
   int w = 1280, h = 720, frames = 5, max_lights = 16384, only = 0;
   float only_range = 0.0f;
-  bool quick = false;
-  bool variants = false;
-  bool show_breakdown = false;
-  bool methods = false;
-  bool frame_mode = false;
-  bool vs_brute = false;
+  bool quick = false, variants = false, show_breakdown = false, frame_mode = false;
+  bool vs_brute = false, frames_given = false, methods = false;
   std::string report;
-  bool frames_given = false;
   int types = -1;  // --types: -1 mixed, else a hv::LightType
   std::vector<std::string> shader_dirs;
   std::string scene_path;
+  bool help = false;
+};
+
+BenchArgs parseBenchArgs(const Args& args) {
+  BenchArgs b;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&] { return optionValue(args, i); };
     if (a == "--help" || a == "-h") {
-      std::fputs(kHelp, stdout);
-      return 0;
+      b.help = true;
+      return b;
     } else if (a == "--size") {
-      parseSize(value(), w, h);
+      parseSize(value(), b.w, b.h);
     } else if (a == "--frames") {
-      frames = std::max(1, std::atoi(value().c_str()));
-      frames_given = true;
+      b.frames = std::max(1, std::atoi(value().c_str()));
+      b.frames_given = true;
     } else if (a == "--max-lights") {
-      max_lights = std::atoi(value().c_str());
+      b.max_lights = std::atoi(value().c_str());
     } else if (a == "--lights") {
-      only = std::atoi(value().c_str());
-      if (only <= 0) throw UsageError{"--lights expects a positive count"};
+      b.only = std::atoi(value().c_str());
+      if (b.only <= 0) throw UsageError{"--lights expects a positive count"};
     } else if (a == "--range") {
-      only_range = static_cast<float>(std::atof(value().c_str()));
-      if (!(only_range > 0.0f)) throw UsageError{"--range expects a positive length in m"};
+      b.only_range = static_cast<float>(std::atof(value().c_str()));
+      if (!(b.only_range > 0.0f)) throw UsageError{"--range expects a positive length in m"};
     } else if (a == "--quick") {
-      quick = true;
+      b.quick = true;
     } else if (a == "--types") {
       const std::string t = value();
       if (t == "mixed") {
-        types = -1;
+        b.types = -1;
       } else if (t == "point" || t == "sphere" || t == "tube") {
-        types = t == "point" ? 0 : t == "sphere" ? 1 : 2;  // hv::LightType
+        b.types = t == "point" ? 0 : t == "sphere" ? 1 : 2;  // hv::LightType
       } else {
         throw UsageError{"--types expects mixed, point, sphere or tube, got '" + t + "'"};
       }
     } else if (a == "--scene") {
-      scene_path = value();
+      b.scene_path = value();
     } else if (a == "--shaders") {
       std::stringstream list(value());
       for (std::string d; std::getline(list, d, ',');) {
-        if (!d.empty()) shader_dirs.push_back(d);
+        if (!d.empty()) b.shader_dirs.push_back(d);
       }
     } else if (a == "--variants") {
-      variants = true;
+      b.variants = true;
     } else if (a == "--breakdown") {
-      show_breakdown = true;
+      b.show_breakdown = true;
     } else if (a == "--methods") {
-      methods = true;
+      b.methods = true;
     } else if (a == "--frame") {
-      frame_mode = true;
+      b.frame_mode = true;
     } else if (a == "--vs-brute") {
-      vs_brute = true;
+      b.vs_brute = true;
     } else if (a == "--report") {
-      report = value();
+      b.report = value();
     } else {
       throw UsageError{"unknown option '" + a + "'"};
     }
   }
-  if (vs_brute && !frame_mode) throw UsageError{"--vs-brute goes with --frame"};
-  if (frame_mode) {
-    FrameBenchOptions o;
-    o.width = w;
-    o.height = h;
-    if (frames_given) o.frames = frames;
-    o.scene = scene_path;
-    o.shader_dirs = shader_dirs;
-    o.report = report;
-    o.vs_brute = vs_brute;
-    return benchFrame(o);
-  }
-  if (variants)
-    return quick ? benchVariants(std::min(w, 640), std::min(h, 360), frames)
-                 : benchVariants(w, h, frames);
-  auto ctx = createHeadlessContext();
-  std::printf("renderer: %s, %dx%d, median of %d frames\n\n", ctx->renderer().c_str(), w, h,
-              frames);
-  const float area = kFloor * kFloor;
-  const float density = 24.0f;  // target lights overlapping a floor point in (a)
-  auto counts = [&](std::vector<int> quick_counts) {
-    std::vector<int> v;
-    if (quick) {
-      for (int n : quick_counts) {
-        if (n <= max_lights) v.push_back(n);
-      }
-    } else {
-      for (int n = 64; n <= max_lights; n *= 4) v.push_back(n);
+  if (b.vs_brute && !b.frame_mode) throw UsageError{"--vs-brute goes with --frame"};
+  return b;
+}
+
+constexpr float kDensity = 24.0f;  // target lights overlapping a floor point in table (a)
+float densityRange(int n) {
+  return std::sqrt(kDensity * kFloor * kFloor / (3.14159265f * float(n)));
+}
+// The light counts of a table: 64, 256, ... up to --max-lights, or with --quick those given.
+std::vector<int> lightCounts(const BenchArgs& b, const std::vector<int>& quick_counts) {
+  std::vector<int> v;
+  if (b.quick) {
+    for (int n : quick_counts) {
+      if (n <= b.max_lights) v.push_back(n);
     }
-    return v;
-  };
-  auto densityRange = [&](int n) { return std::sqrt(density * area / (3.14159265f * float(n))); };
-  if (!scene_path.empty()) {
-    if (shader_dirs.empty()) throw UsageError{"--scene goes with --shaders"};
-    Scene sc = loadScene(scene_path);
-    return compareShaderTrees(sc, shader_dirs, w, h, frames, true);
+  } else {
+    for (int n = 64; n <= b.max_lights; n *= 4) v.push_back(n);
   }
-  // Table (d): where the light pass's time goes, per type (mixed first unless --types).
-  auto breakdownTable = [&](int n) {
-    std::printf(
-        "\n(d) where the light pass's time goes, %d lights, constant density (median ms of %d "
-        "interleaved frames per probe; light = setup + lists+fetch + shading)\n",
-        n, frames);
-    breakdownHeader();
-    Breakdown mixed;
-    for (int t = types < 0 ? -1 : types; t < (types < 0 ? 3 : types + 1); ++t) {
-      const Breakdown b = breakdown(benchScene(n, densityRange(n), t), w, h, frames);
-      if (t < 0) mixed = b;
-      breakdownRow(t < 0 ? "mixed" : t == 0 ? "point" : t == 1 ? "sphere" : "tube", b);
-    }
-    return mixed;
-  };
-  if (methods) {
-    const int n = only > 0 ? only : 1024;
-    methodsTable(n, densityRange(n), w, h, frames);
-    return 0;
+  return v;
+}
+
+// Table (d): where the light pass's time goes, per type (mixed first unless --types).
+Breakdown breakdownTable(const BenchArgs& b, int n) {
+  const int w = b.w, h = b.h, frames = b.frames, types = b.types;
+  std::printf(
+      "\n(d) where the light pass's time goes, %d lights, constant density (median ms of %d "
+      "interleaved frames per probe; light = setup + lists+fetch + shading)\n",
+      n, frames);
+  breakdownHeader();
+  Breakdown mixed;
+  for (int t = types < 0 ? -1 : types; t < (types < 0 ? 3 : types + 1); ++t) {
+    const Breakdown row = breakdown(benchScene(n, densityRange(n), t), w, h, frames);
+    if (t < 0) mixed = row;
+    breakdownRow(t < 0 ? "mixed" : t == 0 ? "point" : t == 1 ? "sphere" : "tube", row);
   }
-  if (show_breakdown) {
-    if (!shader_dirs.empty()) throw UsageError{"--breakdown does not take --shaders"};
-    breakdownTable(only > 0 ? only : 1024);
-    return 0;
-  }
-  if (only > 0) {
-    std::printf("(a) constant density (about %.0f lights per floor point)\n", density);
-    header();
-    const float r = only_range > 0.0f ? only_range : densityRange(only);
-    Scene s = benchScene(only, r, types);
-    if (!shader_dirs.empty()) return compareShaderTrees(s, shader_dirs, w, h, frames, false);
-    printRow(only, r, measure(s, w, h, frames));
-    return 0;
-  }
-  std::printf("(a) constant density (about %.0f lights per floor point)\n", density);
+  return mixed;
+}
+
+// Tables (a), (b) and (c); returns the rows of (a).
+std::vector<std::pair<int, Result>> scalingTables(const BenchArgs& b) {
+  const int w = b.w, h = b.h, frames = b.frames, types = b.types;
+  std::printf("(a) constant density (about %.0f lights per floor point)\n", kDensity);
   header();
   std::vector<std::pair<int, Result>> table_a;
-  for (int n : counts({64, 256, 1024, 16384})) {
+  for (int n : lightCounts(b, {64, 256, 1024, 16384})) {
     Scene s = benchScene(n, densityRange(n), types);
     table_a.emplace_back(n, measure(s, w, h, frames));
     printRow(n, densityRange(n), table_a.back().second);
   }
   std::printf("\n(b) fixed scene (range 2 m)\n");
   header();
-  for (int n : counts({64, 1024, 16384})) {
+  for (int n : lightCounts(b, {64, 1024, 16384})) {
     Scene s = benchScene(n, 2.0f, types);
     printRow(n, 2.0f, measure(s, w, h, frames));
   }
@@ -463,9 +435,13 @@ int cmdBench(const Args& args) {
       printRow(1024, densityRange(1024), measure(st, w, h, frames));
     }
   }
-  double shading_only_rate = 0.0;
-  if (types < 0) shading_only_rate = breakdownTable(1024).shadingOnlyRate();
-  if (types < 0) methodsTable(1024, densityRange(1024), w, h, frames);
+  return table_a;
+}
+
+// Tiled vs brute force at 1,024 lights, then the targets checked on the numbers above.
+void benchTargets(const BenchArgs& b, const std::vector<std::pair<int, Result>>& table_a,
+                  double shading_only_rate) {
+  const int w = b.w, h = b.h, frames = b.frames, types = b.types, max_lights = b.max_lights;
   std::printf("\ntiled vs brute force, 1024 lights, constant-density range\n");
   header();
   const float range = densityRange(1024);
@@ -518,6 +494,63 @@ int cmdBench(const Args& args) {
                 "-", "not run (needs --max-lights >= 16384)");
   }
   check("tiled speedup over brute force, 1024 lights", ">= 20x", speedup, speedup >= 20.0);
+}
+
+}  // namespace
+
+int cmdBench(const Args& args) {
+  const BenchArgs b = parseBenchArgs(args);
+  if (b.help) {
+    std::fputs(kHelp, stdout);
+    return 0;
+  }
+  if (b.frame_mode) {
+    FrameBenchOptions o;
+    o.width = b.w;
+    o.height = b.h;
+    if (b.frames_given) o.frames = b.frames;
+    o.scene = b.scene_path;
+    o.shader_dirs = b.shader_dirs;
+    o.report = b.report;
+    o.vs_brute = b.vs_brute;
+    return benchFrame(o);
+  }
+  if (b.variants)
+    return b.quick ? benchVariants(std::min(b.w, 640), std::min(b.h, 360), b.frames)
+                   : benchVariants(b.w, b.h, b.frames);
+  auto ctx = createHeadlessContext();
+  std::printf("renderer: %s, %dx%d, median of %d frames\n\n", ctx->renderer().c_str(), b.w, b.h,
+              b.frames);
+  if (!b.scene_path.empty()) {
+    if (b.shader_dirs.empty()) throw UsageError{"--scene goes with --shaders"};
+    Scene sc = loadScene(b.scene_path);
+    return compareShaderTrees(sc, b.shader_dirs, b.w, b.h, b.frames, true);
+  }
+  if (b.show_breakdown) {
+    if (!b.shader_dirs.empty()) throw UsageError{"--breakdown does not take --shaders"};
+    breakdownTable(b, b.only > 0 ? b.only : 1024);
+    return 0;
+  }
+  if (b.methods) {
+    const int n = b.only > 0 ? b.only : 1024;
+    methodsTable(n, densityRange(n), b.w, b.h, b.frames);
+    return 0;
+  }
+  if (b.only > 0) {
+    std::printf("(a) constant density (about %.0f lights per floor point)\n", kDensity);
+    header();
+    const float r = b.only_range > 0.0f ? b.only_range : densityRange(b.only);
+    Scene s = benchScene(b.only, r, b.types);
+    if (!b.shader_dirs.empty())
+      return compareShaderTrees(s, b.shader_dirs, b.w, b.h, b.frames, false);
+    printRow(b.only, r, measure(s, b.w, b.h, b.frames));
+    return 0;
+  }
+  const std::vector<std::pair<int, Result>> table_a = scalingTables(b);
+  double shading_only_rate = 0.0;
+  if (b.types < 0) shading_only_rate = breakdownTable(b, 1024).shadingOnlyRate();
+  if (b.types < 0) methodsTable(1024, densityRange(1024), b.w, b.h, b.frames);
+  benchTargets(b, table_a, shading_only_rate);
   return 0;
 }
 

@@ -138,82 +138,100 @@ void writeDoc(const std::string& file, const std::string& command, const std::st
   if (fs::absolute(file).has_parent_path()) fs::create_directories(doc_dir);
   std::ofstream(file) << o.str();
 }
-}  // namespace
-
-int cmdTrade(const Args& args) {
+// The command line of `halfvec trade`, parsed.
+struct TradeArgs {
   std::vector<std::string> scenes;
   std::vector<std::pair<std::string, std::pair<int, int>>> sizes_for;
   std::string report, doc;
   eval::TradeOptions opt;
-  bool size_given = false;
+  bool size_given = false, help = false;
+};
+
+int positiveInt(const std::string& option, const std::string& v) {
+  char* end = nullptr;
+  const long n = std::strtol(v.c_str(), &end, 10);
+  if (!end || *end || n < 1 || n > 1000000) {
+    throw UsageError{option + " expects a positive integer, got '" + v + "'"};
+  }
+  return int(n);
+}
+
+double positiveNumber(const std::string& option, const std::string& v) {
+  char* end = nullptr;
+  const double x = std::strtod(v.c_str(), &end);
+  if (!end || *end || !(x > 0.0))
+    throw UsageError{option + " expects a number > 0, got '" + v + "'"};
+  return x;
+}
+
+TradeArgs parseTradeArgs(const Args& args) {
+  TradeArgs t;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&] { return optionValue(args, i); };
-    auto positive = [&](const std::string& v) {
-      char* end = nullptr;
-      const long n = std::strtol(v.c_str(), &end, 10);
-      if (!end || *end || n < 1 || n > 1000000) {
-        throw UsageError{a + " expects a positive integer, got '" + v + "'"};
-      }
-      return int(n);
-    };
-    auto number = [&](const std::string& v) {
-      char* end = nullptr;
-      const double x = std::strtod(v.c_str(), &end);
-      if (!end || *end || !(x > 0.0))
-        throw UsageError{a + " expects a number > 0, got '" + v + "'"};
-      return x;
-    };
     if (a == "--help" || a == "-h") {
-      std::fputs(kHelp, stdout);
-      return 0;
+      t.help = true;
+      return t;
     } else if (a == "--report") {
-      report = value();
+      t.report = value();
     } else if (a == "--doc") {
-      doc = value();
+      t.doc = value();
     } else if (a == "--size") {
-      parseSize(value(), opt.width, opt.height);
-      size_given = true;
+      parseSize(value(), t.opt.width, t.opt.height);
+      t.size_given = true;
     } else if (a == "--size-for") {
       const std::string v = value();
       const size_t eq = v.find('=');
       if (eq == std::string::npos || eq == 0) throw UsageError{"--size-for expects NAME=WxH"};
       int w = 0, h = 0;
       parseSize(v.substr(eq + 1), w, h);
-      sizes_for.push_back({stem(v.substr(0, eq)), {w, h}});
+      t.sizes_for.push_back({stem(v.substr(0, eq)), {w, h}});
     } else if (a == "--frames") {
-      opt.frames = positive(value());
+      t.opt.frames = positiveInt(a, value());
     } else if (a == "--rounds") {
-      opt.rounds = positive(value());
+      t.opt.rounds = positiveInt(a, value());
     } else if (a == "--samples") {
-      opt.samples = positive(value());
+      t.opt.samples = positiveInt(a, value());
     } else if (a == "--max-error") {
-      opt.max_error = number(value());
+      t.opt.max_error = positiveNumber(a, value());
     } else if (a == "--max-ms") {
-      opt.max_ms = number(value());
+      t.opt.max_ms = positiveNumber(a, value());
     } else if (a == "--heatmaps") {
       const std::string v = value();
       if (v == "all") {
-        opt.heatmaps = eval::TradeOptions::Heatmaps::All;
+        t.opt.heatmaps = eval::TradeOptions::Heatmaps::All;
       } else if (v == "presets") {
-        opt.heatmaps = eval::TradeOptions::Heatmaps::Presets;
+        t.opt.heatmaps = eval::TradeOptions::Heatmaps::Presets;
       } else if (v == "none") {
-        opt.heatmaps = eval::TradeOptions::Heatmaps::None;
+        t.opt.heatmaps = eval::TradeOptions::Heatmaps::None;
       } else {
         throw UsageError{"--heatmaps expects all, presets or none, got '" + v + "'"};
       }
     } else if (a == "--no-cache") {
-      opt.use_cache = false;
+      t.opt.use_cache = false;
     } else if (a == "--cache") {
-      opt.cache_dir = value();
+      t.opt.cache_dir = value();
     } else if (a == "--threads") {
-      opt.threads = positive(value());
+      t.opt.threads = positiveInt(a, value());
     } else if (!a.empty() && a[0] == '-') {
       throw UsageError{"unknown option '" + a + "'"};
     } else {
-      scenes.push_back(a);
+      t.scenes.push_back(a);
     }
   }
+  return t;
+}
+}  // namespace
+
+int cmdTrade(const Args& args) {
+  TradeArgs t = parseTradeArgs(args);
+  if (t.help) {
+    std::fputs(kHelp, stdout);
+    return 0;
+  }
+  const std::vector<std::string>& scenes = t.scenes;
+  const std::string &report = t.report, &doc = t.doc;
+  eval::TradeOptions& opt = t.opt;
   if (scenes.empty()) throw UsageError{"no scene file given"};
   if (!doc.empty() && report.empty()) throw UsageError{"--doc needs --report"};
   std::string command = "halfvec trade";
@@ -229,8 +247,8 @@ int cmdTrade(const Args& args) {
   const auto t_start = Clock::now();
   for (size_t k = 0; k < scenes.size(); ++k) {
     eval::TradeOptions o = opt;
-    if (!size_given) o.height = 0;
-    for (const auto& [name, wh] : sizes_for) {
+    if (!t.size_given) o.height = 0;
+    for (const auto& [name, wh] : t.sizes_for) {
       if (name == stem(scenes[k])) o.width = wh.first, o.height = wh.second;
     }
     SceneRun run;

@@ -148,7 +148,19 @@ TEST(Trade, TinySceneRowsAreConsistent) {
     EXPECT_EQ(row.error.compared_pixels, int64_t(r.lit_pixels)) << row.config.name;
     EXPECT_GT(row.total_ms, 0.0) << row.config.name;
     EXPECT_LE(row.bias_rel_rmse, row.error.rel_rmse + 1e-12) << row.config.name;
+    // The cost axis: frame by frame against the scene row, with an interval around the median.
+    EXPECT_GT(row.cost_lo, 0.0) << row.config.name;
+    EXPECT_LE(row.cost_lo, row.cost_ratio) << row.config.name;
+    EXPECT_LE(row.cost_ratio, row.cost_hi) << row.config.name;
+    EXPECT_EQ(row.same_cost, row.cost_lo <= 1.0 && 1.0 <= row.cost_hi) << row.config.name;
+    // One round of one frame: the one ratio is the rows' frame times' ratio.
+    EXPECT_NEAR(row.cost_ratio, row.total_ms / r.rows.front().total_ms, 1e-9) << row.config.name;
   }
+  // The scene row against itself: exactly 1 in every frame.
+  EXPECT_EQ(r.rows.front().cost_ratio, 1.0);
+  EXPECT_EQ(r.rows.front().cost_lo, 1.0);
+  EXPECT_EQ(r.rows.front().cost_hi, 1.0);
+  EXPECT_TRUE(r.rows.front().same_cost);
 
   // The exact configuration has the lowest error, within the reference's noise.
   ASSERT_GE(r.exact_row, 0);

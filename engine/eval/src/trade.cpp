@@ -8,12 +8,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <map>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
+#include "halfvec/eval/bench.hpp"
 #include "halfvec/ibl/ibl.hpp"
 #include "halfvec/image/plot.hpp"
 #include "halfvec/render/renderer.hpp"
@@ -290,33 +292,15 @@ void pickConfigurations(TradeReport& r) {
   }
 }
 
-TradeReport runTrade(const Scene& scene, const TradeOptions& opt) {
-  auto say = [&](const std::string& s) {
-    if (opt.progress) opt.progress(s);
-  };
-  TradeReport rep;
-  rep.scene_path = scene.source_path;
-  rep.width = opt.width;
-  rep.height = opt.height > 0
-                   ? opt.height
-                   : std::max(1, int(std::lround(double(opt.width) * scene.settings.height /
-                                                 scene.settings.width)));
-  rep.frames = std::max(opt.frames, 1);
-  rep.samples = std::max(opt.samples, 1);
-  rep.rounds = std::max(opt.rounds, 1);
+namespace {
+using Say = std::function<void(const std::string&)>;
+
+// Stage 1: the reference of the exact configuration (rep.truth), read from the cache when its
+// inputs match, else rendered (and cached). Fills rep.reference*, returns (image, std. error).
+std::pair<ImageRGBf, ImageRGBf> tradeReference(const Scene& scene, const GBufferReadback& gb,
+                                               const TradeOptions& opt, TradeReport& rep,
+                                               const Say& say) {
   const int w = rep.width, h = rep.height;
-  const TradePlan plan = tradePlan(scene, opt.max_brute_force_lights);
-  rep.skipped = plan.skipped;
-
-  // The G-buffer does not depend on the lighting settings: one readback for the reference.
-  Scene work = scene;
-  render::Renderer renderer;
-  renderer.setScene(work);
-  renderer.render(w, h);
-  const GBufferReadback gb = renderer.readGBuffer();
-
-  // ---- The reference of the exact configuration, cached by its inputs. ----
-  rep.truth = truthSettings(scene.settings);
   Scene truth_scene = scene;
   truth_scene.settings = rep.truth;
   const uint64_t key = referenceKey(scene, gb, rep.truth, rep.samples, opt.seed);
@@ -342,39 +326,46 @@ TradeReport runTrade(const Scene& scene, const TradeOptions& opt) {
         ref.width == w && ref.height == h && ref_se.width == w && ref_se.height == h;
     if (rep.reference_cached) say("reference: cached " + img_path.string());
   }
-  if (!rep.reference_cached) {
-    say("reference: " + std::to_string(w) + "x" + std::to_string(h) + ", " +
-        std::to_string(rep.samples) + " samples per pixel ...");
-    ReferenceOptions ro;
-    ro.samples = rep.samples;
-    ro.threads = opt.threads;
-    ro.seed = opt.seed;
-    const ReferenceResult rr = renderReference(truth_scene, gb, ro);
-    ref = rr.image;
-    ref_se = rr.std_error;
-    rep.reference = rr.stats;
-    say("reference: " + fmtNum(rr.stats.seconds, "%.1f") + " s");
-    if (opt.use_cache) {
-      fs::create_directories(cache);
-      OutputFiles files;  // the three appear together or not at all (a cache hit needs all)
-      writePfm(files.add(img_path).string(), ref);
-      writePfm(files.add(se_path).string(), ref_se);
-      nlohmann::ordered_json j = {{"scene", scene.source_path},
-                                  {"width", w},
-                                  {"height", h},
-                                  {"samples", rep.samples},
-                                  {"lit_pixels", rr.stats.lit_pixels},
-                                  {"total_samples", rr.stats.total_samples},
-                                  {"mean_rel_error", rr.stats.mean_rel_error},
-                                  {"max_rel_error", rr.stats.max_rel_error},
-                                  {"seconds", rr.stats.seconds}};
-      files.write(meta_path, j.dump(2) + "\n");
-      files.commit();
-    }
+  if (rep.reference_cached) return {std::move(ref), std::move(ref_se)};
+  say("reference: " + std::to_string(w) + "x" + std::to_string(h) + ", " +
+      std::to_string(rep.samples) + " samples per pixel ...");
+  ReferenceOptions ro;
+  ro.samples = rep.samples;
+  ro.threads = opt.threads;
+  ro.seed = opt.seed;
+  const ReferenceResult rr = renderReference(truth_scene, gb, ro);
+  rep.reference = rr.stats;
+  say("reference: " + fmtNum(rr.stats.seconds, "%.1f") + " s");
+  if (opt.use_cache) {
+    fs::create_directories(cache);
+    OutputFiles files;  // the three appear together or not at all (a cache hit needs all)
+    writePfm(files.add(img_path).string(), rr.image);
+    writePfm(files.add(se_path).string(), rr.std_error);
+    nlohmann::ordered_json j = {{"scene", scene.source_path},
+                                {"width", w},
+                                {"height", h},
+                                {"samples", rep.samples},
+                                {"lit_pixels", rr.stats.lit_pixels},
+                                {"total_samples", rr.stats.total_samples},
+                                {"mean_rel_error", rr.stats.mean_rel_error},
+                                {"max_rel_error", rr.stats.max_rel_error},
+                                {"seconds", rr.stats.seconds}};
+    files.write(meta_path, j.dump(2) + "\n");
+    files.commit();
   }
-  // Compared pixels: lit, and the reference converged there.
-  std::vector<bool> lit_mask(gb.model.size());
+  return {rr.image, rr.std_error};
+}
+
+// Stage 2: the compared pixels (lit, and the reference converged there) and the reference's
+// noise over them (rep.lit_pixels, unconverged_pixels, noise_rmse, noise_rel_rmse).
+struct ComparedPixels {
+  std::vector<bool> mask;
   std::vector<size_t> lit;
+};
+ComparedPixels comparedPixels(const GBufferReadback& gb, const ImageRGBf& ref,
+                              const ImageRGBf& ref_se, TradeReport& rep) {
+  ComparedPixels c;
+  c.mask.assign(gb.model.size(), false);
   for (size_t i = 0; i < gb.model.size(); ++i) {
     if (gb.model[i] != uint32_t(ShadingModel::DefaultLit)) continue;
     const double sum = double(ref.px[i].x) + double(ref.px[i].y) + double(ref.px[i].z);
@@ -383,99 +374,143 @@ TradeReport runTrade(const Scene& scene, const TradeOptions& opt) {
       ++rep.unconverged_pixels;
       continue;
     }
-    lit_mask[i] = true;
-    lit.push_back(i);
+    c.mask[i] = true;
+    c.lit.push_back(i);
   }
-  rep.lit_pixels = lit.size();
-  const ImageRGBf ref_lit = litRow(ref, lit);
-  {
-    double sq = 0.0, abs_ref = 0.0;
-    for (size_t i : lit)
-      for (int c = 0; c < 3; ++c) {
-        sq += double(ref_se.px[i][c]) * double(ref_se.px[i][c]);
-        abs_ref += std::abs(double(ref.px[i][c]));
-      }
-    const double n = std::max(double(lit.size()) * 3.0, 1.0);
-    rep.noise_rmse = std::sqrt(sq / n);
-    rep.noise_rel_rmse = abs_ref > 0.0 ? rep.noise_rmse / (abs_ref / n) : 0.0;
-  }
-  const ImageRGBf ref_masked = maskedLike(ref, ref, lit_mask);
+  rep.lit_pixels = c.lit.size();
+  double sq = 0.0, abs_ref = 0.0;
+  for (size_t i : c.lit)
+    for (int ch = 0; ch < 3; ++ch) {
+      sq += double(ref_se.px[i][ch]) * double(ref_se.px[i][ch]);
+      abs_ref += std::abs(double(ref.px[i][ch]));
+    }
+  const double n = std::max(double(c.lit.size()) * 3.0, 1.0);
+  rep.noise_rmse = std::sqrt(sq / n);
+  rep.noise_rel_rmse = abs_ref > 0.0 ? rep.noise_rmse / (abs_ref / n) : 0.0;
+  return c;
+}
 
-  // ---- Every configuration: render, time, compare. ----
-  const fs::path heat_dir = fs::path(opt.report_dir) / "heatmaps";
-  // Timings: `rounds` passes over all configurations, each timing `frames` frames after a
-  // warm-up, so that a change of the machine's load hits every configuration alike; the error
-  // comes from the first round's image.
-  struct Times {
-    std::vector<double> totals;
-    std::map<std::string, std::vector<double>> per_pass;
-    std::vector<std::string> order;
-  };
-  std::vector<Times> times(plan.configs.size());
-  auto timeConfig = [&](size_t k) {
-    work.settings = plan.configs[k].settings;
-    work.environment.prefilter_samples = plan.configs[k].prefilter_samples;
-    renderer.setScene(work);
-    renderer.render(w, h);  // warm-up: compiles this configuration's programs
-    for (int f = 0; f < rep.frames; ++f) {
-      const render::FrameStats st = renderer.render(w, h);
-      times[k].totals.push_back(st.total_ms);
-      for (const auto& [pass, ms] : st.passes) {
-        if (!times[k].per_pass.count(pass)) times[k].order.push_back(pass);
-        times[k].per_pass[pass].push_back(ms);
-      }
+bool wantHeatmap(const TradeOptions& opt, const TradeConfig& cfg) {
+  if (opt.report_dir.empty()) return false;
+  if (opt.heatmaps == TradeOptions::Heatmaps::All) return true;
+  return opt.heatmaps == TradeOptions::Heatmaps::Presets &&
+         (cfg.group == "scene" || cfg.group == "preset" || cfg.group == "exact" ||
+          std::any_of(cfg.aliases.begin(), cfg.aliases.end(), [](const std::string& a) {
+            return a.rfind("preset=", 0) == 0 || a == "exact";
+          }));
+}
+
+// Stage 3: one configuration's image against the reference: error, bias, non-finite pixels and
+// (when asked) its heat map.
+TradeRow scoreConfig(const TradeConfig& cfg, const ImageRGBf& img, const ImageRGBf& ref,
+                     const ComparedPixels& px, const TradeOptions& opt, const TradeReport& rep) {
+  TradeRow row;
+  row.config = cfg;
+  for (const glm::vec3& v : img.px)
+    row.nonfinite += !(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z));
+  row.error = compareImages(litRow(img, px.lit), litRow(ref, px.lit));
+  const double mean_ref = row.error.rel_rmse > 0.0 ? row.error.rmse / row.error.rel_rmse : 0.0;
+  row.bias_rel_rmse =
+      mean_ref > 0.0
+          ? std::sqrt(
+                std::max(row.error.rmse * row.error.rmse - rep.noise_rmse * rep.noise_rmse, 0.0)) /
+                mean_ref
+          : 0.0;
+  row.within_noise = row.error.rel_rmse <= kNoiseFactor * rep.noise_rel_rmse;
+  if (wantHeatmap(opt, cfg)) {
+    fs::create_directories(fs::path(opt.report_dir) / "heatmaps");
+    row.heatmap = "heatmaps/" + slug(cfg.name) + ".png";
+    OutputFiles heat;
+    writePng(heat.add(fs::path(opt.report_dir) / row.heatmap).string(),
+             relativeErrorHeatMap(maskedLike(img, ref, px.mask), maskedLike(ref, ref, px.mask),
+                                  opt.heatmap_max));
+    heat.commit();
+  }
+  return row;
+}
+
+// Stage 4 (timings): `rounds` passes over all configurations, each timing `frames` frames after a
+// warm-up, so that a change of the machine's load hits every configuration alike.
+struct ConfigTimes {
+  std::vector<double> totals;
+  std::map<std::string, std::vector<double>> per_pass;
+  std::vector<std::string> order;
+};
+void timeConfig(render::Renderer& renderer, Scene& work, const TradeConfig& cfg, int w, int h,
+                int frames, ConfigTimes& t) {
+  work.settings = cfg.settings;
+  work.environment.prefilter_samples = cfg.prefilter_samples;
+  renderer.setScene(work);
+  renderer.render(w, h);  // warm-up: compiles this configuration's programs
+  for (int f = 0; f < frames; ++f) {
+    const render::FrameStats st = renderer.render(w, h);
+    t.totals.push_back(st.total_ms);
+    for (const auto& [pass, ms] : st.passes) {
+      if (!t.per_pass.count(pass)) t.order.push_back(pass);
+      t.per_pass[pass].push_back(ms);
     }
+  }
+}
+}  // namespace
+
+TradeReport runTrade(const Scene& scene, const TradeOptions& opt) {
+  const Say say = [&](const std::string& s) {
+    if (opt.progress) opt.progress(s);
   };
+  TradeReport rep;
+  rep.scene_path = scene.source_path;
+  rep.width = opt.width;
+  rep.height = opt.height > 0
+                   ? opt.height
+                   : std::max(1, int(std::lround(double(opt.width) * scene.settings.height /
+                                                 scene.settings.width)));
+  rep.frames = std::max(opt.frames, 1);
+  rep.samples = std::max(opt.samples, 1);
+  rep.rounds = std::max(opt.rounds, 1);
+  const int w = rep.width, h = rep.height;
+  const TradePlan plan = tradePlan(scene, opt.max_brute_force_lights);
+  rep.skipped = plan.skipped;
+
+  // The G-buffer does not depend on the lighting settings: one readback for the reference.
+  Scene work = scene;
+  render::Renderer renderer;
+  renderer.setScene(work);
+  renderer.render(w, h);
+  const GBufferReadback gb = renderer.readGBuffer();
+  rep.truth = truthSettings(scene.settings);
+  const auto [ref, ref_se] = tradeReference(scene, gb, opt, rep, say);
+  const ComparedPixels px = comparedPixels(gb, ref, ref_se, rep);
+
+  // Every configuration: time, then compare the first round's image; more timing rounds after.
+  std::vector<ConfigTimes> times(plan.configs.size());
   for (size_t k = 0; k < plan.configs.size(); ++k) {
-    const TradeConfig& cfg = plan.configs[k];
-    timeConfig(k);
-    TradeRow row;
-    row.config = cfg;
-    const ImageRGBf img = renderer.readHdr();
-    for (const glm::vec3& v : img.px)
-      row.nonfinite += !(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z));
-    row.error = compareImages(litRow(img, lit), ref_lit);
-    const double mean_ref = row.error.rel_rmse > 0.0 ? row.error.rmse / row.error.rel_rmse : 0.0;
-    row.bias_rel_rmse =
-        mean_ref > 0.0
-            ? std::sqrt(std::max(row.error.rmse * row.error.rmse - rep.noise_rmse * rep.noise_rmse,
-                                 0.0)) /
-                  mean_ref
-            : 0.0;
-    row.within_noise = row.error.rel_rmse <= kNoiseFactor * rep.noise_rel_rmse;
-    const bool want_heat =
-        !opt.report_dir.empty() &&
-        (opt.heatmaps == TradeOptions::Heatmaps::All ||
-         (opt.heatmaps == TradeOptions::Heatmaps::Presets &&
-          (cfg.group == "scene" || cfg.group == "preset" || cfg.group == "exact" ||
-           std::any_of(cfg.aliases.begin(), cfg.aliases.end(), [](const std::string& a) {
-             return a.rfind("preset=", 0) == 0 || a == "exact";
-           }))));
-    if (want_heat) {
-      fs::create_directories(heat_dir);
-      row.heatmap = "heatmaps/" + slug(cfg.name) + ".png";
-      OutputFiles heat;
-      writePng(heat.add(fs::path(opt.report_dir) / row.heatmap).string(),
-               relativeErrorHeatMap(maskedLike(img, ref, lit_mask), ref_masked, opt.heatmap_max));
-      heat.commit();
-    }
-    say(cfg.name + ": rel RMSE " + fmtNum(row.error.rel_rmse));
-    rep.rows.push_back(std::move(row));
+    timeConfig(renderer, work, plan.configs[k], w, h, rep.frames, times[k]);
+    rep.rows.push_back(scoreConfig(plan.configs[k], renderer.readHdr(), ref, px, opt, rep));
+    say(plan.configs[k].name + ": rel RMSE " + fmtNum(rep.rows.back().error.rel_rmse));
   }
   for (int round = 1; round < rep.rounds; ++round) {
     say("timing round " + std::to_string(round + 1) + " of " + std::to_string(rep.rounds));
-    for (size_t k = 0; k < plan.configs.size(); ++k) timeConfig(k);
+    for (size_t k = 0; k < plan.configs.size(); ++k) {
+      timeConfig(renderer, work, plan.configs[k], w, h, rep.frames, times[k]);
+    }
   }
   for (size_t k = 0; k < rep.rows.size(); ++k) {
     rep.rows[k].total_ms = median(times[k].totals);
+    std::vector<double> ratios;  // frame by frame against the scene row, same round and index
+    for (size_t i = 0; i < std::min(times[k].totals.size(), times[0].totals.size()); ++i) {
+      if (times[0].totals[i] > 0.0) ratios.push_back(times[k].totals[i] / times[0].totals[i]);
+    }
+    const MedianInterval cost = medianInterval(ratios);
+    rep.rows[k].cost_ratio = cost.median;
+    rep.rows[k].cost_lo = cost.lo;
+    rep.rows[k].cost_hi = cost.hi;
+    rep.rows[k].same_cost = cost.contains(1.0);
     for (const std::string& p : times[k].order)
       rep.rows[k].pass_ms.push_back({p, median(times[k].per_pass[p])});
-  }
-  for (size_t i = 0; i < rep.rows.size(); ++i) {
-    const TradeConfig& c = rep.rows[i].config;
+    const TradeConfig& c = rep.rows[k].config;
     if (c.name == "exact" ||
         std::find(c.aliases.begin(), c.aliases.end(), "exact") != c.aliases.end())
-      rep.exact_row = int(i);
+      rep.exact_row = int(k);
   }
   markPareto(rep.rows);
   rep.max_error = opt.max_error;
@@ -525,7 +560,7 @@ std::string tradeCsv(const TradeReport& r) {
   o << "scene,configuration,aliases,group";
   for (const auto& p : passes) o << "," << p << "_ms";
   o << ",total_ms,rel_rmse,bias_rel_rmse,p99_rel,max_abs,rmse,within_noise,pareto,"
-       "nonfinite_pixels\n";
+       "nonfinite_pixels,cost_ratio,cost_lo,cost_hi,same_cost\n";
   for (const TradeRow& row : r.rows) {
     std::string aliases;
     for (const auto& a : row.config.aliases) aliases += (aliases.empty() ? "" : ";") + a;
@@ -535,7 +570,9 @@ std::string tradeCsv(const TradeReport& r) {
     o << "," << fmtNum(row.total_ms, "%.4f") << "," << fmtNum(row.error.rel_rmse, "%.6g") << ","
       << fmtNum(row.bias_rel_rmse, "%.6g") << "," << fmtNum(row.error.p99_rel, "%.6g") << ","
       << fmtNum(row.error.max_abs, "%.6g") << "," << fmtNum(row.error.rmse, "%.6g") << ","
-      << (row.within_noise ? 1 : 0) << "," << (row.pareto ? 1 : 0) << "," << row.nonfinite << "\n";
+      << (row.within_noise ? 1 : 0) << "," << (row.pareto ? 1 : 0) << "," << row.nonfinite << ","
+      << fmtNum(row.cost_ratio, "%.4f") << "," << fmtNum(row.cost_lo, "%.4f") << ","
+      << fmtNum(row.cost_hi, "%.4f") << "," << (row.same_cost ? 1 : 0) << "\n";
   }
   return o.str();
 }
@@ -546,8 +583,11 @@ std::string tradeMarkdown(const TradeReport& r, const std::string& prefix, int l
   o << h << " " << sceneName(r) << " (`" << r.scene_path << "`)\n\n";
   o << r.width << "x" << r.height << ", GPU ms = median of " << r.frames * r.rounds << " frames ("
     << r.rounds << " rounds over all configurations of " << r.frames
-    << " frames after a warm-up frame). Reference: " << r.samples << " samples per pixel over "
-    << (r.lit_pixels + r.unconverged_pixels) << " lit pixels"
+    << " frames after a warm-up frame); x scene: the median over those frames of the row's frame "
+       "time / the scene row's of the same round and frame, with its 95% interval (\"same cost\" "
+       "where it includes 1). Reference: "
+    << r.samples << " samples per pixel over " << (r.lit_pixels + r.unconverged_pixels)
+    << " lit pixels"
     << (r.reference_cached ? " (read from the cache; computed in " : " (computed in ")
     << fmtNum(r.reference.seconds, "%.1f")
     << " s); its mean relative standard error of luminance is "
@@ -560,9 +600,9 @@ std::string tradeMarkdown(const TradeReport& r, const std::string& prefix, int l
   const auto passes = passNames(r);
   o << "| configuration |";
   for (const auto& p : passes) o << " " << p << " ms |";
-  o << " total ms | rel. RMSE | bias | p99 rel. | max abs | |\n|---|";
+  o << " total ms | x scene (95%) | rel. RMSE | bias | p99 rel. | max abs | |\n|---|";
   for (size_t i = 0; i < passes.size(); ++i) o << "---:|";
-  o << "---:|---:|---:|---:|---:|---|\n";
+  o << "---:|---:|---:|---:|---:|---:|---|\n";
   for (size_t i = 0; i < r.rows.size(); ++i) {
     const TradeRow& row = r.rows[i];
     std::string name = "`" + row.config.name + "`";
@@ -576,9 +616,14 @@ std::string tradeMarkdown(const TradeReport& r, const std::string& prefix, int l
     if (int(i) == r.most_accurate_within_ms) flags += "most-accurate ";
     if (row.nonfinite) flags += "NaN/Inf:" + std::to_string(row.nonfinite) + " ";
     if (!row.heatmap.empty()) flags += "[heat map](" + prefix + row.heatmap + ")";
-    o << " " << fmtNum(row.total_ms, "%.3f") << " | " << fmtNum(row.error.rel_rmse, "%.4f") << " | "
-      << fmtNum(row.bias_rel_rmse, "%.4f") << " | " << fmtNum(row.error.p99_rel, "%.4f") << " | "
-      << fmtNum(row.error.max_abs, "%.3g") << " | " << flags << " |\n";
+    const std::string cost =
+        i == 0 ? std::string("1")
+               : fmtNum(row.cost_ratio, "%.2f") + " (" + fmtNum(row.cost_lo, "%.2f") + "-" +
+                     fmtNum(row.cost_hi, "%.2f") + ")" + (row.same_cost ? " same cost" : "");
+    o << " " << fmtNum(row.total_ms, "%.3f") << " | " << cost << " | "
+      << fmtNum(row.error.rel_rmse, "%.4f") << " | " << fmtNum(row.bias_rel_rmse, "%.4f") << " | "
+      << fmtNum(row.error.p99_rel, "%.4f") << " | " << fmtNum(row.error.max_abs, "%.3g") << " | "
+      << flags << " |\n";
   }
   o << "\n";
   if (r.cheapest_within_error >= 0) {

@@ -58,6 +58,11 @@ struct TradeRow {
   TradeConfig config;
   std::vector<std::pair<std::string, double>> pass_ms;  // median GPU ms per pass, in pass order
   double total_ms = 0.0;                                // median of the per-frame totals
+  // Cost relative to the scene's settings (row 0): the median over timed frames of (this row's
+  // frame total / the scene row's total of the same round and frame index) with its
+  // distribution-free 95% interval (eval::medianInterval); `same_cost` when it includes 1.
+  double cost_ratio = 1.0, cost_lo = 1.0, cost_hi = 1.0;
+  bool same_cost = true;
   ErrorMetrics error;          // engine HDR image vs the reference, over lit pixels
   double bias_rel_rmse = 0.0;  // sqrt(max(rmse^2 - noise_rmse^2, 0)) / mean |reference|
   bool within_noise = false;   // error.rel_rmse <= kNoiseFactor * TradeReport::noise_rel_rmse
