@@ -12,7 +12,6 @@
 #include <vector>
 
 #include "app/commands.hpp"
-#include "halfvec/eval/light_methods.hpp"
 #include "halfvec/platform/context.hpp"
 #include "halfvec/render/renderer.hpp"
 #include "halfvec/scene/enums.hpp"
@@ -269,29 +268,6 @@ void breakdownRow(const char* type, const Breakdown& b) {
   std::fflush(stdout);
 }
 
-// Table (e): the light methods of each area-light type (eval/light_methods.hpp), frames
-// interleaved; shading = the method's light ms minus the FetchOnly probe's.
-void methodsTable(int n, float range, int w, int h, int frames) {
-  std::printf(
-      "\n(e) light methods, %d lights of one type, constant density (median light ms of %d "
-      "interleaved frames; shading = light - lists+fetch; ratio: to representative_point)\n",
-      n, frames);
-  std::printf("%8s %-32s %9s %9s %11s %12s %14s\n", "type", "method", "light ms", "Mevals/s",
-              "shading ms", "light ratio", "shading ratio");
-  for (LightType t : {LightType::Sphere, LightType::Tube}) {
-    const Scene s = benchScene(n, range, int(t));
-    const auto rows = eval::timeLightMethods(s, eval::lightMethodsFor(t, s.settings), w, h, frames);
-    const double fetch = rows[0].light_ms, rp = rows[1].light_ms;
-    for (size_t i = 1; i < rows.size(); ++i) {
-      std::printf("%8s %-32s %9.2f %9.1f %11.2f %12.2f %14.2f\n", i == 1 ? toString(t).data() : "",
-                  rows[i].name.c_str(), rows[i].light_ms, rows[i].mevals_per_s,
-                  rows[i].light_ms - fetch, rows[i].light_ms / rp,
-                  (rows[i].light_ms - fetch) / std::max(rp - fetch, 1e-9));
-    }
-    std::fflush(stdout);
-  }
-}
-
 void header() {
   std::printf("%8s %8s %10s %10s %12s %14s\n", "lights", "range m", "cull ms", "light ms",
               "lights/px", "Mevals/s");
@@ -533,7 +509,8 @@ int cmdBench(const Args& args) {
   }
   if (b.methods) {
     const int n = b.only > 0 ? b.only : 1024;
-    methodsTable(n, densityRange(n), b.w, b.h, b.frames);
+    methodsTable([&](LightType t) { return benchScene(n, densityRange(n), int(t)); }, n, b.w, b.h,
+                 b.frames);
     return 0;
   }
   if (b.only > 0) {
@@ -549,7 +526,10 @@ int cmdBench(const Args& args) {
   const std::vector<std::pair<int, Result>> table_a = scalingTables(b);
   double shading_only_rate = 0.0;
   if (b.types < 0) shading_only_rate = breakdownTable(b, 1024).shadingOnlyRate();
-  if (b.types < 0) methodsTable(1024, densityRange(1024), b.w, b.h, b.frames);
+  if (b.types < 0) {
+    methodsTable([](LightType t) { return benchScene(1024, densityRange(1024), int(t)); }, 1024,
+                 b.w, b.h, b.frames);
+  }
   benchTargets(b, table_a, shading_only_rate);
   return 0;
 }
