@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "halfvec/eval/light_bench.hpp"
 #include "halfvec/platform/context.hpp"
 #include "halfvec/render/renderer.hpp"
 #include "halfvec/scene/enums.hpp"
@@ -19,6 +20,14 @@
 #include "halfvec/scene/scene_loader.hpp"
 
 namespace hv::app {
+
+// The measurements live in engine/eval (light_bench.hpp); this file parses and prints.
+using Result = eval::LightPassResult;
+using Runner = eval::LightPassRunner;
+using Breakdown = eval::LightPassBreakdown;
+using eval::benchScene;
+using eval::mevalsPerSecond;
+using eval::runInterleaved;
 
 namespace {
 constexpr const char* kHelp =
@@ -70,133 +79,6 @@ ratios.
                every scene of samples/scenes, as a markdown table (--quick: at most 640x360)
 )";
 
-constexpr float kFloor = 40.0f;
-
-// `lights` lights of range `range` above the floor; type -1: mixed (point, sphere, tube in turn),
-// else that hv::LightType for all. The same positions and colors for every call (seed 1).
-Scene benchScene(int lights, float range, int type = -1) {
-  Scene s;
-  s.camera.position = {0.0f, 18.0f, 22.0f};
-  s.camera.target = {0.0f, 0.0f, 0.0f};
-  s.camera.fov_y_deg = 60.0f;
-  s.environment.kind = EnvironmentKind::None;
-  Material m;
-  m.base_color = glm::vec3(0.7f);
-  m.roughness = 0.5f;
-  s.materials.push_back(m);
-  s.meshes.push_back(makePlane(kFloor, kFloor));
-  Object o;
-  o.meshes = {0};
-  s.objects.push_back(o);
-  std::mt19937 rng(1);
-  std::uniform_real_distribution<float> u(-kFloor / 2, kFloor / 2), h(0.1f, 0.6f), c(0.3f, 1.0f);
-  for (int i = 0; i < lights; ++i) {
-    Light l;
-    l.type = static_cast<LightType>(type < 0 ? i % 3 : type);
-    l.position = {u(rng), h(rng), u(rng)};
-    l.color = {c(rng), c(rng), c(rng)};
-    l.intensity = 1.0f;
-    l.range = range;
-    l.radius = l.type == LightType::Point ? 0.0f : 0.05f;
-    l.length = l.type == LightType::Tube ? 0.3f : 0.0f;
-    l.axis = glm::normalize(glm::vec3(c(rng) - 0.65f, 0.0f, c(rng) - 0.65f) + glm::vec3(1e-3f));
-    s.lights.push_back(l);
-  }
-  return s;
-}
-
-struct Result {
-  double cull_ms = 0, light_ms = 0;
-  size_t evals = 0, lit = 0;
-};
-
-// One scene's renderer and its per-frame pass times.
-struct Runner {
-  render::Renderer r;
-  std::vector<double> cull, light;
-  std::vector<std::pair<std::string, double>> fastest;  // per pass, the fastest frame's ms
-  Runner(const Scene& scene, int w, int h,
-         render::LightPassProbe probe = render::LightPassProbe::Shade) {
-    render::DebugOptions debug;
-    debug.light_probe = probe;
-    debug.finish_each_pass = true;  // no pass timed with the previous one's deferred raster
-    r.setDebugOptions(debug);
-    r.setScene(scene);
-    r.render(w, h);  // warm up: compiles the variants
-  }
-  void frame(int w, int h) {
-    const auto st = r.render(w, h);
-    for (auto& [name, ms] : st.passes) {
-      if (name == "light_cull") cull.push_back(ms);
-      if (name == "light") light.push_back(ms);
-      auto it = std::find_if(fastest.begin(), fastest.end(),
-                             [&](const auto& p) { return p.first == name; });
-      if (it == fastest.end()) {
-        fastest.emplace_back(name, ms);
-      } else {
-        it->second = std::min(it->second, ms);
-      }
-    }
-  }
-  Result result(bool fastest = false) const {
-    auto median = [fastest](std::vector<double> v) {
-      if (v.empty()) return 0.0;
-      if (fastest) return *std::min_element(v.begin(), v.end());
-      std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-      return v[v.size() / 2];
-    };
-    Result res;
-    res.cull_ms = median(cull);
-    res.light_ms = median(light);
-    const auto work = r.lightWork();
-    res.evals = work.light_pixel_evaluations;
-    res.lit = work.lit_pixels;
-    return res;
-  }
-};
-
-// Light-pixel evaluations per second, in millions, of `evals` evaluations in `ms` milliseconds.
-double mevalsPerSecond(size_t evals, double ms) {
-  return ms > 0 ? double(evals) / ms * 1e-3 : 0.0;
-}
-
-// Renders `frames` rounds of one frame of each runner in turn (A B A B ...).
-void runInterleaved(std::vector<std::unique_ptr<Runner>>& runs, int w, int h, int frames) {
-  for (int f = 0; f < frames; ++f) {
-    for (auto& run : runs) run->frame(w, h);
-  }
-}
-
-Result measure(Scene& scene, int w, int h, int frames) {
-  Runner run(scene, w, h);
-  for (int f = 0; f < frames; ++f) run.frame(w, h);
-  return run.result();
-}
-
-// Frames of several scenes alternated (A B A B ...), so that load from other processes on a
-// shared machine hits every scene alike; for the ratio checks.
-// `pair_ratio`, if given: the median over frames of (light ms of the last scene / light ms of the
-// first) within the same round, which cancels drifts of the machine's speed between rounds.
-std::vector<Result> measureInterleaved(const std::vector<const Scene*>& scenes, int w, int h,
-                                       int frames, double* pair_ratio = nullptr) {
-  std::vector<std::unique_ptr<Runner>> runs;
-  for (const Scene* s : scenes) runs.push_back(std::make_unique<Runner>(*s, w, h));
-  runInterleaved(runs, w, h, frames);
-  if (pair_ratio) {
-    std::vector<double> ratios;
-    const auto& a = runs.front()->light;
-    const auto& b = runs.back()->light;
-    for (size_t i = 0; i < std::min(a.size(), b.size()); ++i) {
-      if (a[i] > 0) ratios.push_back(b[i] / a[i]);
-    }
-    std::sort(ratios.begin(), ratios.end());
-    *pair_ratio = ratios.empty() ? 0.0 : ratios[ratios.size() / 2];
-  }
-  std::vector<Result> out;
-  for (auto& run : runs) out.push_back(run->result());
-  return out;
-}
-
 void printRow(int n, float range, const Result& r) {
   std::printf("%8d %8.2f %10.3f %10.3f %12.1f %14.1f\n", n, range, r.cull_ms, r.light_ms,
               r.lit ? double(r.evals) / double(r.lit) : 0.0, mevalsPerSecond(r.evals, r.light_ms));
@@ -237,26 +119,6 @@ int compareShaderTrees(const Scene& scene, const std::vector<std::string>& dirs,
   return 0;
 }
 
-// --breakdown (and table (d)): the light pass of one scene three times, frames interleaved: the
-// real pass, the FetchOnly probe (lists walked, lights fetched, no shading) and the SetupOnly
-// probe (no light loop); see render::LightPassProbe. Differences of medians give the time of
-// per-pixel setup, of walking the lists and fetching the lights, and of the shading arithmetic;
-// "if only shading" is the evaluation rate the pass would reach were the other two free.
-struct Breakdown {
-  Result full, fetch_only, setup_only;  // medians of the real pass and of the two probes
-  double fetch() const { return fetch_only.light_ms - setup_only.light_ms; }
-  double shading() const { return full.light_ms - fetch_only.light_ms; }
-  double shadingOnlyRate() const { return mevalsPerSecond(full.evals, shading()); }
-};
-Breakdown breakdown(const Scene& scene, int w, int h, int frames) {
-  using Probe = render::LightPassProbe;
-  std::vector<std::unique_ptr<Runner>> runs;
-  for (Probe p : {Probe::Shade, Probe::FetchOnly, Probe::SetupOnly}) {
-    runs.push_back(std::make_unique<Runner>(scene, w, h, p));
-  }
-  runInterleaved(runs, w, h, frames);
-  return {runs[0]->result(), runs[1]->result(), runs[2]->result()};
-}
 void breakdownHeader() {
   std::printf("%8s %9s %9s %12s %11s %10s %14s\n", "type", "light ms", "setup ms", "lists+fetch",
               "shading ms", "Mevals/s", "if only shading");
@@ -350,7 +212,8 @@ BenchArgs parseBenchArgs(const Args& args) {
 
 constexpr float kDensity = 24.0f;  // target lights overlapping a floor point in table (a)
 float densityRange(int n) {
-  return std::sqrt(kDensity * kFloor * kFloor / (3.14159265f * float(n)));
+  return std::sqrt(kDensity * eval::kBenchFloorSide * eval::kBenchFloorSide /
+                   (3.14159265f * float(n)));
 }
 // The light counts of a table: 64, 256, ... up to --max-lights, or with --quick those given.
 std::vector<int> lightCounts(const BenchArgs& b, const std::vector<int>& quick_counts) {
@@ -375,7 +238,8 @@ Breakdown breakdownTable(const BenchArgs& b, int n) {
   breakdownHeader();
   Breakdown mixed;
   for (int t = types < 0 ? -1 : types; t < (types < 0 ? 3 : types + 1); ++t) {
-    const Breakdown row = breakdown(benchScene(n, densityRange(n), t), w, h, frames);
+    const Breakdown row =
+        eval::measureLightPassBreakdown(benchScene(n, densityRange(n), t), w, h, frames);
     if (t < 0) mixed = row;
     breakdownRow(t < 0 ? "mixed" : t == 0 ? "point" : t == 1 ? "sphere" : "tube", row);
   }
@@ -390,14 +254,14 @@ std::vector<std::pair<int, Result>> scalingTables(const BenchArgs& b) {
   std::vector<std::pair<int, Result>> table_a;
   for (int n : lightCounts(b, {64, 256, 1024, 16384})) {
     Scene s = benchScene(n, densityRange(n), types);
-    table_a.emplace_back(n, measure(s, w, h, frames));
+    table_a.emplace_back(n, eval::measureLightPass(s, w, h, frames));
     printRow(n, densityRange(n), table_a.back().second);
   }
   std::printf("\n(b) fixed scene (range 2 m)\n");
   header();
   for (int n : lightCounts(b, {64, 1024, 16384})) {
     Scene s = benchScene(n, 2.0f, types);
-    printRow(n, 2.0f, measure(s, w, h, frames));
+    printRow(n, 2.0f, eval::measureLightPass(s, w, h, frames));
   }
   if (types < 0) {
     // What one evaluation costs per type: a tube light is several times a point light.
@@ -408,7 +272,7 @@ std::vector<std::pair<int, Result>> scalingTables(const BenchArgs& b) {
     for (int t = 0; t < 3; ++t) {
       Scene st = benchScene(1024, densityRange(1024), t);
       std::printf("%8s", t == 0 ? "point" : t == 1 ? "sphere" : "tube");
-      printRow(1024, densityRange(1024), measure(st, w, h, frames));
+      printRow(1024, densityRange(1024), eval::measureLightPass(st, w, h, frames));
     }
   }
   return table_a;
@@ -422,10 +286,10 @@ void benchTargets(const BenchArgs& b, const std::vector<std::pair<int, Result>>&
   header();
   const float range = densityRange(1024);
   Scene s = benchScene(1024, range, types);
-  const Result tiled = measure(s, w, h, frames);
+  const Result tiled = eval::measureLightPass(s, w, h, frames);
   printRow(1024, range, tiled);
   s.settings.culling = Culling::BruteForce;
-  const Result brute = measure(s, w, h, std::min(frames, 2));
+  const Result brute = eval::measureLightPass(s, w, h, std::min(frames, 2));
   printRow(1024, range, brute);
   const double tiled_total = tiled.cull_ms + tiled.light_ms;
   const double speedup = tiled_total > 0 ? brute.light_ms / tiled_total : 0.0;
@@ -451,13 +315,15 @@ void benchTargets(const BenchArgs& b, const std::vector<std::pair<int, Result>>&
     }
   }
   if (max_lights >= 16384) {
-    // Re-measured interleaved (see measureInterleaved): the table rows above ran minutes apart.
+    // Re-measured interleaved (see eval::measureLightPassInterleaved): the table rows above ran
+    // minutes apart.
     const Scene s256 = benchScene(256, densityRange(256), types);
     const Scene s16k = benchScene(16384, densityRange(16384), types);
     // Judged on the median of the per-round ratios: each round renders one frame of each scene
     // back to back, so a slow stretch of the machine (other processes, the host) hits both.
     double growth = 0.0;
-    const auto pair = measureInterleaved({&s256, &s16k}, w, h, std::max(frames, 15), &growth);
+    const auto pair =
+        eval::measureLightPassInterleaved({&s256, &s16k}, w, h, std::max(frames, 15), &growth);
     check("light pass ms growth 256 -> 16384 lights, (a)*", "<= 1.5x", growth, growth <= 1.5);
     std::printf(
         "  * median of per-round ratios over %d interleaved rounds; median light ms %.1f (256) vs "
@@ -520,7 +386,7 @@ int cmdBench(const Args& args) {
     Scene s = benchScene(b.only, r, b.types);
     if (!b.shader_dirs.empty())
       return compareShaderTrees(s, b.shader_dirs, b.w, b.h, b.frames, false);
-    printRow(b.only, r, measure(s, b.w, b.h, b.frames));
+    printRow(b.only, r, eval::measureLightPass(s, b.w, b.h, b.frames));
     return 0;
   }
   const std::vector<std::pair<int, Result>> table_a = scalingTables(b);

@@ -15,6 +15,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "halfvec/core/suggest.hpp"
 #include "halfvec/scene/enums.hpp"
 #include "halfvec/scene/gltf_loader.hpp"
 #include "halfvec/scene/presets.hpp"
@@ -36,32 +37,9 @@ using json = nlohmann::json;
 namespace fs = std::filesystem;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-size_t editDistance(std::string_view a, std::string_view b) {
-  std::vector<size_t> row(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    size_t diag = row[0];
-    row[0] = i;
-    for (size_t j = 1; j <= b.size(); ++j) {
-      const size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diag = up;
-    }
-  }
-  return row[b.size()];
-}
-
-// ", did you mean "x"?" when one candidate is close to `s`, else "".
+// ", did you mean "x"?" when one candidate is close to `s`, else "" (halfvec/core/suggest.hpp).
 std::string didYouMean(std::string_view s, std::span<const std::string_view> candidates) {
-  std::string_view best;
-  size_t best_d = std::numeric_limits<size_t>::max();
-  for (std::string_view c : candidates) {
-    const size_t d = editDistance(s, c);
-    if (d < best_d) best_d = d, best = c;
-  }
-  const size_t limit = std::max<size_t>(2, s.size() / 3);
-  if (best_d <= limit) return "; did you mean \"" + std::string(best) + "\"?";
-  return "";
+  return didYouMeanSuffix(s, candidates);
 }
 
 std::string shortDump(const json& j) {
