@@ -63,10 +63,8 @@ ratios.
                shading arithmetic, each measured by a probe build of the pass with frames
                interleaved (render::LightPassProbe); "if only shading" is the rate the pass
                would reach were setup and fetching free
-  --methods    instead: table (e) alone: per light type (sphere, tube), the light pass of each
-               method (representative point, ltc) at 1024 lights (or --lights N), frames
-               interleaved, with the FetchOnly probe's time subtracted as "shading"; the ratio
-               ltc / representative point of the pass and of its shading arithmetic
+  --methods    instead: table (e) alone: sphere and tube light pass per method (representative
+               point, ltc) at 1024 lights (or --lights N), interleaved, and ltc / it
   --frame      instead: every pass of every sample scene (or of --scene FILE) in ms and as a
                multiple of the floor pass (a compute pass that reads the G-buffer and writes an
                RGBA16F target) timed in the same frames, median over --frames (default 9) with
@@ -373,10 +371,12 @@ int cmdBench(const Args& args) {
     breakdownTable(b, b.only > 0 ? b.only : 1024);
     return 0;
   }
-  if (b.methods) {
-    const int n = b.only > 0 ? b.only : 1024;
+  auto methods = [&](int n) {
     methodsTable([&](LightType t) { return benchScene(n, densityRange(n), int(t)); }, n, b.w, b.h,
                  b.frames);
+  };
+  if (b.methods) {
+    methods(b.only > 0 ? b.only : 1024);
     return 0;
   }
   if (b.only > 0) {
@@ -392,10 +392,7 @@ int cmdBench(const Args& args) {
   const std::vector<std::pair<int, Result>> table_a = scalingTables(b);
   double shading_only_rate = 0.0;
   if (b.types < 0) shading_only_rate = breakdownTable(b, 1024).shadingOnlyRate();
-  if (b.types < 0) {
-    methodsTable([](LightType t) { return benchScene(1024, densityRange(1024), int(t)); }, 1024,
-                 b.w, b.h, b.frames);
-  }
+  if (b.types < 0) methods(1024);
   benchTargets(b, table_a, shading_only_rate);
   return 0;
 }
