@@ -40,6 +40,7 @@ Commands:
                         material/lights/rendering panels
   accuracy              sweep of every approximation vs the reference -> docs/accuracy.md
   trade SCENE.json      speed/accuracy trade report: ms per pass and error per option, presets
+  ltc-fit               fit the LTC table of the ltc light modes -> engine/shading/src/ltc_table.cpp
 
 Run `halfvec <command> --help` for the options of each command.
 )";
@@ -50,7 +51,7 @@ struct Command {
 constexpr Command kCommands[] = {
     {"render", cmdRender},     {"compare", cmdCompare},     {"stability", cmdStability},
     {"bench", cmdBench},       {"reference", cmdReference}, {"view", cmdView},
-    {"accuracy", cmdAccuracy}, {"trade", cmdTrade},
+    {"accuracy", cmdAccuracy}, {"trade", cmdTrade},         {"ltc-fit", cmdLtcFit},
 };
 
 // The options a command's --help lists (lines starting with "  -" or "  --"), read from its

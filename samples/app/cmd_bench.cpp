@@ -15,6 +15,7 @@
 #include "halfvec/eval/light_bench.hpp"
 #include "halfvec/platform/context.hpp"
 #include "halfvec/render/renderer.hpp"
+#include "halfvec/scene/enums.hpp"
 #include "halfvec/scene/primitives.hpp"
 #include "halfvec/scene/scene_loader.hpp"
 
@@ -62,6 +63,8 @@ ratios.
                shading arithmetic, each measured by a probe build of the pass with frames
                interleaved (render::LightPassProbe); "if only shading" is the rate the pass
                would reach were setup and fetching free
+  --methods    instead: table (e) alone: sphere and tube light pass per method (representative
+               point, ltc) at 1024 lights (or --lights N), interleaved, and ltc / it
   --frame      instead: every pass of every sample scene (or of --scene FILE) in ms and as a
                multiple of the floor pass (a compute pass that reads the G-buffer and writes an
                RGBA16F target) timed in the same frames, median over --frames (default 9) with
@@ -138,7 +141,7 @@ struct BenchArgs {
   int w = 1280, h = 720, frames = 5, max_lights = 16384, only = 0;
   float only_range = 0.0f;
   bool quick = false, variants = false, show_breakdown = false, frame_mode = false;
-  bool vs_brute = false, frames_given = false;
+  bool vs_brute = false, frames_given = false, methods = false;
   std::string report;
   int types = -1;  // --types: -1 mixed, else a hv::LightType
   std::vector<std::string> shader_dirs;
@@ -189,6 +192,8 @@ BenchArgs parseBenchArgs(const Args& args) {
       b.variants = true;
     } else if (a == "--breakdown") {
       b.show_breakdown = true;
+    } else if (a == "--methods") {
+      b.methods = true;
     } else if (a == "--frame") {
       b.frame_mode = true;
     } else if (a == "--vs-brute") {
@@ -366,6 +371,14 @@ int cmdBench(const Args& args) {
     breakdownTable(b, b.only > 0 ? b.only : 1024);
     return 0;
   }
+  auto methods = [&](int n) {
+    methodsTable([&](LightType t) { return benchScene(n, densityRange(n), int(t)); }, n, b.w, b.h,
+                 b.frames);
+  };
+  if (b.methods) {
+    methods(b.only > 0 ? b.only : 1024);
+    return 0;
+  }
   if (b.only > 0) {
     std::printf("(a) constant density (about %.0f lights per floor point)\n", kDensity);
     header();
@@ -379,6 +392,7 @@ int cmdBench(const Args& args) {
   const std::vector<std::pair<int, Result>> table_a = scalingTables(b);
   double shading_only_rate = 0.0;
   if (b.types < 0) shading_only_rate = breakdownTable(b, 1024).shadingOnlyRate();
+  if (b.types < 0) methods(1024);
   benchTargets(b, table_a, shading_only_rate);
   return 0;
 }

@@ -1,10 +1,12 @@
 // One function per subcommand; each returns the process exit code.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "halfvec/scene/model_scene.hpp"
+#include "halfvec/scene/scene.hpp"
 
 namespace hv::app {
 
@@ -18,6 +20,10 @@ int cmdReference(const Args& args);
 int cmdView(const Args&);
 // `bench --variants` (bench_variants.cpp): specialized vs uber programs per pass per sample scene.
 int benchVariants(int width, int height, int frames);
+// Table (e) of `halfvec bench`: per area-light type, `n` lights of the scene `scene(type)`, the
+// light pass of each method (eval/light_methods.hpp) from interleaved frames, and the ratios to
+// the representative point (bench_methods.cpp).
+void methodsTable(const std::function<Scene(LightType)>& scene, int n, int w, int h, int frames);
 // `bench --frame` (bench_frame.cpp): every pass as a multiple of the floor pass, per sample scene.
 struct FrameBenchOptions {
   int width = 1280, height = 720, frames = 9;
@@ -31,6 +37,7 @@ int benchFrame(const FrameBenchOptions& options);
 std::vector<std::string> sampleScenePaths();
 int cmdAccuracy(const Args& args);
 int cmdTrade(const Args& args);
+int cmdLtcFit(const Args& args);
 
 // Parses a --size value "WxH" (1..16384 each); throws UsageError naming the bad value.
 void parseSize(const std::string& value, int& width, int& height);

@@ -33,6 +33,8 @@
 // Light pass: the light records and the tile index list as buffer textures (HV_LIGHTS_TEXTURE).
 #define HV_UNIT_LIGHT_TEXELS 4
 #define HV_UNIT_TILE_INDEX_TEXELS 5
+// Light pass with an LTC light mode: the LTC table's two textures on units 6 and 7
+// (HV_LTC_TEXTURE_UNIT0 / UNIT1, defined in ltc.glsl, which the C++ reference also compiles).
 // Ambient pass: the environment's prefiltered radiance, env BRDF table and irradiance cube.
 #define HV_UNIT_RADIANCE 5
 #define HV_UNIT_ENV_BRDF 6

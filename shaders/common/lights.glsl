@@ -8,9 +8,20 @@
 //  HV_SPHERE_DIFFUSE 0|1        0 = Karis point approximation, 1 = Lagarde & de Rousiers 2014
 //                               horizon-correct sphere irradiance (order of hv::SphereDiffuse)
 //  HV_SPHERE_NORMALIZATION 1|0  (alpha/alpha')^2 energy normalization (Karis eqs. 10, 14)
-//  HV_TUBE_SPECULAR 0|1         0 = closest point to the reflection ray (Karis eq. 19),
-//                               1 = smallest angle (eq. 18) (order of hv::TubeSpecular)
+//  HV_SPHERE_SPECULAR 0|1       0 = representative point (Karis eqs. 10, 11, 14), 1 = LTC: the
+//                               sphere's cone integrated under the fitted LTC (ltc.glsl)
+//                               (order of hv::SphereSpecular)
+//  HV_TUBE_SPECULAR 0|1|2       0 = closest point to the reflection ray (Karis eq. 19),
+//                               1 = smallest angle (eq. 18), 2 = LTC over the capsule
+//                               (order of hv::TubeSpecular)
 //  HV_TUBE_NORMALIZATION 1|0    alpha/alpha' line normalization (Karis eq. 20)
+//  HV_TUBE_DIFFUSE 0|1          0 = Karis eq. 16, 1 = the capsule's irradiance with the identity
+//                               LTC (order of hv::TubeDiffuse)
+//  HV_LTC_V_RATIO 1|0           the LTC lobe is fitted with height-correlated Smith V; with another
+//                               V term, 1 scales its magnitude by V / V_Smith at the mirror
+//                               direction (docs/lights.md, "Other BRDF choices")
+//  HV_LTC_POINT_CORRECTION 1|0  LTC sphere: corrects small lights by the lobe's value over the
+//                               LTC's at the representative point (measurement in docs/lights.md)
 //  HV_HAS_POINT_LIGHTS / HV_HAS_SPHERE_LIGHTS / HV_HAS_TUBE_LIGHTS 1|0: compile that light type
 //  HV_DIRECT_TERMS 3|1|2|0      bit 1 diffuse, bit 2 specular: the terms shadeLight returns (the
 //                               others are 0); for per-term images (`halfvec render --aov`)
@@ -19,6 +30,7 @@
 
 #include "math.glsl"
 #include "brdf.glsl"
+#include "ltc.glsl"
 
 #ifndef HV_FALLOFF_PLUS_ONE
 #define HV_FALLOFF_PLUS_ONE 1
@@ -31,13 +43,30 @@
 #ifndef HV_SPHERE_NORMALIZATION
 #define HV_SPHERE_NORMALIZATION 1
 #endif
+#define HV_SPHERE_SPECULAR_REPRESENTATIVE_POINT 0
+#define HV_SPHERE_SPECULAR_LTC 1
+#ifndef HV_SPHERE_SPECULAR
+#define HV_SPHERE_SPECULAR HV_SPHERE_SPECULAR_REPRESENTATIVE_POINT
+#endif
 #define HV_TUBE_SPECULAR_CLOSEST_POINT 0
 #define HV_TUBE_SPECULAR_SMALLEST_ANGLE 1
+#define HV_TUBE_SPECULAR_LTC 2
 #ifndef HV_TUBE_SPECULAR
 #define HV_TUBE_SPECULAR HV_TUBE_SPECULAR_CLOSEST_POINT
 #endif
 #ifndef HV_TUBE_NORMALIZATION
 #define HV_TUBE_NORMALIZATION 1
+#endif
+#define HV_TUBE_DIFFUSE_KARIS_EQ16 0
+#define HV_TUBE_DIFFUSE_LTC 1
+#ifndef HV_TUBE_DIFFUSE
+#define HV_TUBE_DIFFUSE HV_TUBE_DIFFUSE_KARIS_EQ16
+#endif
+#ifndef HV_LTC_V_RATIO
+#define HV_LTC_V_RATIO 1
+#endif
+#ifndef HV_LTC_POINT_CORRECTION
+#define HV_LTC_POINT_CORRECTION 1
 #endif
 #ifndef HV_HAS_POINT_LIGHTS
 #define HV_HAS_POINT_LIGHTS 1
@@ -51,6 +80,10 @@
 #ifndef HV_DIRECT_TERMS
 #define HV_DIRECT_TERMS 3
 #endif
+// The LTC table is read, once per pixel, when a compiled light type shades its specular with it.
+#define HV_LTC_TABLE                                                             \
+  ((HV_HAS_SPHERE_LIGHTS && HV_SPHERE_SPECULAR == HV_SPHERE_SPECULAR_LTC) || \
+   (HV_HAS_TUBE_LIGHTS && HV_TUBE_SPECULAR == HV_TUBE_SPECULAR_LTC))
 
 // Light type codes stored (as float) in GpuLight.params.y; = hv::LightType.
 #define HV_LIGHT_POINT 0
@@ -90,28 +123,8 @@ float distanceFalloff(float d2, float radius, float inv_range) {
   return falloffWindow(d2, inv_range) / (d2c + float(HV_FALLOFF_PLUS_ONE));
 }
 
-// Lagarde & de Rousiers 2014, "Moving Frostbite to PBR", section 4.7.2 listing 7
-// (illuminanceSphereOrDisk, after Snyder 1996): integral of cos over the visible part of a sphere
-// of sin^2(half-angle) = sin_sigma2 whose center is at angle theta from the normal, horizon
-// clipped. Returned divided by pi sin_sigma2, so it equals saturate(cos_theta) when the sphere is
-// entirely above or below the horizon; the caller multiplies by I / d^2.
-// Branch-free: both cases are computed with guarded inputs and selected with step().
-float sphereHorizonFactor(float cos_theta, float sin_sigma2) {
-  // sin_sigma2 in [1e-8, 1]: 1 means the point is inside the sphere; 1e-8 (radius 1e-4 d) keeps
-  // 1/sin_sigma2 finite for radius 0, where the result is the point light's saturate(cos_theta).
-  float s2 = clamp(sin_sigma2, 1e-8f, 1.0f);
-  float above = saturate(cos_theta);
-  // Straddling the horizon. sin_theta >= 1e-4 and x >= 1e-4 only guard 0/0 at cos_theta = +-1 or
-  // inside the sphere (s2 = 1); there the other case is selected or the value is bounded anyway.
-  float sin_theta = sqrt(max(1.0f - cos_theta * cos_theta, 1e-8f));
-  float x = sqrt(max(1.0f / s2 - 1.0f, 1e-8f));
-  float y = clamp(-x * cos_theta / sin_theta, -1.0f, 1.0f);
-  float sin_theta_sqrt_y = sin_theta * sqrt(1.0f - y * y);
-  float straddle = ((cos_theta * acos(y) - x * sin_theta_sqrt_y) * s2 +
-                    atan(sin_theta_sqrt_y / x)) / (PI * s2);
-  // cos^2 >= sin^2(sigma): the sphere does not cross the horizon.
-  return max(mix(straddle, above, step(s2, cos_theta * cos_theta)), 0.0f);
-}
+// sphereHorizonFactor (Lagarde & de Rousiers 2014 section 4.7.2, horizon-clipped sphere
+// irradiance): ltc_integrals.glsl, where the LTC integrals use it for the horizon as well.
 
 // Karis 2013 eq. 11: the point of a sphere (center Lc relative to the shading point, radius r)
 // closest to the reflection ray R. Returns the unnormalized vector to it.
@@ -152,13 +165,52 @@ float lineNormalization(float alpha, float len, float d2) {
 #endif
 }
 
+#if HV_LTC_TABLE
+// The two textures of the LTC table (ltc.glsl), sampled like the C++ side (ltc_table.hpp):
+// bilinear, clamp to edge, level 0.
+#ifdef HV_CPP
+vec4 ltcFetch0(vec2 uv) { return ::hv::ltcTableSample(0, uv); }
+vec4 ltcFetch1(vec2 uv) { return ::hv::ltcTableSample(1, uv); }
+#else
+layout(binding = HV_LTC_TEXTURE_UNIT0) uniform sampler2D t_ltc0;
+layout(binding = HV_LTC_TEXTURE_UNIT1) uniform sampler2D t_ltc1;
+vec4 ltcFetch0(vec2 uv) { return textureLod(t_ltc0, uv, 0.0f); }
+vec4 ltcFetch1(vec2 uv) { return textureLod(t_ltc1, uv, 0.0f); }
+#endif
+
+// The integral over the hemisphere of the specular lobe the LTC shades, f (n.l) with the
+// surface's Fresnel: n_f f0 + n_fresnel (f90 - f0) (Schlick's F = f0 + (f90 - f0)(1 - V.H)^5
+// integrated against the fitted lobe, Heitz et al. 2016 section 4.3), f90 = 1, or UE4's
+// saturate(50 f0.g) with HV_F_SCHLICK_F90_OCCLUSION. Other F terms get Schlick's average. With a V
+// term other than the fitted height-correlated Smith, HV_LTC_V_RATIO scales it by that term over
+// Smith's at the mirror direction (N.L = N.V, H = N); docs/lights.md, "Other BRDF choices".
+vec3 ltcSpecularMagnitude(Surface s, float NoV, vec4 t1) {
+#if HV_BRDF_F == HV_F_SCHLICK_F90_OCCLUSION
+  vec3 f90 = vec3(saturate(50.0f * s.f0.y));
+#else
+  vec3 f90 = vec3(1.0f);
+#endif
+  vec3 m = s.f0 * t1.x + (f90 - s.f0) * t1.y;
+#if HV_LTC_V_RATIO && HV_BRDF_V != HV_V_SMITH_GGX_CORRELATED
+  m = m * (visibility(s.roughness, s.alpha, NoV, NoV, 1.0f, NoV) /
+           V_SmithGGXCorrelated(s.alpha, NoV, NoV));
+#endif
+  return m;
+}
+#endif
+
 // What every light shading a pixel shares, computed once per pixel before the light loop (as
-// UE4's BxDFContext): the view direction, N.V and the reflection ray of Karis eq. 11 and 19.
+// UE4's BxDFContext): the view direction, N.V and the reflection ray of Karis eq. 11 and 19; with
+// an LTC mode, the pixel's LTC and the magnitude of its lobe.
 struct ShadingPoint {
   vec3 P;         // world position
   vec3 V;         // unit, from P toward the eye
   vec3 R;         // reflect(-V, N): the reflection ray of the representative-point methods
   float NoV;      // max(dot(N, V), HV_MIN_NOV): the BRDF's N.V
+#if HV_LTC_TABLE
+  Ltc ltc;        // the LTC of this pixel's (roughness, N.V), world space
+  vec3 ltc_spec;  // ltcSpecularMagnitude: what the LTC's integral (<= 1) is multiplied by
+#endif
 };
 
 ShadingPoint makeShadingPoint(Surface s, vec3 P, vec3 V) {
@@ -167,41 +219,55 @@ ShadingPoint makeShadingPoint(Surface s, vec3 P, vec3 V) {
   sp.V = V;
   sp.R = reflect(-V, s.N);
   sp.NoV = max(dot(s.N, V), HV_MIN_NOV);
+#if HV_LTC_TABLE
+  vec2 uv = ltcTableUv(s.roughness, sp.NoV);
+  sp.ltc = makeLtc(s.N, V, s.alpha, ltcFetch0(uv));
+  sp.ltc_spec = ltcSpecularMagnitude(s, sp.NoV, ltcFetch1(uv));
+#endif
   return sp;
 }
 
-// Karis 2013 "Lighting" / "Material Model": the shading of one light, shared by all light types.
-// Radiance leaving the surface toward V for light arriving from direction L (representative
-// direction for specular, Ld for diffuse), already scaled by the light's irradiance factors:
-// diffuse_irr = I * falloff * cos for the diffuse lobe, spec_irr = I * falloff for specular
-// (NoL of the representative direction is applied here), spec_norm = D normalization.
-vec3 shadeLight(Surface s, ShadingPoint sp, vec3 Ld, vec3 Ls, vec3 radiant, float diffuse_irr,
-                float spec_irr, float spec_norm) {
-  // Diffuse lobe (Lambert or Burley) evaluated for the diffuse direction Ld.
+// Karis 2013 "Lighting" / "Material Model": the two terms of one light. diffuseTerm: the diffuse
+// lobe (Lambert or Burley) for direction Ld times diffuse_irr = I * falloff * cos (irradiance
+// per unit color). specularTerm: the specular lobe for the representative direction Ls times
+// spec_irr = I * falloff (N.L applied here), D scaled by spec_norm.
+vec3 diffuseTerm(Surface s, ShadingPoint sp, vec3 Ld, float diffuse_irr) {
   vec3 Hd = safeNormalize(sp.V + Ld);
   float NoLd = saturate(dot(s.N, Ld));
   float LoHd = saturate(dot(Ld, Hd));
-  vec3 diffuse = s.diffuse_color * (diffuseLobe(s.roughness, sp.NoV, NoLd, LoHd) * diffuse_irr);
-  // Specular lobe for the representative direction Ls. H is normalized explicitly: the identity
-  // N.H = (N.V + N.L) / sqrt(2 + 2 V.L) (UE4's BxDFContext) saves two dot products but loses
-  // precision where V and L are nearly opposite (grazing mirror views: 1 + V.L cancels), which
-  // at roughness 0.05 raised the sphere light's worst error against the reference from 9.7 to
-  // 14.8 (tests/reference/test_accuracy.cpp, AccuracyFindings.SphereErrorBounds).
+  return s.diffuse_color * (diffuseLobe(s.roughness, sp.NoV, NoLd, LoHd) * diffuse_irr);
+}
+vec3 specularTerm(Surface s, ShadingPoint sp, vec3 Ls, float spec_irr, float spec_norm) {
+  // H is normalized explicitly: the identity N.H = (N.V + N.L) / sqrt(2 + 2 V.L) (UE4's
+  // BxDFContext) saves two dot products but loses precision where V and L are nearly opposite
+  // (grazing mirror views: 1 + V.L cancels), which at roughness 0.05 raised the sphere light's
+  // worst error against the reference from 9.7 to 14.8 (AccuracyFindings.SphereErrorBounds).
   vec3 H = safeNormalize(sp.V + Ls);
   float NoL = saturate(dot(s.N, Ls));
   float NoH = saturate(dot(s.N, H));
+  // 1 - NoH^2 from |N x H|^2: exact near the mirror direction, where 1 - NoH^2 cancels (D_GGX).
+  vec3 NxH = cross(s.N, H);
   float VoH = saturate(dot(sp.V, H));
-  vec3 specular = specularLobe(s, sp.NoV, NoL, NoH, VoH, spec_norm) * (spec_irr * NoL);
-  // Term mask (HV_DIRECT_TERMS): a term left out is 0; the compiler drops its code.
+  return specularLobe(s, sp.NoV, NoL, NoH, dot(NxH, NxH), VoH, spec_norm) * (spec_irr * NoL);
+}
+// The light's radiance toward V from its two terms: the term mask (HV_DIRECT_TERMS: a term left
+// out is 0; the compiler drops its code), the cavity (Karis 2013 "Material Model": small-scale
+// shadowing multiplies all direct light, diffuse and specular alike, as a shadow factor would)
+// and the light's color times intensity.
+vec3 combineTerms(Surface s, vec3 radiant, vec3 diffuse, vec3 specular) {
 #if (HV_DIRECT_TERMS & 1) == 0
   diffuse = vec3(0.0f);
 #endif
 #if (HV_DIRECT_TERMS & 2) == 0
   specular = vec3(0.0f);
 #endif
-  // Cavity (Karis 2013 "Material Model": small-scale shadowing) multiplies all direct light,
-  // diffuse and specular alike, as a shadow factor would.
   return radiant * ((diffuse + specular) * s.cavity);
+}
+// Both terms from directions (the representative-point methods and the point light).
+vec3 shadeLight(Surface s, ShadingPoint sp, vec3 Ld, vec3 Ls, vec3 radiant, float diffuse_irr,
+                float spec_irr, float spec_norm) {
+  return combineTerms(s, radiant, diffuseTerm(s, sp, Ld, diffuse_irr),
+                      specularTerm(s, sp, Ls, spec_irr, spec_norm));
 }
 
 #if HV_HAS_POINT_LIGHTS
@@ -222,7 +288,9 @@ vec3 evaluatePointLight(GpuLight light, Surface s, vec3 P, vec3 V) {
 #if HV_HAS_SPHERE_LIGHTS
 // Sphere light: diffuse from the center (Karis point approximation) or the horizon-correct sphere
 // irradiance (Lagarde & de Rousiers 2014 section 4.7.2); specular from the representative point
-// closest to the reflection ray (Karis 2013 eq. 11) with the energy normalization of eq. 14.
+// closest to the reflection ray (Karis 2013 eq. 11) with the energy normalization of eq. 14, or
+// (HV_SPHERE_SPECULAR_LTC) the integral of the pixel's LTC over the sphere's cone times the
+// emitter radiance L_e = I / (pi r^2) (docs/lights.md), windowed (and with the +1) as the falloff.
 vec3 evaluateSphereLightAt(GpuLight light, Surface s, ShadingPoint sp) {
   float radius = light.position_radius.w;
   vec3 Lc = vec3(light.position_radius) - sp.P;
@@ -236,9 +304,40 @@ vec3 evaluateSphereLightAt(GpuLight light, Surface s, ShadingPoint sp) {
 #else
   float cos_factor = saturate(dot(s.N, L));
 #endif
+  vec3 diffuse = diffuseTerm(s, sp, L, falloff * cos_factor);
+#if HV_SPHERE_SPECULAR == HV_SPHERE_SPECULAR_LTC
+  // L_e per unit I: falloff d^2 / (pi r^2) (= window / (pi r^2), times d^2 / (d^2 + 1) with the
+  // +1; d^2 clamped as the falloff clamps it). A radius below 1e-4 d is shaded as 1e-4 d: the
+  // integral then equals the LTC's density times the solid angle to 1e-4, and r = 0 is the
+  // limit, not 0/0.
+  float d2c = max(d2, max(radius * radius, HV_MIN_LIGHT_DIST2));
+  float r_eff = max(radius, 1e-4f * sqrt(d2c));
+  float I = ltcSphereIntegral(sp.ltc, Lc, r_eff);
+  vec3 specular = sp.ltc_spec * (I * falloff * d2c / (PI * r_eff * r_eff));
+#if HV_LTC_POINT_CORRECTION
+  // The LTC matches the lobe's integral, not its value in every direction: a light much smaller
+  // than the lobe sees the LTC's value in one direction, off by the fit's local error (at grazing
+  // views of rough surfaces the LTC's value at the mirror direction is 0.5-0.9 of the lobe's).
+  // There the engine's own lobe at the representative direction (Karis eq. 11) over the LTC's
+  // value is the correction c, exact as r -> 0 and clamped to [0, 4]. It fades out as the light's
+  // solid angle grows past the lobe's (1 / the LTC's peak density): weight 1 / (1 + 4 t), t =
+  // solid angle x peak density (the weight measured best of exp(-t), exp(-3t), 1/(1+t), 1/(1+4t),
+  // 1-t, 1-t/3 on the sphere sweep: docs/lights.md).
+  vec3 Ls = safeNormalize(closestPointOnSphereToRay(Lc, radius, sp.R));
+  vec3 f_pt = specularTerm(s, sp, Ls, 1.0f, 1.0f);
+  float d_pt = ltcDensity(sp.ltc, Ls);
+  vec3 c = clamp(f_pt / max(sp.ltc_spec * d_pt, vec3(1e-30f)), vec3(0.0f), vec3(4.0f));
+  // Solid angle 2 pi (1 - cos sigma) = 2 pi sin^2 / (1 + cos), no cancellation for small spheres.
+  float sin2 = r_eff * r_eff / d2c;
+  float t = 2.0f * PI * sin2 / (1.0f + sqrt(max(1.0f - sin2, 0.0f))) * sp.ltc.peak;
+  specular = specular * mix(vec3(1.0f), c, 1.0f / (1.0f + 4.0f * t));
+#endif
+#else
   vec3 Ls = safeNormalize(closestPointOnSphereToRay(Lc, radius, sp.R));
   float norm = sphereNormalization(s.alpha, radius, d2);
-  return shadeLight(s, sp, L, Ls, vec3(light.color_inv_range), falloff * cos_factor, falloff, norm);
+  vec3 specular = specularTerm(s, sp, Ls, falloff, norm);
+#endif
+  return combineTerms(s, vec3(light.color_inv_range), diffuse, specular);
 }
 vec3 evaluateSphereLight(GpuLight light, Surface s, vec3 P, vec3 V) {
   return evaluateSphereLightAt(light, s, makeShadingPoint(s, P, V));
@@ -247,10 +346,12 @@ vec3 evaluateSphereLight(GpuLight light, Surface s, vec3 P, vec3 V) {
 
 #if HV_HAS_TUBE_LIGHTS
 // Tube light (capsule: segment of length len along axis, radius r). Diffuse: line-segment
-// irradiance with Karis's modifications (Karis 2013 eq. 16); specular: point on the segment
-// closest to the reflection ray (eq. 19; eq. 18 with HV_TUBE_SPECULAR = 1), then the sphere
-// representative point around it (eq. 11), normalized by alpha/alpha' (eq. 20) times the
-// sphere's (alpha/alpha'')^2 (eq. 14).
+// irradiance with Karis's modifications (Karis 2013 eq. 16), or (HV_TUBE_DIFFUSE_LTC) the
+// capsule's irradiance with the identity LTC; specular: point on the segment closest to the
+// reflection ray (eq. 19; eq. 18 with HV_TUBE_SPECULAR = 1), then the sphere representative
+// point around it (eq. 11), normalized by alpha/alpha' (eq. 20) times the sphere's
+// (alpha/alpha'')^2 (eq. 14), or (HV_TUBE_SPECULAR_LTC) the pixel's LTC integrated over the
+// capsule, times the emitter radiance L_e = I / (pi r^2 + pi r len / 2) (docs/lights.md).
 vec3 evaluateTubeLightAt(GpuLight light, Surface s, ShadingPoint sp) {
   float radius = light.position_radius.w;
   float len = light.axis_length.w;
@@ -265,7 +366,21 @@ vec3 evaluateTubeLightAt(GpuLight light, Surface s, ShadingPoint sp) {
   vec3 Lp = L0 + tp * Ld;
   float dp2 = dot(Lp, Lp);
   float window = falloffWindow(dp2, light.color_inv_range.w);
+  vec3 Ldiff = Lp * inversesqrt(max(dp2, 1e-30f));  // safeNormalize(Lp) reusing dp2
+#if HV_TUBE_DIFFUSE == HV_TUBE_DIFFUSE_LTC || HV_TUBE_SPECULAR == HV_TUBE_SPECULAR_LTC
+  // Emitter radiance per unit I (docs/lights.md): window / (pi r (r + len / 2)), times
+  // d^2 / (d^2 + 1) with the +1 (d: the closest segment point, clamped as the falloff clamps it).
+  // A radius below 1e-4 d is shaded as 1e-4 d (the line light's limit instead of 0/0).
+  float dp2c = max(dp2, max(radius * radius, HV_MIN_LIGHT_DIST2));
+  float r_eff = max(radius, 1e-4f * sqrt(dp2c));
+  float emit = window * (dp2c / (dp2c + float(HV_FALLOFF_PLUS_ONE))) /
+               (PI * r_eff * (r_eff + 0.5f * len));
+#endif
 
+#if HV_TUBE_DIFFUSE == HV_TUBE_DIFFUSE_LTC
+  // Irradiance per unit I: pi L_e times the capsule's integral of the clamped cosine.
+  float irradiance = emit * PI * capsuleCosineIntegral(s.N, L0, L1, r_eff);
+#else
   // Diffuse, Karis eq. 16: E = I (saturate(n.L0/|L0|) + saturate(n.L1/|L1|)) /
   // (|L0||L1| + L0.L1 + 2), the exact irradiance of a line of total intensity I (n.L clipped at
   // each end, the "+2" being the "+1" of eq. 9). |L0||L1| + L0.L1 -> 2 d^2 as len -> 0, so it
@@ -280,8 +395,11 @@ vec3 evaluateTubeLightAt(GpuLight light, Surface s, ShadingPoint sp) {
                       float(HV_FALLOFF_PLUS_ONE));
   float irradiance =
       (saturate(dot(s.N, L0) * inv_l0) + saturate(dot(s.N, L1) * inv_l1)) / den * window;
+#endif
+  vec3 diffuse = diffuseTerm(s, sp, Ldiff, irradiance);
 
-  // Specular: the point of the segment chosen for the reflection ray R.
+  // Specular: the point of the segment chosen for the reflection ray R (Karis eqs. 18, 19; for
+  // the LTC mode, the representative direction of its small-light correction).
   vec3 R = sp.R;
   float rl0 = dot(R, L0);
   float rld = dot(R, Ld);
@@ -290,23 +408,41 @@ vec3 evaluateTubeLightAt(GpuLight light, Surface s, ShadingPoint sp) {
   // Karis eq. 18: smallest angle to R. The denominator may have either sign; +-1e-30 (sign kept)
   // only guards 0/0 (len = 0 or R parallel to the segment: any t is then as good).
   float tden = l0ld * rld - ld2 * rl0;
-  float t = (rl0 * l0ld - rld * l0_2) / (tden + 1e-30f * (2.0f * step(0.0f, tden) - 1.0f));
+  float t = (rl0 * l0ld - rld * dot(L0, L0)) /
+            (tden + 1e-30f * (2.0f * step(0.0f, tden) - 1.0f));
 #else
   // Karis eq. 19: smallest distance to R; the denominator len^2 (1 - (R.axis)^2) >= 0, and is
   // 0 only when len = 0 or R is parallel to the segment, where the numerator is 0 as well.
   float t = (rl0 * rld - l0ld) / max(ld2 - rld * rld, 1e-30f);
 #endif
   vec3 Lt = L0 + saturate(t) * Ld;
-  float dt2 = dot(Lt, Lt);
   vec3 Ls = safeNormalize(closestPointOnSphereToRay(Lt, radius, R));
+#if HV_TUBE_SPECULAR == HV_TUBE_SPECULAR_LTC
+  float I = ltcCapsuleIntegral(sp.ltc, L0, L1, r_eff);
+  vec3 specular = sp.ltc_spec * (emit * I);
+#if HV_LTC_POINT_CORRECTION
+  // As the sphere's (evaluateSphereLightAt): the lobe over the LTC at the representative point,
+  // faded out as the capsule's solid angle (at most (pi r^2 + 2 r len) / d^2, d the closest
+  // segment point) grows past the lobe's. len = 0 gives the sphere's correction exactly.
+  vec3 f_pt = specularTerm(s, sp, Ls, 1.0f, 1.0f);
+  float d_pt = ltcDensity(sp.ltc, Ls);
+  vec3 c = clamp(f_pt / max(sp.ltc_spec * d_pt, vec3(1e-30f)), vec3(0.0f), vec3(4.0f));
+  float sin2 = r_eff * r_eff / dp2c;
+  float omega = 2.0f * PI * sin2 / (1.0f + sqrt(max(1.0f - sin2, 0.0f))) +
+                2.0f * r_eff * len / dp2c;
+  specular = specular * mix(vec3(1.0f), c, 1.0f / (1.0f + 4.0f * omega * sp.ltc.peak));
+#endif
+#else
+  float dt2 = dot(Lt, Lt);
   float norm = lineNormalization(s.alpha, len, dot(Lc, Lc)) * sphereNormalization(s.alpha, radius,
                                                                                    dt2);
   // Specular irradiance scale: the inverse-square falloff of the chosen segment point (the
   // sphere's falloff when len = 0), windowed like the diffuse.
   float spec_irr = window / (max(dt2, max(radius * radius, HV_MIN_LIGHT_DIST2)) +
                              float(HV_FALLOFF_PLUS_ONE));
-  vec3 Ldiff = Lp * inversesqrt(max(dp2, 1e-30f));  // safeNormalize(Lp) reusing dp2
-  return shadeLight(s, sp, Ldiff, Ls, vec3(light.color_inv_range), irradiance, spec_irr, norm);
+  vec3 specular = specularTerm(s, sp, Ls, spec_irr, norm);
+#endif
+  return combineTerms(s, vec3(light.color_inv_range), diffuse, specular);
 }
 vec3 evaluateTubeLight(GpuLight light, Surface s, vec3 P, vec3 V) {
   return evaluateTubeLightAt(light, s, makeShadingPoint(s, P, V));

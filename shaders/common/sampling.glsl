@@ -81,7 +81,9 @@ float pdfGGXVNDF(vec3 V_tangent, vec3 H_tangent, float alpha) {
   float a2 = alpha * alpha;
   float NoV = V_tangent.z;
   float G1_over_NoV = 2.0f / (NoV + sqrt(NoV * NoV * (1.0f - a2) + a2));
-  return G1_over_NoV * max(0.0f, dot(V_tangent, H_tangent)) * D_GGX(alpha, H_tangent.z);
+  // 1 - H.z^2 = H.x^2 + H.y^2: no cancellation at the lobe's peak (see D_GGX).
+  float sin2_NH = H_tangent.x * H_tangent.x + H_tangent.y * H_tangent.y;
+  return G1_over_NoV * max(0.0f, dot(V_tangent, H_tangent)) * D_GGX(alpha, H_tangent.z, sin2_NH);
 }
 
 // Cosine-weighted hemisphere sample in tangent space (Malley's method: a uniform disk point

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "halfvec/ibl/ibl.hpp"
 #include "halfvec/ibl/ibl_math.hpp"
@@ -233,7 +234,7 @@ SphereSweepGrid sphereSubgrid() {
 }
 
 bool aboveHorizon(const SphereSweepRow& r) {
-  return r.elevation_deg >= std::asin(std::min(r.radius, 1.0f)) * 180.0 / kPi;
+  return r.above();
 }
 
 const std::vector<SphereSweepRow>& sphereRows() {
@@ -253,14 +254,18 @@ std::string where(const SphereSweepRow& r) {
 // it straddles it (docs/accuracy.md: -46.6% at r/d 0.5, elevation 5; -100% at elevation 0).
 TEST(AccuracyFindings, SphereDiffuse) {
   for (const SphereSweepRow& r : sphereRows()) {
-    ASSERT_TRUE(r.diffuse[1].valid) << where(r);
+    ASSERT_TRUE(r.diffuse[kSphereDiffuseHorizon].valid) << where(r);
     // Equal within noise: the bias (sum over the views) within 4 standard errors of that sum.
-    EXPECT_LE(std::abs(r.diffuse[1].bias), 4.0 * r.diffuse[1].noise + 1e-4) << where(r);
+    EXPECT_LE(std::abs(r.diffuse[kSphereDiffuseHorizon].bias),
+              4.0 * r.diffuse[kSphereDiffuseHorizon].noise + 1e-4)
+        << where(r);
     if (aboveHorizon(r)) {
-      EXPECT_LE(std::abs(r.diffuse[0].bias), 4.0 * r.diffuse[0].noise + 1e-4) << where(r);
+      EXPECT_LE(std::abs(r.diffuse[kSphereDiffuseKaris].bias),
+                4.0 * r.diffuse[kSphereDiffuseKaris].noise + 1e-4)
+          << where(r);
     }
     if (r.radius == 0.5f && r.elevation_deg == 5.0f) {
-      EXPECT_LT(r.diffuse[0].bias, -0.35) << where(r);
+      EXPECT_LT(r.diffuse[kSphereDiffuseKaris].bias, -0.35) << where(r);
     }
   }
 }
@@ -271,14 +276,15 @@ TEST(AccuracyFindings, SphereDiffuse) {
 // r/d 0.01, elevation 15, 1% apart).
 TEST(AccuracyFindings, SphereNormalizationReducesSpecularError) {
   for (const SphereSweepRow& r : sphereRows()) {
-    if (!aboveHorizon(r) || !r.specular[0].valid) continue;
+    if (!aboveHorizon(r) || !r.specular[kSphereRpPlain].valid) continue;
     if (r.roughness >= 1.0f) {
       // alpha' = saturate(alpha + r/(3d)) = 1 = alpha: the normalization is exactly 1.
-      EXPECT_EQ(r.specular[1].rel_error, r.specular[0].rel_error) << where(r);
+      EXPECT_EQ(r.specular[kSphereRp].rel_error, r.specular[kSphereRpPlain].rel_error) << where(r);
     } else if (r.radius >= 0.25f) {
-      EXPECT_LT(r.specular[1].rel_error, r.specular[0].rel_error) << where(r);
+      EXPECT_LT(r.specular[kSphereRp].rel_error, r.specular[kSphereRpPlain].rel_error) << where(r);
     } else {
-      EXPECT_LE(r.specular[1].rel_error, r.specular[0].rel_error + 0.02) << where(r);
+      EXPECT_LE(r.specular[kSphereRp].rel_error, r.specular[kSphereRpPlain].rel_error + 0.02)
+          << where(r);
     }
   }
 }
@@ -290,14 +296,14 @@ TEST(AccuracyFindings, SphereNormalizationReducesSpecularError) {
 TEST(AccuracyFindings, SphereSpecularTooBrightForSmoothSurfaces) {
   for (const SphereSweepRow& r : sphereRows()) {
     if (r.roughness == 0.05f && r.radius == 0.5f && r.elevation_deg == 90.0f) {
-      EXPECT_GT(r.specular[1].peak, 1.8) << where(r);
-      EXPECT_LT(r.specular[1].peak, 2.6) << where(r);
+      EXPECT_GT(r.specular[kSphereRp].peak, 1.8) << where(r);
+      EXPECT_LT(r.specular[kSphereRp].peak, 2.6) << where(r);
     }
     if (r.roughness == 0.05f && r.radius == 0.5f && r.elevation_deg == 5.0f) {
-      EXPECT_GT(r.specular[1].peak, 15.0) << where(r);
+      EXPECT_GT(r.specular[kSphereRp].peak, 15.0) << where(r);
     }
     if (r.roughness == 1.0f && r.radius <= 0.25f && r.elevation_deg >= 45.0f) {
-      EXPECT_LT(std::abs(r.specular[1].bias), 0.03) << where(r);
+      EXPECT_LT(std::abs(r.specular[kSphereRp].bias), 0.03) << where(r);
     }
   }
 }
@@ -310,8 +316,8 @@ TEST(AccuracyFindings, SphereErrorBounds) {
   double spec_default = 0.0, spec_plain = 0.0;
   for (const SphereSweepRow& r : sphereRows()) {
     if (!aboveHorizon(r)) continue;
-    spec_default = std::max(spec_default, r.specular[1].rel_error);
-    spec_plain = std::max(spec_plain, r.specular[0].rel_error);
+    spec_default = std::max(spec_default, r.specular[kSphereRp].rel_error);
+    spec_plain = std::max(spec_plain, r.specular[kSphereRpPlain].rel_error);
   }
   EXPECT_LT(spec_default, 9.72 * 1.15);
   EXPECT_GT(spec_default, 9.72 / 1.15);  // the finding itself: not silently fixed either
@@ -336,21 +342,23 @@ TubeSweepGrid tubeSubgrid() {
 // and eq. 18 on smooth surfaces. Bounds: the largest rel. error of each variant on this subset,
 // measured when the document was generated: eq. 19 and eq. 18 without normalization 112.95,
 // with normalization 0.9487 (the engine is ~95% too dark: the bound is measured + 0.02, rel.
-// error cannot exceed 1 when too dark), diffuse (eq. 16) 0.158; bound = measured x 1.15.
+// error cannot exceed 1 when too dark), diffuse (eq. 16) 0.211 (each orientation on its own:
+// across the plane of incidence is the worse); bound = measured x 1.15.
 TEST(AccuracyFindings, TubeLights) {
   const auto rows = sweepTube(tubeSubgrid());
+  const int rp[2][2] = {{kTubeRpPlain, kTubeRp}, {kTubeRpEq18Plain, kTubeRpEq18}};
   double worst[2][2] = {{0, 0}, {0, 0}}, diffuse = 0.0;
   for (const TubeSweepRow& r : rows) {
     for (int ts = 0; ts < 2; ++ts) {
       for (int tn = 0; tn < 2; ++tn) {
-        worst[ts][tn] = std::max(worst[ts][tn], r.specular[ts][tn].rel_error);
+        worst[ts][tn] = std::max(worst[ts][tn], r.specular[rp[ts][tn]].rel_error);
       }
     }
-    diffuse = std::max(diffuse, r.diffuse.rel_error);
+    diffuse = std::max(diffuse, r.diffuse[kTubeDiffuseKaris].rel_error);
     if (r.roughness == 0.05f) {
-      EXPECT_LT(r.specular[0][1].bias, -0.35) << r.length << " " << r.radius;
+      EXPECT_LT(r.specular[kTubeRp].bias, -0.35) << r.length << " " << r.radius;
       for (int ts = 0; ts < 2; ++ts) {
-        EXPECT_LT(r.specular[ts][1].rel_error, r.specular[ts][0].rel_error)
+        EXPECT_LT(r.specular[rp[ts][1]].rel_error, r.specular[rp[ts][0]].rel_error)
             << r.length << " " << r.radius;
       }
     }
@@ -359,7 +367,7 @@ TEST(AccuracyFindings, TubeLights) {
     EXPECT_LT(worst[ts][0], 112.95 * 1.15) << ts;
     EXPECT_LT(worst[ts][1], 0.9487 + 0.02) << ts;
   }
-  EXPECT_LT(diffuse, 0.158 * 1.15);
+  EXPECT_LT(diffuse, 0.211 * 1.15);
 }
 
 // EnvBRDFApprox against the environment BRDF table (Karis 2013 eq. 8): document (128^2 table,

@@ -48,7 +48,9 @@ TEST(Presets, SetWhatTheyClaim) {
   EXPECT_FALSE(accurate.falloff_plus_one);
   EXPECT_EQ(accurate.sphere_diffuse, hv::SphereDiffuse::HorizonCorrect);
   EXPECT_TRUE(accurate.sphere_normalization);
-  EXPECT_EQ(accurate.tube_specular, hv::TubeSpecular::ClosestPointEq19);
+  EXPECT_EQ(accurate.sphere_specular, hv::SphereSpecular::Ltc);
+  EXPECT_EQ(accurate.tube_specular, hv::TubeSpecular::Ltc);
+  EXPECT_EQ(accurate.tube_diffuse, hv::TubeDiffuse::Ltc);
   EXPECT_TRUE(accurate.tube_normalization);
   EXPECT_EQ(accurate.env_brdf, hv::EnvBrdf::Table);
   EXPECT_EQ(accurate.irradiance, hv::Irradiance::Cubemap);

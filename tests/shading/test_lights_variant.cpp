@@ -14,6 +14,9 @@
 #undef HV_MATH_GLSL
 #undef HV_BRDF_GLSL
 #undef HV_LIGHTS_GLSL
+#undef HV_LTC_GLSL
+#undef HV_LTC_INTEGRALS_GLSL
+#undef HV_SAMPLING_GLSL
 #undef HV_BRDF_D
 #undef HV_BRDF_V
 #undef HV_BRDF_F

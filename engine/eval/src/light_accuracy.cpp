@@ -45,24 +45,25 @@ Light whiteLight(LightType type) {
   return l;
 }
 
-// Engine and reference values (red channel) of one light over the views, per term and variant.
+// Reference values (red channel) of one light over the views, per term, for one BRDF.
 struct ViewValues {
   std::vector<double> ref_d, ref_d_se, ref_s, ref_s_se;
 };
 
 ViewValues referenceAtViews(const Light& light, const std::vector<glm::vec3>& views,
-                            float roughness, int samples, uint64_t seed) {
-  ViewValues v;
+                            float roughness, int samples, uint64_t seed, DistributionTerm d,
+                            VisibilityTerm v) {
+  ViewValues r;
   const glm::vec3 P(0.0f), N(0.0f, 0.0f, 1.0f);
   for (size_t i = 0; i < views.size(); ++i) {
-    const LightIntegral r = integrateLight(light, P, N, views[i], glm::vec3(1.0f), glm::vec3(1.0f),
-                                           roughness, samples, seed + i);
-    v.ref_d.push_back(r.diffuse.x);
-    v.ref_d_se.push_back(r.diffuse_se.x);
-    v.ref_s.push_back(r.specular.x);
-    v.ref_s_se.push_back(r.specular_se.x);
+    const LightIntegral x = integrateLight(light, P, N, views[i], glm::vec3(1.0f), glm::vec3(1.0f),
+                                           roughness, samples, seed + i, d, v);
+    r.ref_d.push_back(x.diffuse.x);
+    r.ref_d_se.push_back(x.diffuse_se.x);
+    r.ref_s.push_back(x.specular.x);
+    r.ref_s_se.push_back(x.specular_se.x);
   }
-  return v;
+  return r;
 }
 
 std::vector<double> engineAtViews(const EngineLightOptions& o, LightTerm term, const Light& light,
@@ -78,14 +79,58 @@ std::vector<double> engineAtViews(const EngineLightOptions& o, LightTerm term, c
   return e;
 }
 
+// The references one configuration needs: one per distinct BRDF (D, V) of the methods.
+struct References {
+  std::vector<std::pair<std::pair<DistributionTerm, VisibilityTerm>, ViewValues>> by_brdf;
+  const ViewValues& at(const EngineLightOptions& o) const {
+    for (const auto& [k, v] : by_brdf) {
+      if (k.first == o.d && k.second == o.v) return v;
+    }
+    return by_brdf.front().second;
+  }
+};
+
+References referencesAtViews(const Light& light, const std::vector<glm::vec3>& views,
+                             float roughness, int samples, uint64_t seed,
+                             const std::vector<LightMethod>& methods) {
+  References r;
+  for (const LightMethod& m : methods) {
+    bool have = false;
+    for (const auto& e : r.by_brdf)
+      have = have || (e.first.first == m.o.d && e.first.second == m.o.v);
+    if (have) continue;
+    // The same seed for every BRDF: the references of two methods share their random numbers.
+    r.by_brdf.push_back(
+        {{m.o.d, m.o.v}, referenceAtViews(light, views, roughness, samples, seed, m.o.d, m.o.v)});
+  }
+  return r;
+}
+
+LightMethod method(std::string name, EngineLightOptions o) {
+  return {std::move(name), o};
+}
+
+EngineLightOptions ltcOptions(VisibilityTerm v, bool ratio, DistributionTerm d) {
+  EngineLightOptions o;
+  o.sphere_specular = SphereSpecular::Ltc;
+  o.tube_specular = TubeSpecular::Ltc;
+  o.v = v;
+  o.ltc_v_ratio = ratio;
+  o.d = d;
+  return o;
+}
+
 }  // namespace
 
 LightIntegral integrateLight(const Light& light, const glm::vec3& P, const glm::vec3& N,
                              const glm::vec3& V, const glm::vec3& diffuse_color,
-                             const glm::vec3& f0, float roughness, int samples, uint64_t seed) {
+                             const glm::vec3& f0, float roughness, int samples, uint64_t seed,
+                             DistributionTerm d, VisibilityTerm v) {
   using namespace reference_detail;
   const RenderSettings settings = physicalSettings();
-  const BrdfConfig brdf = BrdfConfig::fromSettings(settings);
+  BrdfConfig brdf = BrdfConfig::fromSettings(settings);
+  brdf.d = d;
+  brdf.v = v;
   glsl::Surface s = glsl::makeSurface(N, glm::vec3(1.0f), 0.0f, roughness, 1.0f);
   s.diffuse_color = diffuse_color;
   s.f0 = f0;
@@ -185,6 +230,76 @@ std::vector<glm::vec3> sweepViews(const glm::vec3& light_dir, float footprint) {
   return views;
 }
 
+const std::vector<LightMethod>& sphereDiffuseMethods() {
+  static const std::vector<LightMethod> m = [] {
+    EngineLightOptions horizon;
+    horizon.sphere_diffuse = SphereDiffuse::HorizonCorrect;
+    return std::vector<LightMethod>{method("karis_point (default)", {}),
+                                    method("horizon_correct", horizon)};
+  }();
+  return m;
+}
+
+const std::vector<LightMethod>& sphereSpecularMethods() {
+  static const std::vector<LightMethod> m = [] {
+    EngineLightOptions plain, rp_smith;
+    plain.sphere_normalization = false;
+    rp_smith.v = VisibilityTerm::SmithGGXCorrelated;
+    using VT = VisibilityTerm;
+    return std::vector<LightMethod>{
+        method("representative point + normalization (default)", {}),
+        method("representative point, no normalization", plain),
+        method("ltc", ltcOptions(VT::SmithGGXCorrelated, true, DistributionTerm::GGX)),
+        method("representative point + normalization, V smith_ggx_correlated", rp_smith),
+        method("ltc, V schlick_ggx (V ratio)",
+               ltcOptions(VT::SchlickGGX, true, DistributionTerm::GGX)),
+        method("ltc, V schlick_ggx (no V ratio)",
+               ltcOptions(VT::SchlickGGX, false, DistributionTerm::GGX)),
+        method("ltc, D beckmann", ltcOptions(VT::SchlickGGX, true, DistributionTerm::Beckmann)),
+    };
+  }();
+  return m;
+}
+
+const std::vector<LightMethod>& tubeDiffuseMethods() {
+  static const std::vector<LightMethod> m = [] {
+    EngineLightOptions ltc;
+    ltc.tube_diffuse = TubeDiffuse::Ltc;
+    return std::vector<LightMethod>{method("karis_eq16 (default)", {}), method("ltc", ltc)};
+  }();
+  return m;
+}
+
+const std::vector<LightMethod>& tubeSpecularMethods() {
+  static const std::vector<LightMethod> m = [] {
+    EngineLightOptions plain, eq18, eq18plain, rp_smith;
+    plain.tube_normalization = false;
+    eq18.tube_specular = TubeSpecular::SmallestAngleEq18;
+    eq18plain = eq18;
+    eq18plain.tube_normalization = false;
+    rp_smith.v = VisibilityTerm::SmithGGXCorrelated;
+    using VT = VisibilityTerm;
+    return std::vector<LightMethod>{
+        method("eq. 19 + normalization (default)", {}),
+        method("eq. 19, no normalization", plain),
+        method("eq. 18 + normalization", eq18),
+        method("eq. 18, no normalization", eq18plain),
+        method("ltc", ltcOptions(VT::SmithGGXCorrelated, true, DistributionTerm::GGX)),
+        method("eq. 19 + normalization, V smith_ggx_correlated", rp_smith),
+        method("ltc, V schlick_ggx (V ratio)",
+               ltcOptions(VT::SchlickGGX, true, DistributionTerm::GGX)),
+        method("ltc, V schlick_ggx (no V ratio)",
+               ltcOptions(VT::SchlickGGX, false, DistributionTerm::GGX)),
+        method("ltc, D beckmann", ltcOptions(VT::SchlickGGX, true, DistributionTerm::Beckmann)),
+    };
+  }();
+  return m;
+}
+
+bool SphereSweepRow::above() const {
+  return double(elevation_deg) >= std::asin(std::min(double(radius), 1.0)) * 180.0 / kPi;
+}
+
 std::vector<SphereSweepRow> sweepSphere(const SphereSweepGrid& g) {
   std::vector<SphereSweepRow> rows;
   for (float r : g.roughness)
@@ -196,6 +311,8 @@ std::vector<SphereSweepRow> sweepSphere(const SphereSweepGrid& g) {
         row.elevation_deg = el;
         rows.push_back(row);
       }
+  const auto& dm = sphereDiffuseMethods();
+  const auto& sm = sphereSpecularMethods();
   detail::parallelFor(int(rows.size()), g.threads, [&](int i) {
     SphereSweepRow& row = rows[size_t(i)];
     Light light = whiteLight(LightType::Sphere);
@@ -204,20 +321,19 @@ std::vector<SphereSweepRow> sweepSphere(const SphereSweepGrid& g) {
     light.radius = row.radius;
     const float alpha = lobeAlpha(row.roughness);
     const auto views = sweepViews(dir, 2.0f * alpha + std::asin(std::min(row.radius, 1.0f)));
-    const ViewValues ref =
-        referenceAtViews(light, views, row.roughness, g.samples, g.seed + uint64_t(i) * 1000003ull);
-    for (int sd = 0; sd < 2; ++sd) {
-      EngineLightOptions o;
-      o.sphere_diffuse = SphereDiffuse(sd);
-      row.diffuse[sd] = termError(engineAtViews(o, LightTerm::Diffuse, light, views, row.roughness),
-                                  ref.ref_d, ref.ref_d_se);
+    const References ref = referencesAtViews(light, views, row.roughness, g.samples,
+                                             g.seed + uint64_t(i) * 1000003ull, sm);
+    for (const LightMethod& m : dm) {
+      const ViewValues& r = ref.at(m.o);
+      row.diffuse.push_back(
+          termError(engineAtViews(m.o, LightTerm::Diffuse, light, views, row.roughness), r.ref_d,
+                    r.ref_d_se));
     }
-    for (int sn = 0; sn < 2; ++sn) {
-      EngineLightOptions o;
-      o.sphere_normalization = sn == 1;
-      row.specular[sn] =
-          termError(engineAtViews(o, LightTerm::Specular, light, views, row.roughness), ref.ref_s,
-                    ref.ref_s_se);
+    for (const LightMethod& m : sm) {
+      const ViewValues& r = ref.at(m.o);
+      row.specular.push_back(
+          termError(engineAtViews(m.o, LightTerm::Specular, light, views, row.roughness), r.ref_s,
+                    r.ref_s_se));
     }
   });
   return rows;
@@ -227,54 +343,43 @@ std::vector<TubeSweepRow> sweepTube(const TubeSweepGrid& g) {
   std::vector<TubeSweepRow> rows;
   for (float r : g.roughness)
     for (float len : g.length)
-      for (float rad : g.radius) {
-        TubeSweepRow row;
-        row.roughness = r;
-        row.length = len;
-        row.radius = rad;
-        rows.push_back(row);
-      }
+      for (float rad : g.radius)
+        for (bool along : {false, true}) {
+          TubeSweepRow row;
+          row.roughness = r;
+          row.length = len;
+          row.radius = rad;
+          row.along = along;
+          rows.push_back(row);
+        }
+  const auto& dm = tubeDiffuseMethods();
+  const auto& sm = tubeSpecularMethods();
   detail::parallelFor(int(rows.size()), g.threads, [&](int i) {
     TubeSweepRow& row = rows[size_t(i)];
     const glm::vec3 dir = dirFromElevation(float(g.elevation_deg * kPi / 180.0), 0.0f);
     const float alpha = lobeAlpha(row.roughness);
-    // Two orientations of the horizontal axis: across (y) and along (x) the plane of incidence.
-    const glm::vec3 axes[2] = {glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(1.0f, 0.0f, 0.0f)};
-    std::vector<double> ref_d, ref_d_se, ref_s, ref_s_se;
-    std::vector<double> eng_d, eng_s[2][2];
-    for (int a = 0; a < 2; ++a) {
-      Light light = whiteLight(LightType::Tube);
-      light.position = dir;
-      light.radius = row.radius;
-      light.length = row.length;
-      light.axis = axes[a];
-      const float half_extent = std::atan(0.5f * row.length) + std::asin(row.radius);
-      const auto views = sweepViews(dir, 2.0f * alpha + half_extent);
-      const ViewValues ref =
-          referenceAtViews(light, views, row.roughness, g.samples,
-                           g.seed + uint64_t(i) * 1000003ull + uint64_t(a) * 101);
-      auto append = [](std::vector<double>& to, const std::vector<double>& from) {
-        to.insert(to.end(), from.begin(), from.end());
-      };
-      // The first view of the first orientation is the error's "peak" view.
-      append(ref_d, ref.ref_d);
-      append(ref_d_se, ref.ref_d_se);
-      append(ref_s, ref.ref_s);
-      append(ref_s_se, ref.ref_s_se);
-      append(eng_d, engineAtViews({}, LightTerm::Diffuse, light, views, row.roughness));
-      for (int ts = 0; ts < 2; ++ts) {
-        for (int tn = 0; tn < 2; ++tn) {
-          EngineLightOptions o;
-          o.tube_specular = TubeSpecular(ts);
-          o.tube_normalization = tn == 1;
-          append(eng_s[ts][tn], engineAtViews(o, LightTerm::Specular, light, views, row.roughness));
-        }
-      }
+    Light light = whiteLight(LightType::Tube);
+    light.position = dir;
+    light.radius = row.radius;
+    light.length = row.length;
+    // Horizontal axis: along (x) or across (y) the plane of incidence.
+    light.axis = row.along ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+    const float half_extent = std::atan(0.5f * row.length) + std::asin(row.radius);
+    const auto views = sweepViews(dir, 2.0f * alpha + half_extent);
+    const References ref = referencesAtViews(light, views, row.roughness, g.samples,
+                                             g.seed + uint64_t(i) * 1000003ull, sm);
+    for (const LightMethod& m : dm) {
+      const ViewValues& r = ref.at(m.o);
+      row.diffuse.push_back(
+          termError(engineAtViews(m.o, LightTerm::Diffuse, light, views, row.roughness), r.ref_d,
+                    r.ref_d_se));
     }
-    row.diffuse = termError(eng_d, ref_d, ref_d_se);
-    for (int ts = 0; ts < 2; ++ts)
-      for (int tn = 0; tn < 2; ++tn)
-        row.specular[ts][tn] = termError(eng_s[ts][tn], ref_s, ref_s_se);
+    for (const LightMethod& m : sm) {
+      const ViewValues& r = ref.at(m.o);
+      row.specular.push_back(
+          termError(engineAtViews(m.o, LightTerm::Specular, light, views, row.roughness), r.ref_s,
+                    r.ref_s_se));
+    }
   });
   return rows;
 }

@@ -107,6 +107,14 @@ std::vector<Option> options(bool small) {
       [](RenderSettings& s) { s.tube_specular = TubeSpecular::SmallestAngleEq18; });
   add("tube_normalization=false", [](RenderSettings& s) { s.tube_normalization = false; });
   add("culling=brute_force", [](RenderSettings& s) { s.culling = Culling::BruteForce; });
+  add("sphere_specular=ltc", [](RenderSettings& s) { s.sphere_specular = SphereSpecular::Ltc; });
+  add("tube_specular=ltc", [](RenderSettings& s) { s.tube_specular = TubeSpecular::Ltc; });
+  add("tube_diffuse=ltc", [](RenderSettings& s) { s.tube_diffuse = TubeDiffuse::Ltc; });
+  add("ltc (all three)", [](RenderSettings& s) {
+    s.sphere_specular = SphereSpecular::Ltc;
+    s.tube_specular = TubeSpecular::Ltc;
+    s.tube_diffuse = TubeDiffuse::Ltc;
+  });
   if (small) {
     // CI: the options whose code paths differ most (physical falloff divides by d^2 alone).
     std::vector<Option> keep;
@@ -115,7 +123,7 @@ std::vector<Option> options(bool small) {
           x.name == "v=smith_ggx_correlated" || x.name == "f=exact" ||
           x.name == "sphere_diffuse=horizon_correct" ||
           x.name == "tube_specular=smallest_angle_eq18" || x.name == "d=beckmann" ||
-          x.name == "diffuse=burley") {
+          x.name == "diffuse=burley" || x.name == "ltc (all three)") {
         keep.push_back(x);
       }
     }

@@ -188,14 +188,17 @@ TradePlan tradePlan(const Scene& scene, int max_brute_force_lights) {
   if (sphere) {
     enumRows(c, "sphere_diffuse", b, pf, &RenderSettings::sphere_diffuse, "lights");
     boolRow(c, "sphere_normalization", b, pf, &RenderSettings::sphere_normalization, "lights");
+    enumRows(c, "sphere_specular", b, pf, &RenderSettings::sphere_specular, "lights");
   } else {
-    plan.skipped.push_back("sphere_diffuse, sphere_normalization: no sphere lights");
+    plan.skipped.push_back(
+        "sphere_diffuse, sphere_normalization, sphere_specular: no sphere lights");
   }
   if (tube) {
     enumRows(c, "tube_specular", b, pf, &RenderSettings::tube_specular, "lights");
     boolRow(c, "tube_normalization", b, pf, &RenderSettings::tube_normalization, "lights");
+    enumRows(c, "tube_diffuse", b, pf, &RenderSettings::tube_diffuse, "lights");
   } else {
-    plan.skipped.push_back("tube_specular, tube_normalization: no tube lights");
+    plan.skipped.push_back("tube_specular, tube_normalization, tube_diffuse: no tube lights");
   }
   if (!lights) {
     plan.skipped.push_back("culling: no lights");
@@ -235,8 +238,10 @@ TradePlan tradePlan(const Scene& scene, int max_brute_force_lights) {
   TradeConfig exact{"exact", "exact", truthSettings(b), pf, {}};
   exact.settings.sphere_diffuse = SphereDiffuse::HorizonCorrect;
   exact.settings.sphere_normalization = true;
-  exact.settings.tube_specular = TubeSpecular::SmallestAngleEq18;
+  exact.settings.sphere_specular = SphereSpecular::Ltc;  // docs/accuracy.md: the closest methods
+  exact.settings.tube_specular = TubeSpecular::Ltc;
   exact.settings.tube_normalization = true;
+  exact.settings.tube_diffuse = TubeDiffuse::Ltc;
   exact.settings.env_brdf = EnvBrdf::Table;
   exact.settings.irradiance = Irradiance::Cubemap;
   c.push_back(exact);
@@ -681,7 +686,7 @@ from the tables below:
 |---|---|---|
 | `fast` | Karis 2013 defaults, `env_brdf: analytic` | the analytic fit removes a texture fetch; its relative RMSE is up to 8% above the table's (default), within 1% elsewhere (`env_brdf=analytic` rows) |
 | `balanced` | Karis 2013 defaults, `irradiance: cubemap` | the irradiance cube map's error is equal to or lower than SH9's on every sample scene (`irradiance=cubemap` rows), for one more fetch |
-| `accurate` | `balanced` + `falloff_plus_one: false`, `sphere_diffuse: horizon_correct` | the inverse-square law is the emitter's true falloff: the largest single gain where lights are close to surfaces (`falloff_plus_one=false`, many_lights); the horizon-correct sphere diffuse is exact for a Lambertian lobe (docs/lights.md), equal or better in every table, at no measurable cost. The eq. 18 tube point is not taken: it measured slightly worse than eq. 19 (`tube_specular=smallest_angle_eq18` rows) |
+| `accurate` | `balanced` + `falloff_plus_one: false`, `sphere_diffuse: horizon_correct`, `sphere_specular`, `tube_specular`, `tube_diffuse: ltc` | the inverse-square law is the emitter's true falloff: the largest single gain where lights are close to surfaces (`falloff_plus_one=false`, many_lights); the horizon-correct sphere diffuse is exact for a Lambertian lobe (docs/lights.md), equal or better in every table, at no measurable cost. The `ltc` sphere and tube methods: on the accuracy sweeps (docs/accuracy.md) their median / worst error is 2.2% / 32% for sphere specular (representative point: 32% / 1676%), 3.5% / 16% for tube specular (41% / 96%), 1.9% / 4.2% for tube diffuse (8.6% / 20%) (`sphere_specular=ltc`, `tube_specular=ltc`, `tube_diffuse=ltc` rows for the scenes). The eq. 18 tube point is not taken: it measured slightly worse than eq. 19 (`tube_specular=smallest_angle_eq18` rows) |
 
 All presets keep `sphere_normalization` and `tube_normalization` on: turning sphere
 normalization off gives by far the largest error on every scene with sphere lights except

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "ltc_textures.hpp"
 #include "passes.hpp"
 #include "pipeline_state.hpp"
 
@@ -52,9 +53,14 @@ void LightPass::run(const PassContext& ctx, const FrameBlock& frame, const Input
     glBindTextureUnit(HV_UNIT_LIGHT_TEXELS, light_texels_.id());
     glBindTextureUnit(HV_UNIT_TILE_INDEX_TEXELS, tile_index_texels_.id());
   }
+  if (in.ltc) {
+    if (!ltc_) ltc_ = std::make_unique<LtcTextures>();
+    ltc_->bind();
+  }
   glDispatchCompute(frame.viewport.z, (frame.viewport.w + kLightGroupTiles - 1) / kLightGroupTiles,
                     1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+  if (in.ltc) LtcTextures::unbind();
   unbindGBuffer();
   if (use_textures) {
     glBindTextureUnit(HV_UNIT_LIGHT_TEXELS, 0);

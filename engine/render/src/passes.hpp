@@ -6,6 +6,7 @@
 // shaders include too.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,6 +20,7 @@
 #include "halfvec/render/renderer.hpp"
 #include "halfvec/render/variant_key.hpp"
 #include "halfvec/shaders/common/bindings.glsl"
+#include "ltc_textures.hpp"
 
 namespace hv::render {
 
@@ -114,12 +116,14 @@ class LightPass {
     gl::DefineSet defines;  // the scene's lighting defines (Renderer::lightingDefines)
     LightPassProbe probe = LightPassProbe::Shade;
     size_t texel_limit = 0;  // DebugOptions::light_texel_limit
+    bool ltc = false;        // the program reads the LTC table (Renderer::lightPassNeedsLtc)
   };
   // Adds the direct light of every lit pixel into `hdr` (RGBA16F image).
   void run(const PassContext& ctx, const FrameBlock& frame, const Input& in, GLuint hdr);
 
  private:
   gl::Texture light_texels_, tile_index_texels_;  // buffer-texture views of the two buffers
+  std::unique_ptr<LtcTextures> ltc_;  // the LTC table, created when a program first needs it
 };
 
 // ---- Ambient pass and the environment (ambient_pass.cpp) ---------------------------------------

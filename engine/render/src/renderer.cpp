@@ -228,7 +228,8 @@ FrameStats Renderer::render(int width, int height, DebugView view,
       scene_->settings.culling == Culling::Tiled ? p.culling.view() : TileListView{},
       lightingDefines(),
       debug_.light_probe,
-      debug_.light_texel_limit};
+      debug_.light_texel_limit,
+      lightPassNeedsLtc()};
   p.light.run(ctx, frame.block, light, t.hdr.id());
   runAmbientPass(ctx, {gbuffer, *p.environment, ambient_desc_}, t.hdr.id(), width, height);
   emitterPass(view);
@@ -379,6 +380,14 @@ GBufferReadback Renderer::readGBuffer() const {
     g.normal[i] = glsl::octDecode(glsl::vec2(nrm[2 * i], nrm[2 * i + 1]));
   }
   return g;
+}
+
+// The light program reads the LTC table (lights.glsl HV_LTC_TABLE) when a light type it compiles
+// shades its specular with it.
+bool Renderer::lightPassNeedsLtc() const {
+  const RenderSettings& s = key_.settings;
+  return (key_.sphere_lights && s.sphere_specular == SphereSpecular::Ltc) ||
+         (key_.tube_lights && s.tube_specular == TubeSpecular::Ltc);
 }
 
 }  // namespace hv::render

@@ -81,11 +81,16 @@ RenderSettings canonicalSettings(const RenderSettings& s, const VariantKey& key)
   if (!key.sphere_lights) {
     c.sphere_diffuse = d.sphere_diffuse;
     c.sphere_normalization = d.sphere_normalization;
+    c.sphere_specular = d.sphere_specular;
   }
   if (!key.tube_lights) {
     c.tube_specular = d.tube_specular;
     c.tube_normalization = d.tube_normalization;
+    c.tube_diffuse = d.tube_diffuse;
   }
+  // The LTC modes replace the representative point and its normalization: they change no code.
+  if (c.sphere_specular == SphereSpecular::Ltc) c.sphere_normalization = d.sphere_normalization;
+  if (c.tube_specular == TubeSpecular::Ltc) c.tube_normalization = d.tube_normalization;
   if (!key.ambientIbl()) {
     c.env_brdf = d.env_brdf;
     c.energy_compensation = d.energy_compensation;
@@ -165,12 +170,21 @@ std::vector<std::string> validateKey(const VariantKey& k) {
     bad.push_back("roughness remap with a visibility term other than Schlick-GGX");
   }
   if (!k.sphere_lights &&
-      (s.sphere_diffuse != d.sphere_diffuse || s.sphere_normalization != d.sphere_normalization)) {
+      (s.sphere_diffuse != d.sphere_diffuse || s.sphere_normalization != d.sphere_normalization ||
+       s.sphere_specular != d.sphere_specular)) {
     bad.push_back("sphere-light options without sphere lights");
   }
   if (!k.tube_lights &&
-      (s.tube_specular != d.tube_specular || s.tube_normalization != d.tube_normalization)) {
+      (s.tube_specular != d.tube_specular || s.tube_normalization != d.tube_normalization ||
+       s.tube_diffuse != d.tube_diffuse)) {
     bad.push_back("tube-light options without tube lights");
+  }
+  if (s.sphere_specular == SphereSpecular::Ltc &&
+      s.sphere_normalization != d.sphere_normalization) {
+    bad.push_back("sphere normalization with the LTC sphere specular");
+  }
+  if (s.tube_specular == TubeSpecular::Ltc && s.tube_normalization != d.tube_normalization) {
+    bad.push_back("tube normalization with the LTC tube specular");
   }
   if (!k.hasLights() && (s.d != d.d || s.v != d.v || s.f != d.f || s.diffuse != d.diffuse ||
                          s.falloff_plus_one != d.falloff_plus_one || s.culling != d.culling)) {
@@ -237,6 +251,26 @@ std::string settingWhy(const std::string& path, std::string_view value, bool res
   return "settings." + path + " = " + std::string(value);
 }
 
+// What an LTC mode shades when the scene's BRDF terms differ from the lobe the table was fitted
+// to (GGX x height-correlated Smith x Schlick's F average; docs/lights.md, "Other BRDF choices").
+std::string ltcLobeNote(const RenderSettings& s, bool ltc) {
+  if (!ltc) return "";
+  std::string note;
+  if (s.d != DistributionTerm::GGX) {
+    note += "; the LTC lobe is GGX whatever brdf.d (" + std::string(toString(s.d)) + ")";
+  }
+  if (s.v != VisibilityTerm::SmithGGXCorrelated) {
+    note +=
+        "; the LTC lobe is fitted with smith_ggx_correlated: its magnitude is scaled by brdf.v (" +
+        std::string(toString(s.v)) + ") over it at the mirror direction";
+  }
+  if (s.f != FresnelTerm::SchlickPow5 && s.f != FresnelTerm::SchlickF90Occlusion) {
+    note += "; the LTC takes Schlick's Fresnel average whatever brdf.f (" +
+            std::string(toString(s.f)) + ")";
+  }
+  return note;
+}
+
 }  // namespace
 
 std::vector<KeyDefine> gbufferDefines(const VariantKey& k, size_t variant, const Scene& scene) {
@@ -290,12 +324,24 @@ std::vector<KeyDefine> lightDefines(const VariantKey& k, const Scene& scene) {
                                        in.sphere_diffuse != s.sphere_diffuse, "no sphere lights")},
       {"HV_SPHERE_NORMALIZATION",
        settingWhy("sphere_normalization", s.sphere_normalization ? "true" : "false",
-                  in.sphere_normalization != s.sphere_normalization, "no sphere lights")},
-      {"HV_TUBE_SPECULAR", settingWhy("tube_specular", toString(s.tube_specular),
-                                      in.tube_specular != s.tube_specular, "no tube lights")},
+                  in.sphere_normalization != s.sphere_normalization,
+                  in.sphere_specular == SphereSpecular::Ltc ? "the LTC sphere specular has none"
+                                                            : "no sphere lights")},
+      {"HV_SPHERE_SPECULAR",
+       settingWhy("sphere_specular", toString(s.sphere_specular),
+                  in.sphere_specular != s.sphere_specular, "no sphere lights") +
+           ltcLobeNote(s, k.sphere_lights && s.sphere_specular == SphereSpecular::Ltc)},
+      {"HV_TUBE_SPECULAR",
+       settingWhy("tube_specular", toString(s.tube_specular), in.tube_specular != s.tube_specular,
+                  "no tube lights") +
+           ltcLobeNote(s, k.tube_lights && s.tube_specular == TubeSpecular::Ltc)},
       {"HV_TUBE_NORMALIZATION",
        settingWhy("tube_normalization", s.tube_normalization ? "true" : "false",
-                  in.tube_normalization != s.tube_normalization, "no tube lights")},
+                  in.tube_normalization != s.tube_normalization,
+                  in.tube_specular == TubeSpecular::Ltc ? "the LTC tube specular has none"
+                                                        : "no tube lights")},
+      {"HV_TUBE_DIFFUSE", settingWhy("tube_diffuse", toString(s.tube_diffuse),
+                                     in.tube_diffuse != s.tube_diffuse, "no tube lights")},
       {"HV_DIRECT_TERMS", s.direct_terms == 3 ? "diffuse and specular (all terms)"
                                               : "term mask " + std::to_string(int(s.direct_terms)) +
                                                     " (render --aov, per-term debug view)"},

@@ -470,10 +470,27 @@ Environment parseEnvironment(const Ctx& ctx, const json& j,
 
 RenderSettings parseSettings(const Ctx& ctx, const json& j) {
   Obj o(ctx, j, "/settings",
-        {"preset", "width", "height", "exposure", "tone_map", "gamma", "dither", "brdf",
-         "falloff_plus_one", "sphere_diffuse", "sphere_normalization", "tube_specular",
-         "tube_normalization", "culling", "env_brdf", "energy_compensation", "irradiance",
-         "specular_occlusion", "uber"});
+        {"preset",
+         "width",
+         "height",
+         "exposure",
+         "tone_map",
+         "gamma",
+         "dither",
+         "brdf",
+         "falloff_plus_one",
+         "sphere_diffuse",
+         "sphere_normalization",
+         "sphere_specular",
+         "tube_specular",
+         "tube_normalization",
+         "tube_diffuse",
+         "culling",
+         "env_brdf",
+         "energy_compensation",
+         "irradiance",
+         "specular_occlusion",
+         "uber"});
   RenderSettings s;
   if (o.has("preset")) {  // first, so that the explicit settings below override it
     const std::string name = o.string("preset", "");
@@ -499,8 +516,10 @@ RenderSettings parseSettings(const Ctx& ctx, const json& j) {
   s.falloff_plus_one = o.boolean("falloff_plus_one", s.falloff_plus_one);
   s.sphere_diffuse = o.enumeration("sphere_diffuse", s.sphere_diffuse);
   s.sphere_normalization = o.boolean("sphere_normalization", s.sphere_normalization);
+  s.sphere_specular = o.enumeration("sphere_specular", s.sphere_specular);
   s.tube_specular = o.enumeration("tube_specular", s.tube_specular);
   s.tube_normalization = o.boolean("tube_normalization", s.tube_normalization);
+  s.tube_diffuse = o.enumeration("tube_diffuse", s.tube_diffuse);
   s.culling = o.enumeration("culling", s.culling);
   s.env_brdf = o.enumeration("env_brdf", s.env_brdf);
   s.energy_compensation = o.boolean("energy_compensation", s.energy_compensation);

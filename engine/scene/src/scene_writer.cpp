@@ -448,8 +448,10 @@ void settingsEdits(const RenderSettings& a, const RenderSettings& b, Collector& 
   HV_SETTING("falloff_plus_one", falloff_plus_one);
   HV_ENUM_SETTING("sphere_diffuse", sphere_diffuse);
   HV_SETTING("sphere_normalization", sphere_normalization);
+  HV_ENUM_SETTING("sphere_specular", sphere_specular);
   HV_ENUM_SETTING("tube_specular", tube_specular);
   HV_SETTING("tube_normalization", tube_normalization);
+  HV_ENUM_SETTING("tube_diffuse", tube_diffuse);
   HV_ENUM_SETTING("culling", culling);
   HV_ENUM_SETTING("env_brdf", env_brdf);
   HV_SETTING("energy_compensation", energy_compensation);

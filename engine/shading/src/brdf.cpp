@@ -14,16 +14,20 @@ BrdfConfig BrdfConfig::fromSettings(const RenderSettings& s) {
   return c;
 }
 
-float evalD(const BrdfConfig& c, float alpha, float NoH) {
+float evalD(const BrdfConfig& c, float alpha, float NoH, float sin2_NH) {
   switch (c.d) {
     case DistributionTerm::GGX:
-      return g::D_GGX(alpha, NoH);
+      return g::D_GGX(alpha, NoH, sin2_NH);
     case DistributionTerm::Beckmann:
-      return g::D_Beckmann(alpha, NoH);
+      return g::D_Beckmann(alpha, NoH, sin2_NH);
     case DistributionTerm::BlinnPhong:
-      return g::D_BlinnPhong(alpha, NoH);
+      return g::D_BlinnPhong(alpha, NoH, sin2_NH);
   }
   return 0.0f;
+}
+
+float evalD(const BrdfConfig& c, float alpha, float NoH) {
+  return evalD(c, alpha, NoH, (1.0f - NoH) * (1.0f + NoH));
 }
 
 float evalVForAlpha(const BrdfConfig& c, float alpha, float NoV, float NoL, float NoH, float VoH) {
@@ -83,7 +87,7 @@ std::vector<std::pair<std::string, std::string>> brdfDefines(const RenderSetting
   auto flag = [](bool b) { return std::string(b ? "1" : "0"); };
   // The define values are the enum values: brdf.glsl's HV_D_* / HV_V_* / HV_F_* / HV_FD_* follow
   // the enum order of scene.hpp (checked by tests/shading/test_brdf.cpp), likewise
-  // HV_SPHERE_DIFFUSE and HV_TUBE_SPECULAR in lights.glsl.
+  // HV_SPHERE_DIFFUSE, HV_SPHERE_SPECULAR, HV_TUBE_SPECULAR and HV_TUBE_DIFFUSE in lights.glsl.
   return {
       {"HV_BRDF_D", num(s.d)},
       {"HV_BRDF_V", num(s.v)},
@@ -93,8 +97,10 @@ std::vector<std::pair<std::string, std::string>> brdfDefines(const RenderSetting
       {"HV_FALLOFF_PLUS_ONE", flag(s.falloff_plus_one)},
       {"HV_SPHERE_DIFFUSE", num(s.sphere_diffuse)},
       {"HV_SPHERE_NORMALIZATION", flag(s.sphere_normalization)},
+      {"HV_SPHERE_SPECULAR", num(s.sphere_specular)},
       {"HV_TUBE_SPECULAR", num(s.tube_specular)},
       {"HV_TUBE_NORMALIZATION", flag(s.tube_normalization)},
+      {"HV_TUBE_DIFFUSE", num(s.tube_diffuse)},
       {"HV_DIRECT_TERMS", std::to_string(int(s.direct_terms))},
   };
 }

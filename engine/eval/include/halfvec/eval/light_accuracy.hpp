@@ -2,11 +2,12 @@
 // engine's own formula (shaders/common/lights.glsl compiled as C++ with the option under test,
 // one term at a time) against the exact integral over the emitter of docs/lights.md (Monte Carlo:
 // the reference renderer's emitter sampling combined with GGX visible-normal sampling by multiple
-// importance sampling). Both with the physical falloff (falloff_plus_one = false) and the default
-// BRDF terms. Used by `halfvec accuracy` (docs/accuracy.md) and tests/reference.
+// importance sampling). Both with the physical falloff (falloff_plus_one = false) and the BRDF
+// terms of the method measured. Used by `halfvec accuracy` (docs/accuracy.md) and tests/eval.
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -17,20 +18,29 @@ namespace hv::eval {
 
 enum class LightTerm { Diffuse, Specular };
 
-// The light options of RenderSettings that change the engine's sphere/tube formulas.
+// The light options of RenderSettings that change the engine's sphere/tube formulas, and the
+// BRDF terms the engine and the reference both use (the LTC modes are fitted to GGX D and
+// height-correlated Smith V; docs/lights.md, "Other BRDF choices").
 struct EngineLightOptions {
   SphereDiffuse sphere_diffuse = SphereDiffuse::KarisPoint;
   bool sphere_normalization = true;
+  SphereSpecular sphere_specular = SphereSpecular::RepresentativePoint;
   TubeSpecular tube_specular = TubeSpecular::ClosestPointEq19;
   bool tube_normalization = true;
+  TubeDiffuse tube_diffuse = TubeDiffuse::KarisEq16;
+  DistributionTerm d = DistributionTerm::GGX;
+  VisibilityTerm v = VisibilityTerm::SchlickGGX;
+  bool ltc_v_ratio = true;  // lights.glsl HV_LTC_V_RATIO
 };
 
 // The engine's outgoing radiance toward V (unit, from P) from `light` for one term only
 // (HV_DIRECT_TERMS = 1 or 2), with HV_FALLOFF_PLUS_ONE = 0 and cavity 1: glsl::evaluateLight
-// compiled with the options of `o` (engine_lights.cpp).
+// compiled with the options of `o` (engine_lights.cpp). Throws std::logic_error for a combination
+// of options that engine_lights.cpp does not compile (compiledLightVariants lists them).
 glm::vec3 engineLightTerm(const EngineLightOptions& o, LightTerm term, const Light& light,
                           const glm::vec3& P, const glm::vec3& N, const glm::vec3& V,
                           const glm::vec3& base_color, float metallic, float roughness);
+std::vector<EngineLightOptions> compiledLightVariants(LightTerm term);
 
 // Monte Carlo value of the exact direct light of a sphere or tube light (the emitter of
 // docs/lights.md with the physical falloff) at P, split into diffuse and specular, each with its
@@ -42,10 +52,14 @@ struct LightIntegral {
   glm::dvec3 diffuse_se{0.0}, specular_se{0.0};
 };
 // The surface is given by its diffuse color and f0 directly (the sweep integrates a white
-// diffuse and a white specular lobe, f0 = 1, at once); roughness as makeSurface clamps it.
+// diffuse and a white specular lobe, f0 = 1, at once); roughness as makeSurface clamps it. The
+// BRDF's D and V terms are `d` and `v` (the engine's defaults otherwise: Schlick-GGX V with the
+// Disney remap, as analytic lights use it).
 LightIntegral integrateLight(const Light& light, const glm::vec3& P, const glm::vec3& N,
                              const glm::vec3& V, const glm::vec3& diffuse_color,
-                             const glm::vec3& f0, float roughness, int samples, uint64_t seed);
+                             const glm::vec3& f0, float roughness, int samples, uint64_t seed,
+                             DistributionTerm d = DistributionTerm::GGX,
+                             VisibilityTerm v = VisibilityTerm::SchlickGGX);
 
 // Error of one term of one engine variant over a set of views of one configuration. Values are
 // the red channel (lights and surfaces are white). With E_v the engine, R_v the reference:
@@ -67,10 +81,46 @@ TermError termError(const std::vector<double>& engine, const std::vector<double>
 // (elevations 30 and 60 degrees, 4 azimuths); views within 1 degree of the horizon are dropped.
 std::vector<glm::vec3> sweepViews(const glm::vec3& light_dir, float footprint);
 
+// One way of shading one term, as the sweeps compare them; each is measured against the
+// reference of its own BRDF terms (o.d, o.v).
+struct LightMethod {
+  std::string name;
+  EngineLightOptions o;
+};
+// The sweeps' methods, in this order (the rows' vectors follow it).
+enum SphereDiffuseMethod { kSphereDiffuseKaris, kSphereDiffuseHorizon, kSphereDiffuseMethods };
+enum SphereSpecularMethod {
+  kSphereRp,             // representative point + (alpha/alpha')^2 (the default), Schlick-GGX V
+  kSphereRpPlain,        // representative point without the normalization
+  kSphereLtc,            // LTC with the lobe it is fitted to (height-correlated Smith V)
+  kSphereRpSmith,        // representative point + normalization with that same lobe
+  kSphereLtcSchlick,     // LTC with the default V (Schlick-GGX), magnitude scaled by the V ratio
+  kSphereLtcSchlickRaw,  // the same without the V ratio
+  kSphereLtcBeckmann,    // LTC (a GGX lobe) against a Beckmann-D reference (V Schlick-GGX, ratio)
+  kSphereSpecularMethods
+};
+enum TubeDiffuseMethod { kTubeDiffuseKaris, kTubeDiffuseLtc, kTubeDiffuseMethods };
+enum TubeSpecularMethod {
+  kTubeRp,             // eq. 19 + normalization (the default), Schlick-GGX V
+  kTubeRpPlain,        // eq. 19 without normalization
+  kTubeRpEq18,         // eq. 18 + normalization
+  kTubeRpEq18Plain,    // eq. 18 without normalization
+  kTubeLtc,            // LTC, height-correlated Smith V
+  kTubeRpSmith,        // eq. 19 + normalization, height-correlated Smith V
+  kTubeLtcSchlick,     // LTC, Schlick-GGX V with the V ratio
+  kTubeLtcSchlickRaw,  // LTC, Schlick-GGX V without it
+  kTubeLtcBeckmann,    // LTC against a Beckmann-D reference
+  kTubeSpecularMethods
+};
+const std::vector<LightMethod>& sphereDiffuseMethods();
+const std::vector<LightMethod>& sphereSpecularMethods();
+const std::vector<LightMethod>& tubeDiffuseMethods();
+const std::vector<LightMethod>& tubeSpecularMethods();
+
 // ---- Sphere light sweep: roughness x radius/distance x elevation of the center ----
 struct SphereSweepGrid {
   std::vector<float> roughness{0.05f, 0.1f, 0.2f, 0.35f, 0.5f, 0.75f, 1.0f};
-  std::vector<float> radius{0.01f, 0.05f, 0.1f, 0.25f, 0.5f, 1.0f};  // distance to center = 1
+  std::vector<float> radius{0.01f, 0.05f, 0.1f, 0.25f, 0.5f, 0.98f};  // distance to center = 1
   std::vector<float> elevation_deg{90.0f, 45.0f, 15.0f, 5.0f, 0.0f, -5.0f};
   int samples = 2048;
   uint64_t seed = 1;
@@ -78,14 +128,16 @@ struct SphereSweepGrid {
 };
 struct SphereSweepRow {
   float roughness = 0.0f, radius = 0.0f, elevation_deg = 0.0f;
-  TermError diffuse[2];   // [SphereDiffuse]: KarisPoint, HorizonCorrect
-  TermError specular[2];  // [sphere_normalization]: without, with (alpha/alpha')^2
+  std::vector<TermError> diffuse;   // [SphereDiffuseMethod]
+  std::vector<TermError> specular;  // [SphereSpecularMethod]
+  // Entirely above the horizon: elevation >= the sphere's angular radius asin(r/d).
+  bool above() const;
 };
 std::vector<SphereSweepRow> sweepSphere(const SphereSweepGrid& grid);
 
-// ---- Tube light sweep: roughness x length x radius (center at distance 1, elevation 45 degrees,
-// axis parallel to the surface, once across and once along the plane of incidence; the views of
-// both orientations are summed into one error) ----
+// ---- Tube light sweep: roughness x length x radius x orientation (center at distance 1,
+// elevation 45 degrees, axis parallel to the surface, across (y) or along (x) the plane of
+// incidence) ----
 struct TubeSweepGrid {
   std::vector<float> roughness{0.05f, 0.1f, 0.2f, 0.35f, 0.5f, 0.75f, 1.0f};
   std::vector<float> length{0.25f, 0.5f, 1.0f, 2.0f};
@@ -97,8 +149,9 @@ struct TubeSweepGrid {
 };
 struct TubeSweepRow {
   float roughness = 0.0f, length = 0.0f, radius = 0.0f;
-  TermError diffuse;         // Karis eq. 16 (no option)
-  TermError specular[2][2];  // [TubeSpecular: eq. 19, eq. 18][tube_normalization: without, with]
+  bool along = false;               // axis along the plane of incidence (else across it)
+  std::vector<TermError> diffuse;   // [TubeDiffuseMethod]
+  std::vector<TermError> specular;  // [TubeSpecularMethod]
 };
 std::vector<TubeSweepRow> sweepTube(const TubeSweepGrid& grid);
 

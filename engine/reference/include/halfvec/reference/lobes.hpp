@@ -23,7 +23,8 @@ inline Lobes brdfLobes(const BrdfConfig& c, const glsl::Surface& s, const glm::v
   float VoH = glsl::saturate(glm::dot(V, H));
   Lobes r;
   r.diffuse = s.diffuse_color * evalFd(c, s.roughness, NoV, NoL, VoH);
-  float D = evalD(c, s.alpha, NoH);
+  const glm::vec3 NxH = glm::cross(s.N, H);  // 1 - NoH^2 without cancellation (see D_GGX)
+  float D = evalD(c, s.alpha, NoH, glm::dot(NxH, NxH));
   float Vis = analytic ? evalV(c, s.roughness, s.alpha, NoV, NoL, NoH, VoH)
                        : evalVForAlpha(c, s.alpha, NoV, NoL, NoH, VoH);
   r.specular = (D * Vis) * evalF(c, s.f0, VoH);

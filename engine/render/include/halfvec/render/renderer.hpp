@@ -202,6 +202,7 @@ class Renderer {
   gl::Sampler nearest_;
   size_t tile_entries_ = 0;  // entries the last culling pass produced (read at frame end)
   DebugOptions debug_;
+  bool lightPassNeedsLtc() const;  // the light program reads the LTC table (lights.glsl)
 
   // Optional stages (post_passes.cpp): emitter geometry, highlight, post-AA.
   ViewOptions view_options_;

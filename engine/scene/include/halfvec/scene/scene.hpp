@@ -139,7 +139,9 @@ enum class VisibilityTerm : uint8_t {
 enum class FresnelTerm : uint8_t { SchlickPow5, SchlickSG, Exact, SchlickF90Occlusion };
 enum class DiffuseTerm : uint8_t { Lambert, Burley };
 enum class SphereDiffuse : uint8_t { KarisPoint, HorizonCorrect };
-enum class TubeSpecular : uint8_t { ClosestPointEq19, SmallestAngleEq18 };
+enum class SphereSpecular : uint8_t { RepresentativePoint, Ltc };
+enum class TubeSpecular : uint8_t { ClosestPointEq19, SmallestAngleEq18, Ltc };
+enum class TubeDiffuse : uint8_t { KarisEq16, Ltc };
 enum class Culling : uint8_t { Tiled, BruteForce };
 // HV_TONEMAP in shaders/common/tonemap.glsl (same values).
 enum class ToneMap : uint8_t { Reinhard, ReinhardLuminance, None, PbrNeutral, Aces };
@@ -162,8 +164,11 @@ struct RenderSettings {
   bool falloff_plus_one = true;  // UE4's 1/(d^2+1); false = physical 1/d^2 (accuracy mode)
   SphereDiffuse sphere_diffuse = SphereDiffuse::KarisPoint;
   bool sphere_normalization = true;  // (alpha/alpha')^2, Karis eqs. 10 and 14
+  // Karis's representative point, or the fitted LTC over the sphere (docs/lights.md).
+  SphereSpecular sphere_specular = SphereSpecular::RepresentativePoint;
   TubeSpecular tube_specular = TubeSpecular::ClosestPointEq19;
-  bool tube_normalization = true;  // alpha/alpha', Karis eq. 20
+  bool tube_normalization = true;                     // alpha/alpha', Karis eq. 20
+  TubeDiffuse tube_diffuse = TubeDiffuse::KarisEq16;  // or the capsule's exact-shape irradiance
   Culling culling = Culling::Tiled;
   EnvBrdf env_brdf = EnvBrdf::Table;
   bool energy_compensation = false;

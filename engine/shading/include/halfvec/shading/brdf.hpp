@@ -23,7 +23,9 @@ struct BrdfConfig {
   static BrdfConfig fromSettings(const RenderSettings& s);
 };
 
-// D(h): hv::glsl::D_GGX / D_Beckmann / D_BlinnPhong.
+// D(h): hv::glsl::D_GGX / D_Beckmann / D_BlinnPhong. sin2_NH = 1 - NoH^2, best |N x H|^2 (exact
+// near the mirror direction, see D_GGX); without it, (1 - NoH)(1 + NoH).
+float evalD(const BrdfConfig& c, float alpha, float NoH, float sin2_NH);
 float evalD(const BrdfConfig& c, float alpha, float NoH);
 // V for a given alpha, no remap (= glsl visibilityForAlpha); used by image-based lighting.
 float evalVForAlpha(const BrdfConfig& c, float alpha, float NoV, float NoL, float NoH, float VoH);
@@ -38,7 +40,7 @@ float evalFd(const BrdfConfig& c, float roughness, float NoV, float NoL, float L
 // The two below take glsl::Surface, a type of the headers' anonymous namespace (internal
 // linkage), so they are defined here, inline, and not in brdf.cpp.
 
-// D V F with D scaled by normalization (= glsl specularLobe).
+// D V F with D scaled by normalization (= glsl specularLobe); sin2_NH = 1 - NoH^2 from NoH.
 inline glm::vec3 evalSpecular(const BrdfConfig& c, const glsl::Surface& s, float NoV, float NoL,
                               float NoH, float VoH, float normalization = 1.0f) {
   float D = evalD(c, s.alpha, NoH) * normalization;
@@ -54,8 +56,10 @@ inline glm::vec3 evalBrdf(const BrdfConfig& c, const glsl::Surface& s, const glm
   float NoL = glsl::saturate(glm::dot(s.N, L));
   float NoH = glsl::saturate(glm::dot(s.N, H));
   float VoH = glsl::saturate(glm::dot(V, H));
-  return s.diffuse_color * evalFd(c, s.roughness, NoV, NoL, VoH) +
-         evalSpecular(c, s, NoV, NoL, NoH, VoH, 1.0f);
+  const glm::vec3 NxH = glm::cross(s.N, H);
+  float D = evalD(c, s.alpha, NoH, glm::dot(NxH, NxH));
+  float Vis = evalV(c, s.roughness, s.alpha, NoV, NoL, NoH, VoH);
+  return s.diffuse_color * evalFd(c, s.roughness, NoV, NoL, VoH) + (D * Vis) * evalF(c, s.f0, VoH);
 }
 
 // Shader defines for the BRDF and light options of settings, e.g. {"HV_BRDF_D", "0"}; see

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "halfvec/shading/glsl.hpp"
+#include "halfvec/shading/ltc_table.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-function"
@@ -18,6 +19,8 @@ namespace {
 #include "halfvec/shaders/common/math.glsl"
 #include "halfvec/shaders/common/brdf.glsl"
 #include "halfvec/shaders/common/sampling.glsl"
+#include "halfvec/shaders/common/ltc_integrals.glsl"
+#include "halfvec/shaders/common/ltc.glsl"
 #include "halfvec/shaders/common/lights.glsl"
 #include "halfvec/shaders/common/cull.glsl"
 #include "halfvec/shaders/common/gbuffer.glsl"

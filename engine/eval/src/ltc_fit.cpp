@@ -1,0 +1,375 @@
+#include "halfvec/eval/ltc_fit.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+#include "halfvec/core/parallel.hpp"
+#include "halfvec/shading/shading.hpp"
+
+namespace hv::eval {
+
+namespace {
+
+namespace g = hv::glsl;
+
+// The frame of a cell: N = +z, V in the xz plane on the +x side.
+glm::vec3 cellView(float NoV) {
+  return glm::vec3(std::sqrt(std::max(0.0f, 1.0f - NoV * NoV)), 0.0f, NoV);
+}
+
+float cellAlpha(float roughness) {
+  const float r = std::clamp(roughness, g::HV_MIN_ROUGHNESS, 1.0f);
+  return r * r;
+}
+
+// f (n.l) with F = 1 for the fitted lobe: GGX D (with |N x H|^2, as the engine) x height-
+// correlated Smith V x cos.
+double lobe(float alpha, const glm::vec3& V, const glm::vec3& l) {
+  if (l.z <= 0.0f) return 0.0;
+  const glm::vec3 H = g::safeNormalize(V + l);
+  const float sin2 = H.x * H.x + H.y * H.y;
+  const float NoV = std::max(V.z, g::HV_MIN_NOV);
+  return double(g::D_GGX(alpha, H.z, sin2)) * g::V_SmithGGXCorrelated(alpha, NoV, l.z) * l.z;
+}
+
+// Solid-angle pdf of l = reflect(-V, H) for H from sampleGGXVNDF.
+double vndfPdf(float alpha, const glm::vec3& V, const glm::vec3& l) {
+  const glm::vec3 H = g::safeNormalize(V + l);
+  const float VoH = glm::dot(V, H);
+  if (VoH <= 0.0f || H.z <= 0.0f) return 0.0;
+  return double(g::pdfGGXVNDF(V, H, alpha)) / (4.0 * VoH);
+}
+
+glm::vec2 hammersley2(int i, int n) {
+  return g::hammersley(uint32_t(i), uint32_t(n));
+}
+
+g::Ltc cellLtc(const LtcParams& p, float alpha, const glm::vec3& V) {
+  return g::makeLtc(glm::vec3(0.0f, 0.0f, 1.0f), V, alpha, glm::vec4(p.ax, p.ay, p.sk, p.dx));
+}
+
+// M (up to a positive factor) of an LTC: the inverse of its rows alpha M^-1.
+glm::mat3 ltcMatrix(const g::Ltc& l) {
+  return glm::inverse(glm::transpose(glm::mat3(l.i0, l.i1, l.i2)));
+}
+
+// The fixed samples of one cell: directions from the lobe (with the lobe's value and pdf, which
+// do not depend on the parameters) and the cosine samples the LTC maps.
+struct CellSamples {
+  float alpha = 0.0f;
+  glm::vec3 V;
+  double norm = 1.0;
+  std::vector<glm::vec3> lobe_dirs;
+  std::vector<double> lobe_val, lobe_pdf;
+  std::vector<glm::vec3> cosine_dirs;
+};
+
+CellSamples makeSamples(float roughness, float NoV, double norm, int per_dim) {
+  CellSamples s;
+  s.alpha = cellAlpha(roughness);
+  s.V = cellView(NoV);
+  s.norm = norm;
+  const int n = per_dim * per_dim;
+  for (int i = 0; i < n; ++i) {
+    const glm::vec2 u = hammersley2(i, n);
+    const glm::vec3 H = g::sampleGGXVNDF(s.V, s.alpha, u);
+    const glm::vec3 l = glm::reflect(-s.V, H);
+    s.lobe_dirs.push_back(l);
+    s.lobe_val.push_back(lobe(s.alpha, s.V, l) / norm);
+    s.lobe_pdf.push_back(vndfPdf(s.alpha, s.V, l));
+    // Cosine samples: the same points with the coordinates swapped (decorrelated from the lobe's).
+    s.cosine_dirs.push_back(g::sampleCosineHemisphere(glm::vec2(u.y, u.x)));
+  }
+  return s;
+}
+
+// integral |D_ltc - f cos / n_f|^power over the sphere (MIS estimate; see ltcFitError).
+double fitErrorP(const CellSamples& s, const LtcParams& p, double power) {
+  const g::Ltc l = cellLtc(p, s.alpha, s.V);
+  const glm::mat3 M = ltcMatrix(l);
+  const double n = double(s.lobe_dirs.size());
+  double e = 0.0;
+  for (size_t k = 0; k < s.lobe_dirs.size(); ++k) {
+    // A lobe sample: |D - f| / (n (p_lobe + p_ltc)).
+    const double d = g::ltcDensity(l, s.lobe_dirs[k]);
+    const double pl = s.lobe_pdf[k];
+    if (pl + d > 0.0) e += std::pow(std::abs(d - s.lobe_val[k]), power) / (n * (pl + d));
+    // An LTC sample: its pdf is D itself.
+    const glm::vec3 w = glm::normalize(M * s.cosine_dirs[k]);
+    const double dw = g::ltcDensity(l, w);
+    const double fw = lobe(s.alpha, s.V, w) / s.norm;
+    const double pw = vndfPdf(s.alpha, s.V, w);
+    if (pw + dw > 0.0) e += std::pow(std::abs(dw - fw), power) / (n * (pw + dw));
+  }
+  return e;
+}
+double fitError(const CellSamples& s, const LtcParams& p) {
+  return fitErrorP(s, p, 1.0);
+}
+
+// Nelder-Mead over x = (ln a_x, ln a_y, s, tilt) (Nelder & Mead 1965; standard coefficients 1, 2,
+// 1/2, 1/2), tilt in radians from the lobe's mean direction. Returns the best point; `iterations`
+// gets the count.
+template <class F>
+std::array<double, 4> nelderMead(F&& f, std::array<double, 4> x0, int max_iter, int& iterations) {
+  using P = std::array<double, 4>;
+  constexpr int D = 4;
+  std::array<P, D + 1> x;
+  std::array<double, D + 1> fx;
+  x[0] = x0;
+  const double step[D] = {0.15, 0.15, 0.1, 0.05};
+  for (int k = 0; k < D; ++k) {
+    x[k + 1] = x0;
+    x[k + 1][k] += step[k];
+  }
+  for (int k = 0; k <= D; ++k) fx[k] = f(x[k]);
+  auto lerp = [](const P& a, const P& b, double t) {
+    P r;
+    for (int k = 0; k < D; ++k) r[k] = a[k] + (b[k] - a[k]) * t;
+    return r;
+  };
+  int it = 0;
+  for (; it < max_iter; ++it) {
+    std::array<int, D + 1> order = {0, 1, 2, 3, 4};
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return fx[a] < fx[b]; });
+    std::array<P, D + 1> xs;
+    std::array<double, D + 1> fs;
+    for (int k = 0; k <= D; ++k) {
+      xs[k] = x[order[k]];
+      fs[k] = fx[order[k]];
+    }
+    x = xs;
+    fx = fs;
+    // Converged: the simplex's values within 1e-7 of the best (relative) and its size below 1e-5.
+    double size = 0.0;
+    for (int k = 1; k <= D; ++k)
+      for (int c = 0; c < D; ++c) size = std::max(size, std::abs(x[k][c] - x[0][c]));
+    if (fx[D] - fx[0] <= 1e-7 * (fx[0] + 1e-6) && size < 1e-5) break;
+    P centroid{};
+    for (int k = 0; k < D; ++k)
+      for (int c = 0; c < D; ++c) centroid[c] += x[k][c] / double(D);
+    const P xr = lerp(centroid, x[D], -1.0);
+    const double fr = f(xr);
+    if (fr < fx[0]) {
+      const P xe = lerp(centroid, x[D], -2.0);
+      const double fe = f(xe);
+      if (fe < fr) {
+        x[D] = xe;
+        fx[D] = fe;
+      } else {
+        x[D] = xr;
+        fx[D] = fr;
+      }
+    } else if (fr < fx[D - 1]) {
+      x[D] = xr;
+      fx[D] = fr;
+    } else {
+      const bool outside = fr < fx[D];
+      const P xc = lerp(centroid, outside ? xr : x[D], 0.5);
+      const double fc = f(xc);
+      if (fc < std::min(fr, fx[D])) {
+        x[D] = xc;
+        fx[D] = fc;
+      } else {  // shrink toward the best
+        for (int k = 1; k <= D; ++k) {
+          x[k] = lerp(x[0], x[k], 0.5);
+          fx[k] = f(x[k]);
+        }
+      }
+    }
+  }
+  iterations = it;
+  int best = int(std::min_element(fx.begin(), fx.end()) - fx.begin());
+  return x[best];
+}
+
+LtcParams toParams(const std::array<double, 4>& x, float dx0) {
+  LtcParams p;
+  const double th = std::asin(std::clamp(double(dx0), -1.0, 1.0)) + x[3];
+  const float dx = float(std::sin(std::clamp(th, -1.5707, 1.5707)));
+  p.ax = float(std::exp(x[0]));
+  p.ay = float(std::exp(x[1]));
+  p.sk = float(x[2]);
+  p.dx = dx;
+  return p;
+}
+
+}  // namespace
+
+LtcLobeMoments integrateLtcLobe(float roughness, float NoV, int per_dim) {
+  const float alpha = cellAlpha(roughness);
+  const glm::vec3 V = cellView(NoV);
+  const int n = per_dim * per_dim;
+  const float G1 = g::G1_SmithGGX(alpha, std::max(V.z, g::HV_MIN_NOV));
+  double norm = 0.0, fresnel = 0.0;
+  glm::dvec3 mean(0.0);
+  for (int i = 0; i < n; ++i) {
+    const glm::vec3 H = g::sampleGGXVNDF(V, alpha, hammersley2(i, n));
+    const glm::vec3 l = glm::reflect(-V, H);
+    if (l.z <= 0.0f) continue;
+    // f (n.l) / pdf = D V_corr (n.l) / (G1(V) D / (4 N.V)) = 4 N.V V_corr (n.l) / G1(V).
+    const double w = 4.0 * std::max(V.z, g::HV_MIN_NOV) *
+                     g::V_SmithGGXCorrelated(alpha, std::max(V.z, g::HV_MIN_NOV), l.z) * l.z / G1;
+    const double VoH = std::clamp(double(glm::dot(V, H)), 0.0, 1.0);
+    norm += w;
+    fresnel += w * std::pow(1.0 - VoH, 5.0);
+    mean += w * glm::dvec3(l);
+  }
+  LtcLobeMoments m;
+  m.norm = norm / n;
+  m.fresnel = fresnel / n;
+  const double len = glm::length(mean);
+  m.mean = len > 0.0 ? mean / len : glm::dvec3(0.0, 0.0, 1.0);
+  return m;
+}
+
+double ltcLobeValue(float roughness, float NoV, double norm, const glm::vec3& l) {
+  return lobe(cellAlpha(roughness), cellView(NoV), l) / norm;
+}
+
+double ltcFitError(const LtcParams& p, float roughness, float NoV, double norm, int per_dim) {
+  return fitError(makeSamples(roughness, NoV, norm, per_dim), p);
+}
+
+LtcCell fitLtcCell(float roughness, float NoV, const LtcParams& start, const LtcFitOptions& o) {
+  const LtcLobeMoments m = integrateLtcLobe(roughness, NoV, o.moment_samples);
+  const float dx = float(m.mean.x);
+  const CellSamples s = makeSamples(roughness, NoV, m.norm, o.fit_samples);
+  auto f = [&](const std::array<double, 4>& x) {
+    // Widths outside [1e-3, 1e3] (times alpha) are not lobes; a large value keeps the simplex out.
+    if (std::abs(x[0]) > 6.9 || std::abs(x[1]) > 6.9) return 1e30;
+    return fitErrorP(s, toParams(x, dx), o.error_power);
+  };
+  LtcCell c;
+  const std::array<double, 4> x0 = {std::log(double(std::max(start.ax, 1e-3f))),
+                                    std::log(double(std::max(start.ay, 1e-3f))), double(start.sk),
+                                    0.0};
+  const std::array<double, 4> x = nelderMead(f, x0, o.max_iterations, c.iterations);
+  c.params = toParams(x, dx);
+  c.norm = m.norm;
+  c.fresnel = m.fresnel;
+  c.error = fitError(s, c.params);
+  return c;
+}
+
+LtcParams ltcFitStart(const LtcTable& t, int i, int j) {
+  return i + 1 < t.size ? t.at(i + 1, j).params : LtcParams{};
+}
+
+LtcTable fitLtcTable(const LtcFitOptions& o) {
+  LtcTable t;
+  t.size = o.size;
+  t.cells.resize(size_t(o.size) * size_t(o.size));
+  std::atomic<int> done{0};
+  std::mutex progress_mutex;
+  detail::parallelFor(o.size, o.threads, [&](int j) {
+    for (int i = o.size - 1; i >= 0; --i) {
+      const float x = float(i) / float(o.size - 1), y = float(j) / float(o.size - 1);
+      const float roughness = g::HV_MIN_ROUGHNESS + (1.0f - g::HV_MIN_ROUGHNESS) * x;
+      const float NoV = std::max(1.0f - y * y, g::HV_MIN_NOV);
+      t.cells[size_t(j) * size_t(o.size) + size_t(i)] =
+          fitLtcCell(roughness, NoV, ltcFitStart(t, i, j), o);
+    }
+    const int d = ++done;
+    if (o.progress) {
+      std::lock_guard<std::mutex> lock(progress_mutex);
+      o.progress(d, o.size);
+    }
+  });
+  return t;
+}
+
+std::string ltcTableSource(const LtcTable& t, const LtcFitOptions& o, const std::string& command) {
+  double worst = 0.0, sum = 0.0;
+  for (const LtcCell& c : t.cells) {
+    worst = std::max(worst, c.error);
+    sum += c.error;
+  }
+  std::ostringstream s;
+  char buf[256];
+  s << "// Generated by `" << command << "` (samples/app/cmd_ltc_fit.cpp, engine/eval/src/"
+    << "ltc_fit.cpp); do\n// not edit: run the command again. The LTC table of "
+       "shaders/common/ltc.glsl, fitted to GGX x\n// height-correlated Smith x cos (F = 1): "
+    << t.size << "x" << t.size << " cells, " << o.fit_samples << "^2 + " << o.fit_samples
+    << "^2 fit samples, " << o.moment_samples << "^2 moment samples per cell,\n// minimizing "
+    << "integral |D_ltc - lobe|^" << o.error_power << ".\n";
+  std::snprintf(buf, sizeof buf,
+                "// L1 distance between each cell's LTC and its lobe: mean %.4f, worst %.4f.\n",
+                sum / double(t.cells.size()), worst);
+  s << buf << "// clang-format off\n#include \"halfvec/shading/ltc_table.hpp\"\n"
+    << "#include \"halfvec/shading/shading.hpp\"\n\nnamespace hv {\nnamespace {\n"
+    << "// Per cell: a_x/alpha, a_y/alpha, s/alpha, d_x, n_f, n_fresnel, fit error, 0.\n"
+    << "constexpr float kTable[] = {\n";
+  // A float literal that reads back as the same float: 9 significant digits, and a '.' or an
+  // exponent before the f suffix.
+  auto literal = [](double v) {
+    char b[40];
+    std::snprintf(b, sizeof b, "%.9g", double(float(v)));
+    std::string r = b;
+    if (r.find_first_of(".en") == std::string::npos) r += ".0";
+    return r + "f";
+  };
+  for (const LtcCell& c : t.cells) {
+    s << "    " << literal(c.params.ax) << ", " << literal(c.params.ay) << ", "
+      << literal(c.params.sk) << ", " << literal(c.params.dx) << ", " << literal(c.norm) << ", "
+      << literal(c.fresnel) << ", " << literal(c.error) << ", 0.0f,\n";
+  }
+  s << "};\nstatic_assert(sizeof(kTable) / sizeof(float) ==\n"
+    << "              HV_LTC_TABLE_SIZE * HV_LTC_TABLE_SIZE * kLtcFloatsPerCell);\n"
+    << "}  // namespace\n\nstd::span<const float> ltcTableData() { return kTable; }\n"
+    << "std::string_view ltcTableProvenance() {\n  return \"" << command << " (size " << t.size
+    << ", fit samples " << o.fit_samples << ", moment samples " << o.moment_samples
+    << ", error power " << o.error_power << ", fit version " << kLtcFitVersion
+    << ")\";\n}\n\n}  // namespace hv\n";
+  return s.str();
+}
+
+std::string ltcCacheKey(const LtcFitOptions& o) {
+  char buf[160];
+  std::snprintf(
+      buf, sizeof buf, "halfvec-ltc-fit v%d size %d fit %d moments %d iterations %d power %g",
+      kLtcFitVersion, o.size, o.fit_samples, o.moment_samples, o.max_iterations, o.error_power);
+  return buf;
+}
+
+std::string ltcCacheBytes(const LtcTable& t, const LtcFitOptions& o) {
+  std::string key = ltcCacheKey(o);
+  std::string bytes = key + '\n';
+  for (const LtcCell& c : t.cells) {
+    const double v[8] = {c.params.ax, c.params.ay, c.params.sk, c.params.dx,
+                         c.norm,      c.fresnel,   c.error,     double(c.iterations)};
+    bytes.append(reinterpret_cast<const char*>(v), sizeof v);
+  }
+  return bytes;
+}
+
+bool loadLtcCache(const std::string& path, const LtcFitOptions& o, LtcTable& t) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) return false;
+  std::string key;
+  if (!std::getline(f, key) || key != ltcCacheKey(o)) return false;
+  const size_t n = size_t(o.size) * size_t(o.size);
+  std::string rest((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  if (rest.size() != n * 8 * sizeof(double)) return false;
+  t.size = o.size;
+  t.cells.resize(n);
+  for (size_t k = 0; k < n; ++k) {
+    double v[8];
+    std::memcpy(v, rest.data() + k * sizeof v, sizeof v);
+    LtcCell& c = t.cells[k];
+    c.params = {float(v[0]), float(v[1]), float(v[2]), float(v[3])};
+    c.norm = v[4];
+    c.fresnel = v[5];
+    c.error = v[6];
+    c.iterations = int(v[7]);
+  }
+  return true;
+}
+
+}  // namespace hv::eval

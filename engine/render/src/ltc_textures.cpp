@@ -1,0 +1,45 @@
+#include "ltc_textures.hpp"
+
+#include <vector>
+
+#include "halfvec/shading/ltc_table.hpp"
+#include "halfvec/shading/shading.hpp"
+
+namespace hv::render {
+
+void LtcTextures::bind() {
+  if (!sampler_) {
+    constexpr int n = HV_LTC_TABLE_SIZE;
+    const std::span<const float> data = ltcTableData();
+    const char* names[2] = {"LTC table 0 (a_x, a_y, s over alpha; d_x)",
+                            "LTC table 1 (n_f, n_fresnel)"};
+    for (int t = 0; t < 2; ++t) {
+      // The cell's 8 floats hold both textures' texels: split them.
+      std::vector<float> texels(size_t(n) * n * 4);
+      for (size_t c = 0; c < size_t(n) * n; ++c) {
+        for (int k = 0; k < 4; ++k) texels[c * 4 + k] = data[c * kLtcFloatsPerCell + t * 4 + k];
+      }
+      tex_[t] = gl::createTexture2D(names[t], GL_RGBA32F, n, n);
+      glTextureSubImage2D(tex_[t].id(), 0, 0, 0, n, n, GL_RGBA, GL_FLOAT, texels.data());
+    }
+    sampler_ = gl::createSampler("LTC table (linear clamp)");
+    glSamplerParameteri(sampler_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glSamplerParameteri(sampler_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(sampler_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(sampler_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
+  const GLuint units[2] = {HV_LTC_TEXTURE_UNIT0, HV_LTC_TEXTURE_UNIT1};
+  for (int t = 0; t < 2; ++t) {
+    glBindTextureUnit(units[t], tex_[t].id());
+    glBindSampler(units[t], sampler_.id());
+  }
+}
+
+void LtcTextures::unbind() {
+  for (GLuint u : {GLuint(HV_LTC_TEXTURE_UNIT0), GLuint(HV_LTC_TEXTURE_UNIT1)}) {
+    glBindTextureUnit(u, 0);
+    glBindSampler(u, 0);
+  }
+}
+
+}  // namespace hv::render

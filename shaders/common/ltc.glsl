@@ -1,0 +1,290 @@
+// Linearly transformed cosines (Heitz, Dupuy, Hill, Neubelt 2016, "Real-Time Polygonal-Light
+// Shading with Linearly Transformed Cosines"; Heitz & Hill 2017, "Real-Time Line- and Disk-Light
+// Shading with Linearly Transformed Cosines") fitted to the engine's own specular lobe, shared by
+// GLSL and C++ (see halfvec/shading/glsl.hpp). The table is fitted by `halfvec ltc-fit`
+// (engine/eval/src/ltc_fit.cpp) from the terms of brdf.glsl; the method, the table and the
+// measured accuracy: docs/lights.md ("LTC sphere and tube lights").
+//
+// An LTC is the distribution D(w) of w = M w_o / |M w_o| for w_o drawn from the clamped cosine
+// D_o(w_o) = max(0, w_o.z) / pi (Heitz et al. eq. 1):  D(w) = D_o(w_o) / |det M| |M w_o|^3 with
+// w_o = M^-1 w / |M^-1 w|, so that the integral of D over any region P of directions is the
+// integral of D_o over M^-1 P (eq. 5), in closed form for polygons, disks (elliptical cones) and
+// lines (ltc_integrals.glsl). Per cell of (roughness, N.V), M is fitted so that D approximates
+// the normalized lobe f(v, l) (n.l) / n_f, n_f = its integral (the directional albedo with F = 1).
+//
+// Parametrization of M (isotropic lobes are symmetric about the plane of incidence): in the
+// shading frame (T1 in the plane of incidence, T2 = N x T1, N), with the lobe's mean direction
+// Z' = (d_x, 0, d_z) and X' = (d_z, 0, -d_x):
+//   M = [X' T2 Z'] * [[a_x, 0, 0], [0, a_y, 0], [s, 0, 1]],
+// so M maps the cosine's axis onto Z' exactly and its x and y axes onto lobe widths a_x, a_y,
+// with s the skew of the lobe toward (or away from) the mean direction. For small alpha every
+// width scales as alpha, so the table stores a_x / alpha, a_y / alpha, s / alpha (nearly
+// constant as alpha -> 0: what bilinear filtering interpolates well) and d_x; the second texture
+// stores the magnitudes n_f and the Fresnel weight integral of (1 - V.H)^5.
+#ifndef HV_LTC_GLSL
+#define HV_LTC_GLSL
+
+#include "math.glsl"
+#include "brdf.glsl"
+#include "ltc_integrals.glsl"
+#include "sampling.glsl"
+
+// Table: HV_LTC_TABLE_SIZE^2 cells; x = (roughness - HV_MIN_ROUGHNESS) / (1 - HV_MIN_ROUGHNESS),
+// y = sqrt(1 - N.V) (more cells toward grazing views, where the lobe changes fastest); cell (i,j)
+// is fitted at x = i / (size - 1), y = j / (size - 1). Two RGBA textures (texture units below),
+// sampled with linear filtering and clamp-to-edge: tex 0 = (a_x / alpha, a_y / alpha, s / alpha,
+// d_x), tex 1 = (n_f, n_fresnel, 0, 0) with n_fresnel = integral of f (n.l) (1 - V.H)^5.
+#define HV_LTC_TABLE_SIZE 64
+#define HV_LTC_TEXTURE_UNIT0 6
+#define HV_LTC_TEXTURE_UNIT1 7
+
+// Cell coordinates (texel units, 0 .. size - 1) of a roughness and N.V.
+vec2 ltcCellCoord(float roughness, float NoV) {
+  float x = saturate((roughness - HV_MIN_ROUGHNESS) / (1.0f - HV_MIN_ROUGHNESS));
+  float y = sqrt(saturate(1.0f - NoV));
+  return vec2(x, y) * float(HV_LTC_TABLE_SIZE - 1);
+}
+// Smallest N.V the LTC modes look up. Toward N.V = 0 the lobe's width across the plane of
+// incidence goes to 0 (a_y ~ 2 alpha N.V), and below N.V = 0.02 at the lowest roughness the
+// cosine space is stretched by 1e4 or more across, beyond what the cone integral's float
+// eigenvalues resolve (found by the stability sweep: NaN at N.V = 1e-4, roughness 0.045). Silhouette
+// pixels below it are shaded with the lobe of N.V = 0.02.
+const float HV_LTC_MIN_NOV = 0.02f;
+
+// Texture coordinates of the same point: texel centers at (i + 0.5) / size.
+vec2 ltcTableUv(float roughness, float NoV) {
+  return (ltcCellCoord(roughness, max(NoV, HV_LTC_MIN_NOV)) + vec2(0.5f)) *
+         (1.0f / float(HV_LTC_TABLE_SIZE));
+}
+// The (roughness, N.V) a cell is fitted at (inverse of ltcCellCoord at integer coordinates).
+vec2 ltcCellParameters(int i, int j) {
+  float x = float(i) / float(HV_LTC_TABLE_SIZE - 1);
+  float y = float(j) / float(HV_LTC_TABLE_SIZE - 1);
+  return vec2(HV_MIN_ROUGHNESS + (1.0f - HV_MIN_ROUGHNESS) * x, max(1.0f - y * y, HV_MIN_NOV));
+}
+
+// One LTC in world space, as what the integrals need: the rows of alpha M^-1 (world -> cosine
+// space; the factor alpha keeps every entry O(1) at low roughness, and any positive factor leaves
+// directions, hence the integrals, unchanged) and its determinant. From the parametrization,
+// M^-1 = A^-1 [X' T2 Z']^T with A^-1 = [[1/a_x, 0, 0], [0, 1/a_y, 0], [-s/a_x, 0, 1]]: rows
+// X'/a_x, T2/a_y, Z' - (s/a_x) X'; times alpha with the table's a_x/alpha, a_y/alpha, s/alpha.
+struct Ltc {
+  vec3 i0;
+  vec3 i1;
+  vec3 i2;
+  float det_inv;  // det(alpha M^-1) = alpha / ((a_x/alpha) (a_y/alpha))
+  float peak;     // D at the cosine's axis (its largest value): 1 / (pi a_x a_y)
+};
+
+// The LTC of a table cell's parameters (tex 0) for the unit normal N, unit view V and the
+// surface's alpha. The frame's T1 is V's component along the surface; at normal incidence any
+// tangent does (the lobe is then symmetric about N): a 1e-6 nudge toward tangentFrame's T picks
+// one without a branch and changes nothing measurable otherwise.
+Ltc makeLtc(vec3 N, vec3 V, float alpha, vec4 params) {
+  vec3 T;
+  vec3 B;
+  tangentFrame(N, T, B);
+  vec3 T1 = safeNormalize(V - N * dot(N, V) + 1e-6f * T);
+  vec3 T2 = cross(N, T1);
+  float dx = params.w;
+  float dz = sqrt(max(1.0f - dx * dx, 0.0f));
+  vec3 Xp = T1 * dz - N * dx;
+  vec3 Zp = T1 * dx + N * dz;
+  Ltc l;
+  l.i0 = Xp / params.x;
+  l.i1 = T2 / params.y;
+  l.i2 = Zp * alpha - Xp * (params.z / params.x);
+  l.det_inv = alpha / (params.x * params.y);
+  l.peak = INV_PI / (alpha * alpha * params.x * params.y);
+  return l;
+}
+
+// The identity LTC about N (D = the clamped cosine itself): Lambertian irradiance.
+Ltc ltcIdentity(vec3 N) {
+  Ltc l;
+  tangentFrame(N, l.i0, l.i1);
+  l.i2 = N;
+  l.det_inv = 1.0f;
+  l.peak = INV_PI;
+  return l;
+}
+
+// alpha M^-1 w: w in cosine space, up to the positive factor alpha.
+vec3 ltcToCosine(Ltc l, vec3 w) { return vec3(dot(l.i0, w), dot(l.i1, w), dot(l.i2, w)); }
+
+// D(w) for unit w (Heitz et al. 2016 eq. 2): D_o(w_o) |det M^-1| / |M^-1 w|^3, which with
+// x = alpha M^-1 w is D_o(x / |x|) det(alpha M^-1) / |x|^3.
+float ltcDensity(Ltc l, vec3 w) {
+  vec3 x = ltcToCosine(l, w);
+  // |x|^2 >= 1e-18: for a unit w, |x| is at least alpha M^-1's smallest singular value (~alpha);
+  // only w = 0 reaches the clamp, where x.z = 0 makes D = 0 (and inv_len^4 stays finite).
+  float inv_len = inversesqrt(max(dot(x, x), 1e-18f));
+  return max(x.z, 0.0f) * INV_PI * l.det_inv * inv_len * inv_len * inv_len * inv_len;
+}
+
+// Vector form factor, in cosine space, of the sphere (center c relative to the shading point,
+// radius r) seen from outside it: the cone it subtends is that of the disk facing the shading
+// point (Heitz & Hill 2017's sphere light: the disk of equal solid angle, here the same cone
+// exactly), of tangent half-angle tan(sigma) = r / sqrt(d^2 - r^2), whose image under M^-1 is an
+// elliptical cone. With the disk's basis B = [t e1, t e2, c/d] (e1, e2 unit, perpendicular to c,
+// t = tan(sigma)) mapped to cosine space, B' = M^-1 B, a point x lies in the cone iff its
+// coordinates (a, b, h) = B'^-1 x satisfy a^2 + b^2 <= h^2: with the rows of det(B') B'^-1,
+// r1 = B'1 x B'2 ... (cross products), the cone is x^T Q x >= 0 with Q = r3 r3^T - r1 r1^T - r2 r2^T
+// and det Q = det(B')^4. Divided through by t^2 so that Q stays O(1) for small spheres.
+vec3 ltcSphereFormFactor(Ltc l, vec3 c, float r) {
+  // Outside only; from inside (and at the center) a finite stand-in: the cone of radius
+  // 0.999 d, nearly the half-space toward c, which callers replace (ltcSphereIntegral) or
+  // which is their answer's limit at the surface (the capsule's caps).
+  float d2 = max(dot(c, c), 1e-30f);
+  r = min(r, 0.999f * sqrt(d2));
+  float k = d2 - r * r;
+  float inv_d = inversesqrt(d2);
+  vec3 cn = c * inv_d;
+  float t = r * inversesqrt(k);
+  vec3 e1;
+  vec3 e2;
+  tangentFrame(cn, e1, e2);  // right-handed: e1 x e2 = cn
+  // Columns of B' (cosine space), e's unscaled: r1 = e2' x c', r2 = c' x e1', r3 = t^2 e1' x e2'
+  // (all divided by t).
+  vec3 cc = ltcToCosine(l, cn);
+  vec3 a1 = ltcToCosine(l, e1);
+  vec3 a2 = ltcToCosine(l, e2);
+  vec3 r1 = cross(a2, cc);
+  vec3 r2 = cross(cc, a1);
+  vec3 r3 = cross(a1, a2) * t;
+  float q00 = r3.x * r3.x - r1.x * r1.x - r2.x * r2.x;
+  float q01 = r3.x * r3.y - r1.x * r1.y - r2.x * r2.y;
+  float q02 = r3.x * r3.z - r1.x * r1.z - r2.x * r2.z;
+  float q11 = r3.y * r3.y - r1.y * r1.y - r2.y * r2.y;
+  float q12 = r3.y * r3.z - r1.y * r1.z - r2.y * r2.z;
+  float q22 = r3.z * r3.z - r1.z * r1.z - r2.z * r2.z;
+  // det Q / t^6 = det(B')^4 / t^6 with det B' = det(alpha M^-1) t^2 det[e1 e2 cn] = det_inv t^2.
+  float di2 = l.det_inv * l.det_inv;
+  float det_q = di2 * di2 * t * t;
+  vec3 F = coneFormFactor(q00, q01, q02, q11, q12, q22, det_q, cc);
+  // A cone small next to the LTC's lobe (u^2 = pi t^2 peak < 1: its solid angle below the lobe's,
+  // the scale 1 / sqrt(pi peak) = alpha sqrt(a_x a_y)) has the form factor of its center
+  // direction: solid angle in cosine space (omega det(alpha M^-1) / |x|^3, x = alpha M^-1 cn) /
+  // pi along x, whose z is omega times the density at cn. There the eigenvalues above can lose
+  // all precision when the cone's image is thin and elongated (the lobe's far tail at roughness
+  // <= 0.1, lights of r/d <= 1e-3: |F| 1e5 times too large, a firefly of 1e4 x the point light's
+  // value, found by `halfvec stability`); the cone is replaced by that estimate when it exceeds
+  // it 4 times (a legitimate cone of that size deviates from it by a few %).
+  float omega = 2.0f * PI * t * t / (1.0f + t * t + sqrt(1.0f + t * t));  // 2 pi (1 - cos sigma)
+  float cc2 = max(dot(cc, cc), 1e-30f);
+  vec3 F_small = cc * (omega * l.det_inv * INV_PI / (cc2 * cc2));
+  bool garbage = PI * t * t * l.peak < 1.0f && dot(F, F) > 16.0f * dot(F_small, F_small);
+  return mix(F, F_small, bvec3(garbage));
+}
+
+// Integral of the LTC over the sphere light, clipped at the horizon in cosine space (the sphere-cap
+// approximation when the image straddles it); 1 inside the sphere, where the whole hemisphere
+// emits and the integral of the normalized lobe is 1 by construction.
+float ltcSphereIntegral(Ltc l, vec3 c, float r) {
+  float outside = horizonClippedIntegral(ltcSphereFormFactor(l, c, r));
+  return mix(outside, 1.0f, dot(c, c) <= r * r);  // a select (bool mix)
+}
+
+// ---- Capsule (tube light): the cylinder's silhouette plus the two end caps ----
+//
+// Seen from the shading point, the cylinder of radius r around the segment p1 p2 fills the wedge
+// between the two planes through the shading point tangent to it; between the planes through the
+// shading point perpendicular to the axis at p1 and p2 ("end lines") that wedge is exactly the
+// rectangle through the axis, facing the shading point (its width direction w is p1 x (p2 - p1),
+// the same along the whole axis), of half-width h = r D / sqrt(D^2 - r^2), D the distance from the
+// shading point to the axis line. That rectangle's integral is exact (Lambert's polygon formula in
+// cosine space); Heitz & Hill 2017's line light is its limit for h -> 0. Each end cap (a sphere)
+// adds the half of its disk beyond the end line: the disk's integral times the fraction of it
+// there, estimated from the density at the two half-disks' centroids (4/(3 pi) of the radius
+// either side of the end line; exact when the density varies linearly across the disk). The
+// capsule contains each end sphere, so the larger of the two disks alone is a lower bound that
+// takes over when the capsule is seen end-on (the rectangle then vanishes and the near cap hides
+// the rest). Vector form factors add; the sum is clipped at the horizon once.
+
+// The half-width vector w (|w| = h) of the facing rectangle of the segment p1 -> p2 seen from the
+// origin; 0 when seen end-on.
+vec3 capsuleHalfWidth(vec3 p1, vec3 p2, float r) {
+  vec3 a = p2 - p1;
+  vec3 pa = cross(p1, a);
+  float pa2 = dot(pa, pa);
+  // D^2 = |p1 x a|^2 / |a|^2; D^2 - r^2 >= 1e-8 D^2 (inside the cylinder the wedge is the whole
+  // half-space: h -> infinity, bounded here at 1e4 r).
+  float D2 = pa2 / max(dot(a, a), 1e-30f);
+  float h = r * sqrt(D2 / max(D2 - r * r, 1e-8f * D2 + 1e-30f));
+  return pa * (h * inversesqrt(max(pa2, 1e-30f)));
+}
+
+// Fraction of a cap's disk that lies beyond the end line, from the density `dout`, `din` at the
+// two half-disks' centroids; one half when both are 0.
+float capFraction(float dout, float din) {
+  return mix(0.5f, dout / max(dout + din, 1e-37f), step(1e-37f, dout + din));
+}
+
+// Offsets of the half-disk centroids from the cap center c (unit), toward the outside: the
+// component of the axis direction `a` perpendicular to c, scaled to 4/(3 pi) of the disk's radius
+// tan(sigma) (in the plane tangent at c).
+vec3 capCentroidOffset(vec3 c, vec3 a, float t) {
+  vec3 ap = a - c * dot(c, a);
+  return ap * (0.42441318f * t * inversesqrt(max(dot(ap, ap), 1e-30f)));
+}
+
+// Vector form factor (cosine space) of the capsule under the LTC l: segment p1 -> p2 relative to
+// the shading point (outside the capsule), radius r.
+vec3 ltcCapsuleFormFactor(Ltc l, vec3 p1, vec3 p2, float r) {
+  vec3 w = capsuleHalfWidth(p1, p2, r);
+  vec3 F = quadFormFactor(ltcToCosine(l, p1 + w), ltcToCosine(l, p2 + w), ltcToCosine(l, p2 - w),
+                          ltcToCosine(l, p1 - w));
+  vec3 mid = ltcToCosine(l, p1 + p2);
+  F = F * (2.0f * step(0.0f, dot(F, mid)) - 1.0f);  // the side seen from the origin
+  vec3 F1 = ltcSphereFormFactor(l, p1, r);
+  vec3 F2 = ltcSphereFormFactor(l, p2, r);
+  vec3 a = p2 - p1;
+  float d1 = dot(p1, p1);
+  float d2 = dot(p2, p2);
+  vec3 c1 = p1 * inversesqrt(max(d1, 1e-30f));
+  vec3 c2 = p2 * inversesqrt(max(d2, 1e-30f));
+  vec3 o1 = capCentroidOffset(c1, a, r * inversesqrt(max(d1 - r * r, 1e-30f)));
+  vec3 o2 = capCentroidOffset(c2, -a, r * inversesqrt(max(d2 - r * r, 1e-30f)));
+  float f1 = capFraction(ltcDensity(l, safeNormalize(c1 - o1)), ltcDensity(l, safeNormalize(c1 + o1)));
+  float f2 = capFraction(ltcDensity(l, safeNormalize(c2 - o2)), ltcDensity(l, safeNormalize(c2 + o2)));
+  F = F + F1 * f1 + F2 * f2;
+  // Seen end-on, the nearer cap alone is larger: the union is at least either end sphere.
+  vec3 Fnear = mix(F1, F2, bvec3(d2 < d1));
+  return mix(F, Fnear, bvec3(dot(F, F) < dot(Fnear, Fnear)));
+}
+
+// Integral of the LTC over the capsule, clipped at the horizon in cosine space.
+float ltcCapsuleIntegral(Ltc l, vec3 p1, vec3 p2, float r) {
+  return horizonClippedIntegral(ltcCapsuleFormFactor(l, p1, p2, r));
+}
+
+// The same with the identity LTC about N (the clamped cosine: irradiance / pi), in world space:
+// the caps' form factors are the sphere's closed form sin^2(sigma) times its direction, and the
+// rectangle's Lambert's formula directly.
+float capsuleCosineIntegral(vec3 N, vec3 p1, vec3 p2, float r) {
+  vec3 w = capsuleHalfWidth(p1, p2, r);
+  vec3 F = quadFormFactor(p1 + w, p2 + w, p2 - w, p1 - w);
+  F = F * (2.0f * step(0.0f, dot(F, p1 + p2)) - 1.0f);
+  vec3 a = p2 - p1;
+  float d1 = dot(p1, p1);
+  float d2 = dot(p2, p2);
+  vec3 c1 = p1 * inversesqrt(max(d1, 1e-30f));
+  vec3 c2 = p2 * inversesqrt(max(d2, 1e-30f));
+  // sin^2(sigma) = r^2 / d^2 (1 inside the sphere).
+  vec3 F1 = c1 * min(r * r / max(d1, 1e-30f), 1.0f);
+  vec3 F2 = c2 * min(r * r / max(d2, 1e-30f), 1.0f);
+  vec3 o1 = capCentroidOffset(c1, a, r * inversesqrt(max(d1 - r * r, 1e-30f)));
+  vec3 o2 = capCentroidOffset(c2, -a, r * inversesqrt(max(d2 - r * r, 1e-30f)));
+  float f1 = capFraction(max(dot(N, safeNormalize(c1 - o1)), 0.0f), max(dot(N, safeNormalize(c1 + o1)), 0.0f));
+  float f2 = capFraction(max(dot(N, safeNormalize(c2 - o2)), 0.0f), max(dot(N, safeNormalize(c2 + o2)), 0.0f));
+  F = F + F1 * f1 + F2 * f2;
+  vec3 Fnear = mix(F1, F2, bvec3(d2 < d1));
+  F = mix(F, Fnear, bvec3(dot(F, F) < dot(Fnear, Fnear)));
+  // horizonClippedIntegral in the frame whose z is N.
+  float f2n = dot(F, F);
+  float inv_f = inversesqrt(max(f2n, 1e-30f));
+  float f = min(f2n * inv_f, 1.0f);
+  return f * sphereHorizonFactor(dot(F, N) * inv_f, f);
+}
+
+#endif
