@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Renders every sample scene headless and writes docs/gallery.md (generated; do not edit by hand):
 #   - per sample, GPU ms per pass at 1280x720 (median of 5 frames after the environment bake),
+#     and every pass as a multiple of the floor pass (bench --frame),
 #   - a 480x270 image of each sample in docs/gallery/,
 #   - the default and gltf samples under the procedural sky and under every HDR in
 #     ../shared/assets/env (skipped, with the reason, when the assets are absent), with the
@@ -45,6 +46,18 @@ for scene in samples/scenes/*.json; do
   row "$name" "out/gallery/$name.txt" >> "$doc"
   $hv render "$scene" --size 480x270 --out "docs/gallery/$name.png" > /dev/null 2>&1
 done
+
+# Every pass as a multiple of the floor pass, all samples in one run (docs/performance.md).
+echo "[gallery] bench --frame" >&2
+$hv bench --frame --frames 5 --report out/gallery/frame_cost.md > out/gallery/frame_cost.txt 2>&1
+{
+  echo
+  echo "Each pass as a multiple of the *floor pass* (a compute pass that reads the G-buffer and"
+  echo "writes an HDR target) timed in the same frames, so that the machine's load cancels"
+  echo "(\`halfvec bench --frame --frames 5\`; emitter geometry and FXAA off):"
+  echo
+  cat out/gallery/frame_cost.md
+} >> "$doc"
 
 {
   echo
