@@ -690,24 +690,26 @@ from the tables below:
 
 All presets keep `sphere_normalization` and `tube_normalization` on: turning sphere
 normalization off gives by far the largest error on every scene with sphere lights except
-many_lights (where it is neutral), turning tube normalization off the largest on default. `accurate` keeps Schlick's V with the Disney remap rather than the exact
-configuration's height-correlated V without remap. On the sample scenes the relative RMSE is
-dominated by a few highlight pixels where the engine's representative-point sphere and tube
-specular is several times brighter than the reference (the roughness-0.05 spheres of
-sphere_grid, the helmet of gltf, the glossy floor of area_lights): the exact V and no remap make
-those highlights brighter still, and so does the inverse-square falloff. Hence `accurate` and
-`exact` have a higher relative RMSE than the scene's own settings on sphere_grid and gltf (and
-`exact` on area_lights), and a higher 99th-percentile error on area_lights; on default and
-many_lights both are lower. For the same reason the lowest-error rows of several tables are V
-terms that do not belong to GGX (`implicit`, `smith_beckmann_separable`, `cook_torrance`): they
-darken glossy highlights and so offset the overestimate, which is no reason to choose them. The
-`exact` row is the lowest only where such highlights do not dominate (the CI scene of
-tests/eval/test_trade.cpp).
+many_lights (where it is neutral); turning tube normalization off changes the sample scenes'
+error by about 1% either way, but on the accuracy sweeps (docs/accuracy.md) it makes thin tubes'
+highlights up to 120x too bright. `accurate` keeps Schlick's V with the Disney remap rather than
+the exact configuration's height-correlated V without remap. With the scene's own settings (and `fast` and
+`balanced`), the relative RMSE on the sample scenes is dominated by highlight pixels where the
+representative-point sphere and tube specular is several times brighter than the reference (the
+chrome spheres of default, the roughness-0.05 spheres of sphere_grid, the glossy floor of
+area_lights). `accurate`'s `ltc` methods remove most of that: its relative RMSE is below the
+scene's settings' on every sample scene (the "Measured" table). gltf barely moves: its error is
+carried by a few pixels of the helmet's smooth metal with a large absolute difference (the max abs
+column). With the representative point, rows whose terms darken glossy highlights can score a
+lower error by offsetting the overestimate, which is no reason to choose them.
 
-Times: on llvmpipe the spread between runs of one configuration is larger than any difference
-between configurations (compare the identical-cost rows `sphere_diffuse`, `culling`,
-`specular_occlusion` with `scene`): no preset is measurably faster here, and the presets' order of
-cost is the expected order of work (ALU and fetches per pixel), to be confirmed on a GPU.
+Times: the "x scene" column is each row's frame time over the scene row's, frame by frame within
+a round, with its 95% interval over one run's frames; "same cost" marks rows whose interval
+includes 1. On llvmpipe these verdicts are not stable from run to run for differences below about
+1.3x: two runs of this report disagreed on several rows (`fast` on area_lights: 0.85, 0.56-1.22,
+then 0.67, 0.50-0.77). `accurate` (its `ltc` light pass) was slower than the scene's settings in
+both runs on area_lights (1.78x, 1.51x) and many_lights (2.29x, 2.14x); `halfvec bench --methods`
+measures the `ltc` light pass alone.
 )";
 }
 
