@@ -27,9 +27,9 @@ constexpr size_t kMaxSceneFileBytes = size_t(64) << 20;
 // components index arrays, missing object keys are created; the value is parsed as JSON and
 // taken as a plain string when that fails. Relative glTF/HDR paths resolve against the scene
 // file's folder; "${VAR}" in paths expands environment variables (an unset one is an error,
-// except in a glTF object's path when the object has a "fallback"). Returns a complete Scene or throws
-// SceneError; warnings (a missing glTF replaced by its fallback, BLEND materials) go to stderr,
-// or to `warnings` when given.
+// except in a glTF object's path when the object has a "fallback"). Returns a complete Scene or
+// throws SceneError; warnings (a missing glTF replaced by its fallback, BLEND materials) go to
+// stderr, or to `warnings` when given.
 Scene loadScene(const std::string& path, const std::vector<std::string>& overrides = {},
                 std::vector<std::string>* warnings = nullptr);
 

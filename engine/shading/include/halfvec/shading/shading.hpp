@@ -1,10 +1,10 @@
 // The shared shading math, compiled as C++: every function in shaders/common/*.glsl is callable
 // here as hv::glsl::NAME. Term choices are the GLSL defaults (docs/brdf.md, docs/lights.md); for
-// run-time choice of BRDF terms use halfvec/shading/brdf.hpp. Code that needs other defines compiles
-// the headers again in its own namespace after resetting the include guards and option defines
-// (see tests/shading/test_lights_variant.cpp). The headers sit in an anonymous namespace, so the
-// functions have internal linkage; C++ functions taking their structs (Surface, GpuLight) must be
-// inline in a header.
+// run-time choice of BRDF terms use halfvec/shading/brdf.hpp. Code that needs other defines
+// compiles the headers again in its own namespace after resetting the include guards and option
+// defines (see tests/shading/test_lights_variant.cpp). The headers sit in an anonymous namespace,
+// so the functions have internal linkage; C++ functions taking their structs (Surface, GpuLight)
+// must be inline in a header.
 #pragma once
 
 #include "halfvec/shading/glsl.hpp"
