@@ -300,6 +300,28 @@ bool SphereSweepRow::above() const {
   return double(elevation_deg) >= std::asin(std::min(double(radius), 1.0)) * 180.0 / kPi;
 }
 
+namespace {
+
+// The error of every diffuse method (`dm`) and specular method (`sm`) of the engine at `views`
+// against the references of its own BRDF terms; appended to `diffuse` and `specular`.
+void methodErrors(const std::vector<LightMethod>& dm, const std::vector<LightMethod>& sm,
+                  const References& ref, const Light& light, const std::vector<glm::vec3>& views,
+                  float roughness, std::vector<TermError>& diffuse,
+                  std::vector<TermError>& specular) {
+  for (const LightMethod& m : dm) {
+    const ViewValues& r = ref.at(m.o);
+    diffuse.push_back(termError(engineAtViews(m.o, LightTerm::Diffuse, light, views, roughness),
+                                r.ref_d, r.ref_d_se));
+  }
+  for (const LightMethod& m : sm) {
+    const ViewValues& r = ref.at(m.o);
+    specular.push_back(termError(engineAtViews(m.o, LightTerm::Specular, light, views, roughness),
+                                 r.ref_s, r.ref_s_se));
+  }
+}
+
+}  // namespace
+
 std::vector<SphereSweepRow> sweepSphere(const SphereSweepGrid& g) {
   std::vector<SphereSweepRow> rows;
   for (float r : g.roughness)
@@ -323,18 +345,7 @@ std::vector<SphereSweepRow> sweepSphere(const SphereSweepGrid& g) {
     const auto views = sweepViews(dir, 2.0f * alpha + std::asin(std::min(row.radius, 1.0f)));
     const References ref = referencesAtViews(light, views, row.roughness, g.samples,
                                              g.seed + uint64_t(i) * 1000003ull, sm);
-    for (const LightMethod& m : dm) {
-      const ViewValues& r = ref.at(m.o);
-      row.diffuse.push_back(
-          termError(engineAtViews(m.o, LightTerm::Diffuse, light, views, row.roughness), r.ref_d,
-                    r.ref_d_se));
-    }
-    for (const LightMethod& m : sm) {
-      const ViewValues& r = ref.at(m.o);
-      row.specular.push_back(
-          termError(engineAtViews(m.o, LightTerm::Specular, light, views, row.roughness), r.ref_s,
-                    r.ref_s_se));
-    }
+    methodErrors(dm, sm, ref, light, views, row.roughness, row.diffuse, row.specular);
   });
   return rows;
 }
@@ -368,18 +379,7 @@ std::vector<TubeSweepRow> sweepTube(const TubeSweepGrid& g) {
     const auto views = sweepViews(dir, 2.0f * alpha + half_extent);
     const References ref = referencesAtViews(light, views, row.roughness, g.samples,
                                              g.seed + uint64_t(i) * 1000003ull, sm);
-    for (const LightMethod& m : dm) {
-      const ViewValues& r = ref.at(m.o);
-      row.diffuse.push_back(
-          termError(engineAtViews(m.o, LightTerm::Diffuse, light, views, row.roughness), r.ref_d,
-                    r.ref_d_se));
-    }
-    for (const LightMethod& m : sm) {
-      const ViewValues& r = ref.at(m.o);
-      row.specular.push_back(
-          termError(engineAtViews(m.o, LightTerm::Specular, light, views, row.roughness), r.ref_s,
-                    r.ref_s_se));
-    }
+    methodErrors(dm, sm, ref, light, views, row.roughness, row.diffuse, row.specular);
   });
   return rows;
 }
