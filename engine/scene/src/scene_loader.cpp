@@ -43,7 +43,9 @@ std::string didYouMean(std::string_view s, std::span<const std::string_view> can
 }
 
 std::string shortDump(const json& j) {
-  std::string s = j.dump();
+  // error_handler_t::replace: a string from a --set value need not be UTF-8 (a file's is
+  // checked by the parser); the default handler would throw from inside an error message.
+  std::string s = j.dump(-1, ' ', false, json::error_handler_t::replace);
   if (s.size() > 60) s = s.substr(0, 57) + "...";
   return s;
 }
