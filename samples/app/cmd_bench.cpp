@@ -294,7 +294,7 @@ void benchTargets(const BenchArgs& b, const std::vector<std::pair<int, Result>>&
   std::printf("speedup (brute light ms / tiled cull+light ms): %.1fx\n", speedup);
 
   // The issue's three performance targets, checked on the numbers above.
-  std::printf("\ntargets (issue \"Light pass\", Performance)\n");
+  std::printf("\ntargets (docs/performance.md)\n");
   std::printf("%-52s %10s %10s  %s\n", "check", "target", "measured", "result");
   auto check = [](const char* what, const char* target, double measured, bool met) {
     std::printf("%-52s %10s %10.2f  %s\n", what, target, measured, met ? "met" : "MISSED");
