@@ -112,6 +112,15 @@ void parseSize(const std::string& v, int& w, int& h) {
   w = pw, h = ph;
 }
 
+int positiveInt(const std::string& option, const std::string& v) {
+  char* end = nullptr;
+  const long n = std::strtol(v.c_str(), &end, 10);
+  if (!end || *end || n < 1 || n > 1000000) {
+    throw UsageError{option + " expects a positive integer, got '" + v + "'"};
+  }
+  return int(n);
+}
+
 std::string optionValue(const Args& args, size_t& i) {
   if (i + 1 >= args.size()) throw UsageError{args[i] + " needs a value"};
   return args[++i];

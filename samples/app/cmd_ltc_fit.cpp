@@ -44,12 +44,6 @@ struct Options {
   float cell_roughness = 0.5f, cell_nov = 0.5f;
 };
 
-int positive(const std::string& opt, const std::string& v) {
-  const int n = std::atoi(v.c_str());
-  if (n <= 0) throw UsageError{opt + " expects a positive count, got '" + v + "'"};
-  return n;
-}
-
 Options parseArgs(const Args& args) {
   Options o;
   for (size_t i = 0; i < args.size(); ++i) {
@@ -57,19 +51,19 @@ Options parseArgs(const Args& args) {
     if (a == "--out") {
       o.out = optionValue(args, i);
     } else if (a == "--size") {
-      o.fit.size = positive(a, optionValue(args, i));
+      o.fit.size = positiveInt(a, optionValue(args, i));
       if (o.fit.size < 2) throw UsageError{"--size expects at least 2"};
     } else if (a == "--fit-samples") {
-      o.fit.fit_samples = positive(a, optionValue(args, i));
+      o.fit.fit_samples = positiveInt(a, optionValue(args, i));
     } else if (a == "--moment-samples") {
-      o.fit.moment_samples = positive(a, optionValue(args, i));
+      o.fit.moment_samples = positiveInt(a, optionValue(args, i));
     } else if (a == "--power") {
       o.fit.error_power = std::atof(optionValue(args, i).c_str());
       if (!(o.fit.error_power >= 1.0 && o.fit.error_power <= 8.0)) {
         throw UsageError{"--power expects a number in [1, 8]"};
       }
     } else if (a == "--threads") {
-      o.fit.threads = positive(a, optionValue(args, i));
+      o.fit.threads = positiveInt(a, optionValue(args, i));
     } else if (a == "--cache") {
       o.cache = optionValue(args, i);
     } else if (a == "--cell") {

@@ -147,15 +147,6 @@ struct TradeArgs {
   bool size_given = false, help = false;
 };
 
-int positiveInt(const std::string& option, const std::string& v) {
-  char* end = nullptr;
-  const long n = std::strtol(v.c_str(), &end, 10);
-  if (!end || *end || n < 1 || n > 1000000) {
-    throw UsageError{option + " expects a positive integer, got '" + v + "'"};
-  }
-  return int(n);
-}
-
 double positiveNumber(const std::string& option, const std::string& v) {
   char* end = nullptr;
   const double x = std::strtod(v.c_str(), &end);

@@ -51,6 +51,10 @@ struct UsageError {
 // the option is the last argument.
 std::string optionValue(const Args& args, size_t& i);
 
+// `v` as an integer in 1..1000000, all of it digits; else UsageError "<option> expects a positive
+// integer, got '<v>'".
+int positiveInt(const std::string& option, const std::string& v);
+
 // A positional argument of a command that takes one scene file: stores it in `scene`; throws
 // UsageError for an unknown option (a leading '-') or a second scene file.
 void takeScenePath(const std::string& arg, std::string& scene);
