@@ -162,8 +162,10 @@ TEST_F(ViewerWindow, SidebarCoversAtMostAQuarterOfA1280x720Window) {
   const std::string a_png = tmpPath("hv_ux_a_", ".png"), b_png = tmpPath("hv_ux_b_", ".png");
   const std::string base = "DISPLAY=" + server->display() + " '" + exe + "' view '" +
                            sample("default.json") + "' --size 1280x720 --frames 2 ";
-  ASSERT_EQ(run(base + "--screenshot '" + a_png + "'").first, 0);
-  ASSERT_EQ(run(base + "--set settings.exposure=2 --screenshot '" + b_png + "'").first, 0);
+  const auto ra = run(base + "--screenshot '" + a_png + "'");
+  ASSERT_EQ(ra.first, 0) << ra.second;
+  const auto rb = run(base + "--set settings.exposure=2 --screenshot '" + b_png + "'");
+  ASSERT_EQ(rb.first, 0) << rb.second;
   const hv::ImageRGBA8 a = hv::readPng(a_png), b = hv::readPng(b_png);
   ASSERT_EQ(a.px.size(), b.px.size());
   size_t same = 0;
