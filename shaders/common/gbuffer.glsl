@@ -1,6 +1,7 @@
 // G-buffer layout and encodings, shared by the passes and the C++ tests (docs/gbuffer.md).
 //   RT0 RGBA8 sRGB : BaseColor.rgb (sRGB-encoded by the hardware), Cavity (linear alpha)
-//   RT1 RGBA8      : Metallic, Roughness (perceptual), shading-model ID / 255, unused
+//   RT1 RGBA8      : Metallic, Roughness high byte, shading-model ID / 255, Roughness low byte
+//                    (perceptual roughness in 16 bits: encodeRoughness16, docs/gbuffer.md)
 //   RT2 RG16 snorm : octahedral normal (world space)
 //   depth 32F      : reversed-Z depth; world position is reconstructed from it
 // 16 bytes per pixel including depth. Emissive goes straight into the HDR target.
@@ -44,6 +45,24 @@ vec3 octDecode(vec2 e) {
 // The snorm16 quantization the RG16_SNORM target applies (GL 4.5 spec eq. 2.3), for CPU tests.
 float quantizeSnorm16(float x) { return round(clamp(x, -1.0f, 1.0f) * 32767.0f) / 32767.0f; }
 float quantizeUnorm10(float x) { return round(clamp(x, 0.0f, 1.0f) * 1023.0f) / 1023.0f; }
+// The unorm8 quantization of an 8-bit target channel (GL 4.5 spec eq. 2.3, rounded to nearest).
+float quantizeUnorm8(float x) { return round(clamp(x, 0.0f, 1.0f) * 255.0f) / 255.0f; }
+
+// Perceptual roughness in 16 bits, split over two unorm8 channels of RT1 (high byte, low byte).
+// One 8-bit code moves the GGX highlight peak (1 / (pi alpha^2), alpha = roughness^2: 4x the
+// relative roughness step) by up to 17% at the minimum roughness 0.045 and 8% at 0.1; 16 bits
+// keep it below 0.07% over 0.045-1 (measured in tests/shading/test_gbuffer_encoding.cpp,
+// docs/gbuffer.md). Each byte is written as k / 255, which the unorm8 target stores exactly.
+vec2 encodeRoughness16(float roughness) {
+  float q = round(clamp(roughness, 0.0f, 1.0f) * 65535.0f);
+  float high = floor(q / 256.0f);
+  return vec2(high / 255.0f, (q - high * 256.0f) / 255.0f);
+}
+
+// `e` = (high, low) as read back from the unorm8 channels.
+float decodeRoughness16(vec2 e) {
+  return (round(e.x * 255.0f) * 256.0f + round(e.y * 255.0f)) / 65535.0f;
+}
 
 // Reversed-Z perspective: depth 1 at the near plane, 0 at infinity (precision of 32F depth is
 // then nearly uniform in log distance). The position comes from the inverse view-projection.

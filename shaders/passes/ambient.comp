@@ -85,7 +85,7 @@ void main() {
   vec4 bc = texelFetch(t_base_cavity, px, 0);
   vec3 N = octDecode(texelFetch(t_normal, px, 0).xy);
   vec3 V = -ray;
-  Surface s = makeSurface(N, bc.rgb, mat.r, mat.g, bc.a);
+  Surface s = makeSurface(N, bc.rgb, mat.r, decodeRoughness16(mat.ga), bc.a);
   // N.V clamped away from 0: at grazing angles the table's first column is the limit anyway.
   float NoV = clamp(dot(N, V), 1e-4, 1.0);
   vec3 R = reflect(-V, N);

@@ -27,7 +27,7 @@ void main() {
   switch (u_counts.z) {
     case 1u: c = pow(bc.rgb, vec3(1.0 / 2.2)); break;  // base color, display-encoded
     case 2u: c = vec3(mat.r); break;
-    case 3u: c = vec3(mat.g); break;
+    case 3u: c = vec3(decodeRoughness16(mat.ga)); break;
     case 4u: c = vec3(bc.a); break;
     case 5u: c = model == HV_MODEL_BACKGROUND ? vec3(0.0)
                                               : octDecode(texelFetch(t_normal, px, 0).xy) * 0.5 + 0.5; break;

@@ -24,7 +24,7 @@ layout(location = 3) in vec2 v_uv1;
 #endif
 
 layout(location = 0) out vec4 o_base_cavity;  // SRGB8_ALPHA8
-layout(location = 1) out vec4 o_material;     // RGBA8
+layout(location = 1) out vec4 o_material;     // RGBA8: metallic, roughness high, model, roughness low
 layout(location = 2) out vec2 o_normal;       // RG16_SNORM
 layout(location = 3) out vec4 o_hdr;          // RGBA16F
 
@@ -101,7 +101,8 @@ void main() {
 #endif
 
   o_base_cavity = vec4(clamp(base.rgb, 0.0, 1.0), clamp(cavity, 0.0, 1.0));
-  o_material = vec4(clamp(metallic, 0.0, 1.0), clamp(roughness, 0.0, 1.0), float(m.flags.z) / 255.0, 0.0);
+  vec2 roughness16 = encodeRoughness16(roughness);
+  o_material = vec4(clamp(metallic, 0.0, 1.0), roughness16.x, float(m.flags.z) / 255.0, roughness16.y);
   o_normal = octEncode(n);
   o_hdr = vec4(emissive, 0.0);
 }

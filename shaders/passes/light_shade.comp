@@ -115,7 +115,7 @@ void main() {
     float depth = texelFetch(t_depth, px, 0).r;
     vec2 uv = (vec2(px) + 0.5) / vec2(u_viewport.xy);
     vec3 P = reconstructWorldPosition(uv, depth, u_inv_view_proj);
-    s[j] = makeSurface(N, bc.rgb, mat.r, mat.g, bc.a);
+    s[j] = makeSurface(N, bc.rgb, mat.r, decodeRoughness16(mat.ga), bc.a);
     sp[j] = makeShadingPoint(s[j], P, normalize(u_camera_pos.xyz - P));
   }
   if (!any_lit) return;

@@ -375,7 +375,7 @@ GBufferReadback Renderer::readGBuffer() const {
                        srgbDecode(base[4 * i + 2])};
     g.cavity[i] = base[4 * i + 3] / 255.0f;  // alpha of an sRGB format is linear
     g.metallic[i] = mat[4 * i];
-    g.roughness[i] = mat[4 * i + 1];
+    g.roughness[i] = glsl::decodeRoughness16(glsl::vec2(mat[4 * i + 1], mat[4 * i + 3]));
     g.model[i] = static_cast<uint32_t>(mat[4 * i + 2] * 255.0f + 0.5f);
     g.normal[i] = glsl::octDecode(glsl::vec2(nrm[2 * i], nrm[2 * i + 1]));
   }

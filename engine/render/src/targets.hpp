@@ -10,7 +10,7 @@ namespace hv::render {
 struct Renderer::Targets {
   int width = 0, height = 0;
   gl::Texture base_cavity;  // SRGB8_ALPHA8
-  gl::Texture material;     // RGBA8: metallic, roughness, model id
+  gl::Texture material;     // RGBA8: metallic, roughness high byte, model id, roughness low byte
   gl::Texture normal;       // RG16_SNORM octahedral
   gl::Texture depth;        // DEPTH_COMPONENT32F reversed Z
   gl::Texture hdr;          // RGBA16F accumulation
