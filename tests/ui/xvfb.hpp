@@ -1,8 +1,9 @@
-// Xvfb for the viewer's window tests: a server per test on the first free display from :90.
+// Xvfb for the viewer's window tests: a server per test, on a display the server picks.
 #pragma once
 
 #include <gtest/gtest.h>
 
+#include <poll.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -36,38 +37,48 @@ inline std::string findXvfb() {
   return {};
 }
 
-// Starts Xvfb on the first free display from :90; stops it on destruction.
+// Starts Xvfb on a free display and stops it on destruction. The server picks the display itself
+// (`-displayfd`: it takes the display's lock atomically and writes the number it got to the pipe),
+// so two tests starting servers at the same time (ctest -j2) never share one. Choosing the number
+// here from the lock files raced: both tests could see :90 free, one server then failed, and its
+// test ran its viewer on the other test's server, which could be stopped under it (the likely
+// cause of a viewer test that exited 1, rarely, under ctest -j2).
 class Xvfb {
  public:
   explicit Xvfb(const std::string& exe) {
-    for (int d = 90; d < 140; ++d) {
-      if (std::filesystem::exists(numbered("/tmp/.X11-unix/X", d)) ||
-          std::filesystem::exists(numbered("/tmp/.X", d, "-lock"))) {
-        continue;
-      }
-      const std::string disp = numbered(":", d);
-      pid_ = fork();
-      if (pid_ == 0) {
-        std::freopen("/dev/null", "w", stdout);
-        std::freopen("/dev/null", "w", stderr);
-        execl(exe.c_str(), exe.c_str(), disp.c_str(), "-screen", "0", "1280x1024x24", "-nolisten",
-              "tcp", static_cast<char*>(nullptr));
-        _exit(127);
-      }
-      for (int i = 0; i < 100; ++i) {  // up to 10 s for the socket
-        if (std::filesystem::exists(numbered("/tmp/.X11-unix/X", d))) {
-          display_ = disp;
-          return;
-        }
-        int status = 0;
-        if (waitpid(pid_, &status, WNOHANG) == pid_) {  // died (display taken meanwhile?)
-          pid_ = -1;
-          break;
-        }
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));
-      }
-      stop();
+    int fds[2];
+    if (pipe(fds) != 0) return;
+    pid_ = fork();
+    if (pid_ == 0) {
+      close(fds[0]);
+      std::freopen("/dev/null", "w", stdout);
+      std::freopen("/dev/null", "w", stderr);
+      const std::string fd = std::to_string(fds[1]);
+      execl(exe.c_str(), exe.c_str(), "-displayfd", fd.c_str(), "-screen", "0", "1280x1024x24",
+            "-nolisten", "tcp", static_cast<char*>(nullptr));
+      _exit(127);
     }
+    close(fds[1]);
+    if (pid_ < 0) {
+      close(fds[0]);
+      return;
+    }
+    // Up to 10 s for the display number ("N\n"); EOF when the server died.
+    std::string number;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (std::chrono::steady_clock::now() < deadline) {
+      pollfd p{fds[0], POLLIN, 0};
+      if (poll(&p, 1, 100) <= 0) continue;
+      char c = 0;
+      if (read(fds[0], &c, 1) != 1) break;
+      if (c == '\n') {
+        if (!number.empty()) display_ = ":" + number;
+        break;
+      }
+      number += c;
+    }
+    close(fds[0]);
+    if (display_.empty()) stop();
   }
   ~Xvfb() { stop(); }
   const std::string& display() const { return display_; }
