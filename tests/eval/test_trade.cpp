@@ -156,6 +156,41 @@ TEST(Trade, TinySceneRowsAreConsistent) {
     // One round of one frame: the one ratio is the rows' frame times' ratio.
     EXPECT_NEAR(row.cost_ratio, row.total_ms / r.rows.front().total_ms, 1e-9) << row.config.name;
   }
+  // The per-pass cost axis: each option timed on the passes it changes. One frame: the ratio of
+  // those passes' times (their sum for culling); presets and exact: the frame's.
+  auto passMs = [](const hv::eval::TradeRow& row, const std::string& p) {
+    for (const auto& [name, ms] : row.pass_ms)
+      if (name == p) return ms;
+    return 0.0;  // not run (brute force has no culling pass)
+  };
+  const auto& scene_row = r.rows.front();
+  bool saw_light = false, saw_ambient = false, saw_culling = false, saw_frame = false;
+  for (size_t k = 1; k < r.rows.size(); ++k) {
+    const auto& row = r.rows[k];
+    const std::string& g = row.config.group;
+    EXPECT_EQ(row.cost_passes, hv::eval::costPasses(g)) << row.config.name;
+    EXPECT_EQ(row.pass_same_cost, row.pass_cost_lo <= 1.0 && 1.0 <= row.pass_cost_hi);
+    double mine = 0.0, theirs = 0.0;
+    for (const std::string& p : row.cost_passes) {
+      mine += passMs(row, p);
+      theirs += passMs(scene_row, p);
+    }
+    if (row.cost_passes.empty()) {
+      saw_frame = true;
+      EXPECT_EQ(row.pass_cost_ratio, row.cost_ratio) << row.config.name;
+    } else {
+      EXPECT_NEAR(row.pass_cost_ratio, mine / theirs, 1e-9) << row.config.name;
+    }
+    saw_light |= g == "brdf" || g == "lights";
+    saw_ambient |= g == "environment";
+    saw_culling |= g == "culling";
+  }
+  EXPECT_TRUE(saw_light && saw_ambient && saw_culling && saw_frame);
+  EXPECT_EQ(hv::eval::costPasses("lights"), std::vector<std::string>{"light"});
+  EXPECT_EQ(hv::eval::costPasses("environment"), std::vector<std::string>{"ambient"});
+  EXPECT_EQ(hv::eval::costPasses("culling"), (std::vector<std::string>{"light_cull", "light"}));
+  EXPECT_TRUE(hv::eval::costPasses("preset").empty());
+
   // The scene row against itself: exactly 1 in every frame.
   EXPECT_EQ(r.rows.front().cost_ratio, 1.0);
   EXPECT_EQ(r.rows.front().cost_lo, 1.0);

@@ -451,7 +451,41 @@ void timeConfig(render::Renderer& renderer, Scene& work, const TradeConfig& cfg,
     }
   }
 }
+
+// Per-frame ratio of row k's time over the scene row's (same round and frame index), summed over
+// `passes` (empty: the frame total), with its median and 95% interval.
+MedianInterval costRatio(const ConfigTimes& row, const ConfigTimes& scene,
+                         const std::vector<std::string>& passes) {
+  auto frameMs = [&](const ConfigTimes& t, size_t i, bool& ok) {
+    if (passes.empty()) return t.totals[i];
+    double sum = 0.0;
+    for (const std::string& p : passes) {
+      const auto it = t.per_pass.find(p);
+      if (it == t.per_pass.end()) continue;  // a pass this configuration does not run: 0 ms
+      if (i >= it->second.size()) {
+        ok = false;
+        return 0.0;
+      }
+      sum += it->second[i];
+    }
+    return sum;
+  };
+  std::vector<double> ratios;
+  for (size_t i = 0; i < std::min(row.totals.size(), scene.totals.size()); ++i) {
+    bool ok = true;
+    const double a = frameMs(row, i, ok), b = frameMs(scene, i, ok);
+    if (ok && b > 0.0) ratios.push_back(a / b);
+  }
+  return medianInterval(ratios);
+}
 }  // namespace
+
+std::vector<std::string> costPasses(const std::string& group) {
+  if (group == "brdf" || group == "lights") return {"light"};
+  if (group == "culling") return {"light_cull", "light"};
+  if (group == "environment") return {"ambient"};
+  return {};
+}
 
 TradeReport runTrade(const Scene& scene, const TradeOptions& opt) {
   const Say say = [&](const std::string& s) {
@@ -496,15 +530,23 @@ TradeReport runTrade(const Scene& scene, const TradeOptions& opt) {
   }
   for (size_t k = 0; k < rep.rows.size(); ++k) {
     rep.rows[k].total_ms = median(times[k].totals);
-    std::vector<double> ratios;  // frame by frame against the scene row, same round and index
-    for (size_t i = 0; i < std::min(times[k].totals.size(), times[0].totals.size()); ++i) {
-      if (times[0].totals[i] > 0.0) ratios.push_back(times[k].totals[i] / times[0].totals[i]);
-    }
-    const MedianInterval cost = medianInterval(ratios);
+    const MedianInterval cost = costRatio(times[k], times[0], {});  // frame by frame
     rep.rows[k].cost_ratio = cost.median;
     rep.rows[k].cost_lo = cost.lo;
     rep.rows[k].cost_hi = cost.hi;
     rep.rows[k].same_cost = cost.contains(1.0);
+    std::vector<std::string> passes = costPasses(rep.rows[k].config.group);
+    // A pass one of the two rows does not run counts 0 ms there (brute-force culling has no
+    // culling pass); one that neither runs is left out.
+    std::erase_if(passes, [&](const std::string& p) {
+      return !times[k].per_pass.count(p) && !times[0].per_pass.count(p);
+    });
+    const MedianInterval pass_cost = passes.empty() ? cost : costRatio(times[k], times[0], passes);
+    rep.rows[k].cost_passes = passes;
+    rep.rows[k].pass_cost_ratio = pass_cost.median;
+    rep.rows[k].pass_cost_lo = pass_cost.lo;
+    rep.rows[k].pass_cost_hi = pass_cost.hi;
+    rep.rows[k].pass_same_cost = pass_cost.contains(1.0);
     for (const std::string& p : times[k].order)
       rep.rows[k].pass_ms.push_back({p, median(times[k].per_pass[p])});
     const TradeConfig& c = rep.rows[k].config;
@@ -560,7 +602,8 @@ std::string tradeCsv(const TradeReport& r) {
   o << "scene,configuration,aliases,group";
   for (const auto& p : passes) o << "," << p << "_ms";
   o << ",total_ms,rel_rmse,bias_rel_rmse,p99_rel,max_abs,rmse,within_noise,pareto,"
-       "nonfinite_pixels,cost_ratio,cost_lo,cost_hi,same_cost\n";
+       "nonfinite_pixels,cost_ratio,cost_lo,cost_hi,same_cost,cost_passes,pass_cost_ratio,"
+       "pass_cost_lo,pass_cost_hi,pass_same_cost\n";
   for (const TradeRow& row : r.rows) {
     std::string aliases;
     for (const auto& a : row.config.aliases) aliases += (aliases.empty() ? "" : ";") + a;
@@ -572,7 +615,12 @@ std::string tradeCsv(const TradeReport& r) {
       << fmtNum(row.error.max_abs, "%.6g") << "," << fmtNum(row.error.rmse, "%.6g") << ","
       << (row.within_noise ? 1 : 0) << "," << (row.pareto ? 1 : 0) << "," << row.nonfinite << ","
       << fmtNum(row.cost_ratio, "%.4f") << "," << fmtNum(row.cost_lo, "%.4f") << ","
-      << fmtNum(row.cost_hi, "%.4f") << "," << (row.same_cost ? 1 : 0) << "\n";
+      << fmtNum(row.cost_hi, "%.4f") << "," << (row.same_cost ? 1 : 0) << ",";
+    std::string cost_passes;
+    for (const auto& p : row.cost_passes) cost_passes += (cost_passes.empty() ? "" : ";") + p;
+    o << csvField(cost_passes) << "," << fmtNum(row.pass_cost_ratio, "%.4f") << ","
+      << fmtNum(row.pass_cost_lo, "%.4f") << "," << fmtNum(row.pass_cost_hi, "%.4f") << ","
+      << (row.pass_same_cost ? 1 : 0) << "\n";
   }
   return o.str();
 }
@@ -585,7 +633,10 @@ std::string tradeMarkdown(const TradeReport& r, const std::string& prefix, int l
     << r.rounds << " rounds over all configurations of " << r.frames
     << " frames after a warm-up frame); x scene: the median over those frames of the row's frame "
        "time / the scene row's of the same round and frame, with its 95% interval (\"same cost\" "
-       "where it includes 1). Reference: "
+       "where it includes 1); its passes x scene: the same for the passes the option changes (the "
+       "light pass for BRDF and light options, light culling and the light pass for culling, the "
+       "ambient pass for environment options; \"frame\" for presets and exact), free of the "
+       "other passes' noise. Reference: "
     << r.samples << " samples per pixel over " << (r.lit_pixels + r.unconverged_pixels)
     << " lit pixels"
     << (r.reference_cached ? " (read from the cache; computed in " : " (computed in ")
@@ -600,9 +651,10 @@ std::string tradeMarkdown(const TradeReport& r, const std::string& prefix, int l
   const auto passes = passNames(r);
   o << "| configuration |";
   for (const auto& p : passes) o << " " << p << " ms |";
-  o << " total ms | x scene (95%) | rel. RMSE | bias | p99 rel. | max abs | |\n|---|";
+  o << " total ms | x scene (95%) | its passes x scene (95%) | rel. RMSE | bias | p99 rel. | max "
+       "abs | |\n|---|";
   for (size_t i = 0; i < passes.size(); ++i) o << "---:|";
-  o << "---:|---:|---:|---:|---:|---:|---|\n";
+  o << "---:|---:|---:|---:|---:|---:|---:|---|\n";
   for (size_t i = 0; i < r.rows.size(); ++i) {
     const TradeRow& row = r.rows[i];
     std::string name = "`" + row.config.name + "`";
@@ -620,7 +672,17 @@ std::string tradeMarkdown(const TradeReport& r, const std::string& prefix, int l
         i == 0 ? std::string("1")
                : fmtNum(row.cost_ratio, "%.2f") + " (" + fmtNum(row.cost_lo, "%.2f") + "-" +
                      fmtNum(row.cost_hi, "%.2f") + ")" + (row.same_cost ? " same cost" : "");
-    o << " " << fmtNum(row.total_ms, "%.3f") << " | " << cost << " | "
+    std::string pass_cost = "frame";
+    if (i == 0) {
+      pass_cost = "1";
+    } else if (!row.cost_passes.empty()) {
+      pass_cost.clear();
+      for (const std::string& p : row.cost_passes) pass_cost += (pass_cost.empty() ? "" : "+") + p;
+      pass_cost += " " + fmtNum(row.pass_cost_ratio, "%.2f") + " (" +
+                   fmtNum(row.pass_cost_lo, "%.2f") + "-" + fmtNum(row.pass_cost_hi, "%.2f") + ")" +
+                   (row.pass_same_cost ? " same cost" : "");
+    }
+    o << " " << fmtNum(row.total_ms, "%.3f") << " | " << cost << " | " << pass_cost << " | "
       << fmtNum(row.error.rel_rmse, "%.4f") << " | " << fmtNum(row.bias_rel_rmse, "%.4f") << " | "
       << fmtNum(row.error.p99_rel, "%.4f") << " | " << fmtNum(row.error.max_abs, "%.3g") << " | "
       << flags << " |\n";

@@ -54,6 +54,11 @@ struct TradePlan {
 // accurate light and environment methods. Identical configurations are merged (aliases).
 TradePlan tradePlan(const Scene& scene, int max_brute_force_lights = 64);
 
+// The GPU passes (FrameStats pass names) whose work a configuration group changes: "brdf" and
+// "lights": {"light"}; "culling": {"light_cull", "light"}; "environment": {"ambient"}; others
+// (scene, preset, exact): none, i.e. the whole frame.
+std::vector<std::string> costPasses(const std::string& group);
+
 struct TradeRow {
   TradeConfig config;
   std::vector<std::pair<std::string, double>> pass_ms;  // median GPU ms per pass, in pass order
@@ -63,6 +68,13 @@ struct TradeRow {
   // distribution-free 95% interval (eval::medianInterval); `same_cost` when it includes 1.
   double cost_ratio = 1.0, cost_lo = 1.0, cost_hi = 1.0;
   bool same_cost = true;
+  // The same for the passes the option changes (costPasses of its group: the light pass for BRDF
+  // and light options, light culling + the light pass for culling, the ambient pass for the
+  // environment options), summed per frame: the part of the frame the option can change, free of
+  // the other passes' noise. Empty `cost_passes` (the scene row, presets, exact): the frame.
+  std::vector<std::string> cost_passes;
+  double pass_cost_ratio = 1.0, pass_cost_lo = 1.0, pass_cost_hi = 1.0;
+  bool pass_same_cost = true;
   ErrorMetrics error;          // engine HDR image vs the reference, over lit pixels
   double bias_rel_rmse = 0.0;  // sqrt(max(rmse^2 - noise_rmse^2, 0)) / mean |reference|
   bool within_noise = false;   // error.rel_rmse <= kNoiseFactor * TradeReport::noise_rel_rmse
