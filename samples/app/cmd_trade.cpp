@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "app/commands.hpp"
+#include "halfvec/core/output_files.hpp"
 #include "halfvec/eval/trade.hpp"
 #include "halfvec/image/image.hpp"
 #include "halfvec/platform/context.hpp"
@@ -107,7 +108,9 @@ void writeDoc(const std::string& file, const std::string& command, const std::st
                 double(opt.heatmap_max));
   o << "# Speed/accuracy trade report\n\n" << intro << "\nRenderer: " << renderer << ".\n\n";
   o << "## Presets\n\n" << eval::presetRationale() << "\n";
-  o << "Measured (total GPU ms / relative RMSE against the exact reference):\n\n";
+  o << "Measured (scene's settings: total GPU ms / relative RMSE against the exact reference; "
+       "presets and exact: frame time x the scene's settings' with its 95% interval, \"same\" "
+       "where it includes 1 / relative RMSE):\n\n";
   o << "| scene | size | scene's settings | fast | balanced | accurate | exact |\n";
   o << "|---|---|---:|---:|---:|---:|---:|\n";
   for (const SceneRun& run : runs) {
@@ -117,9 +120,15 @@ void writeDoc(const std::string& file, const std::string& command, const std::st
         bool match = row.config.name == name;
         for (const auto& a : row.config.aliases) match |= a == name;
         if (!match) continue;
-        char buf[96];
-        std::snprintf(buf, sizeof buf, "%.3f ms / %.4f%s", row.total_ms, row.error.rel_rmse,
-                      row.within_noise ? " ~" : "");
+        char buf[128];
+        if (name == "scene") {
+          std::snprintf(buf, sizeof buf, "%.1f ms / %.4f%s", row.total_ms, row.error.rel_rmse,
+                        row.within_noise ? " ~" : "");
+        } else {
+          std::snprintf(buf, sizeof buf, "%.2fx (%.2f-%.2f)%s / %.4f%s", row.cost_ratio,
+                        row.cost_lo, row.cost_hi, row.same_cost ? " same" : "", row.error.rel_rmse,
+                        row.within_noise ? " ~" : "");
+        }
         return buf;
       }
       return "-";
@@ -136,7 +145,7 @@ void writeDoc(const std::string& file, const std::string& command, const std::st
     o << eval::tradeMarkdown(run.report, prefix, 2) << "\n";
   }
   if (fs::absolute(file).has_parent_path()) fs::create_directories(doc_dir);
-  std::ofstream(file) << o.str();
+  writeFileAtomic(file, o.str());
 }
 // The command line of `halfvec trade`, parsed.
 struct TradeArgs {

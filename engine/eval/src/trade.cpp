@@ -767,11 +767,13 @@ lower error by offsetting the overestimate, which is no reason to choose them.
 
 Times: the "x scene" column is each row's frame time over the scene row's, frame by frame within
 a round, with its 95% interval over one run's frames; "same cost" marks rows whose interval
-includes 1. On llvmpipe these verdicts are not stable from run to run for differences below about
-1.3x: two runs of this report disagreed on several rows (`fast` on area_lights: 0.85, 0.56-1.22,
-then 0.67, 0.50-0.77). `accurate` (its `ltc` light pass) was slower than the scene's settings in
-both runs on area_lights (1.78x, 1.51x) and many_lights (2.29x, 2.14x); `halfvec bench --methods`
-measures the `ltc` light pass alone.
+includes 1. "its passes x scene" is the same ratio over only the passes the option changes (the
+light pass for BRDF and light options, culling and the light pass for culling, the ambient pass
+for environment options), so that the rest of the frame's noise does not hide it. On llvmpipe
+these verdicts are not stable from run to run for differences below about 1.3x, more so when the
+machine is busy: read a ratio whose interval is wide as unmeasured. The `ltc` light modes are the
+one large cost; `halfvec bench --methods` measures their light pass alone, per light type, from
+interleaved frames (docs/lights.md).
 )";
 }
 
