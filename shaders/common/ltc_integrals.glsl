@@ -21,22 +21,24 @@
 // of sin^2(half-angle) = sin_sigma2 whose center is at angle theta from the normal, horizon
 // clipped. Returned divided by pi sin_sigma2, so it equals saturate(cos_theta) when the sphere is
 // entirely above or below the horizon; the caller multiplies by I / d^2.
-// Branch-free: both cases are computed with guarded inputs and selected with step().
 float sphereHorizonFactor(float cos_theta, float sin_sigma2) {
   // sin_sigma2 in [1e-8, 1]: 1 means the point is inside the sphere; 1e-8 (radius 1e-4 d) keeps
   // 1/sin_sigma2 finite for radius 0, where the result is the point light's saturate(cos_theta).
   float s2 = clamp(sin_sigma2, 1e-8f, 1.0f);
   float above = saturate(cos_theta);
-  // Straddling the horizon. sin_theta >= 1e-4 and x >= 1e-4 only guard 0/0 at cos_theta = +-1 or
-  // inside the sphere (s2 = 1); there the other case is selected or the value is bounded anyway.
+  // cos^2 >= sin^2(sigma): the sphere does not cross the horizon. The common case, and one that
+  // neighbouring pixels share: a branch (on llvmpipe, which runs both sides of a branch under a
+  // mask, measured 4-8% faster for `ltc` spheres than computing both and selecting).
+  if (cos_theta * cos_theta >= s2) return above;
+  // Straddling the horizon. sin_theta >= 1e-4 and x >= 1e-4 only guard 0/0 inside the sphere
+  // (s2 = 1), where the value is bounded anyway.
   float sin_theta = sqrt(max(1.0f - cos_theta * cos_theta, 1e-8f));
   float x = sqrt(max(1.0f / s2 - 1.0f, 1e-8f));
   float y = clamp(-x * cos_theta / sin_theta, -1.0f, 1.0f);
   float sin_theta_sqrt_y = sin_theta * sqrt(1.0f - y * y);
   float straddle = ((cos_theta * acos(y) - x * sin_theta_sqrt_y) * s2 +
                     atan(sin_theta_sqrt_y / x)) / (PI * s2);
-  // cos^2 >= sin^2(sigma): the sphere does not cross the horizon.
-  return max(mix(straddle, above, step(s2, cos_theta * cos_theta)), 0.0f);
+  return max(straddle, 0.0f);
 }
 
 // Integral of D_o over a region of vector form factor F, clipped at the horizon: exact for a
