@@ -84,7 +84,8 @@ std::string summaryMarkdown(const eval::SphereAccuracy& sphere, const eval::Tube
   md << "\nPoint lights: " << pct(point.worst)
      << " largest relative error (the half-float target's rounding). Ambient: see its section ("
      << ambient.envs.size() << " environments).\n\n";
-  md << "Accuracy targets of the `ltc` modes (peak = |E/R - 1| at the mirror view, bias = |sum (E - R)| / sum R "
+  md << "Accuracy targets of the `ltc` modes (peak = |E/R - 1| at the mirror view, bias = |sum (E "
+        "- R)| / sum R "
         "over the views):\n\n"
      << headerRow({"goal", "configurations within", "worst peak", "worst bias", ""})
      << goalRow(
