@@ -112,13 +112,20 @@ void parseSize(const std::string& v, int& w, int& h) {
   w = pw, h = ph;
 }
 
-int positiveInt(const std::string& option, const std::string& v) {
-  char* end = nullptr;
-  const long n = std::strtol(v.c_str(), &end, 10);
-  if (!end || *end || n < 1 || n > 1000000) {
-    throw UsageError{option + " expects a positive integer, got '" + v + "'"};
+int intInRange(const std::string& option, const std::string& v, int lo, int hi) {
+  // Decimal digits only, the whole value: '12abc', ' 5', '+5' and '' are refused (atoi took
+  // them). lo >= 0 for every option, so no sign is needed.
+  const bool digits = !v.empty() && v.size() <= 10 && std::all_of(v.begin(), v.end(), ::isdigit);
+  const long n = digits ? std::strtol(v.c_str(), nullptr, 10) : -1;
+  if (!digits || n < lo || n > hi) {
+    throw UsageError{option + " expects an integer in " + std::to_string(lo) + ".." +
+                     std::to_string(hi) + ", got '" + v + "'"};
   }
   return int(n);
+}
+
+int positiveInt(const std::string& option, const std::string& v) {
+  return intInRange(option, v, 1, 1000000);
 }
 
 std::string optionValue(const Args& args, size_t& i) {

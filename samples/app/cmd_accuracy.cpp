@@ -58,8 +58,7 @@ Options parseArgs(const Args& args) {
     } else if (a == "--quick") {
       o.eval.quick = true;
     } else if (a == "--threads") {
-      o.eval.threads = std::atoi(optionValue(args, i).c_str());
-      if (o.eval.threads < 0) throw UsageError{"--threads expects a count >= 0"};
+      o.eval.threads = intInRange(a, optionValue(args, i), 0, 4096);
     } else {
       throw UsageError{"unknown argument '" + a + "'"};
     }

@@ -160,13 +160,12 @@ BenchArgs parseBenchArgs(const Args& args) {
     } else if (a == "--size") {
       parseSize(value(), b.w, b.h);
     } else if (a == "--frames") {
-      b.frames = std::max(1, std::atoi(value().c_str()));
+      b.frames = positiveInt(a, value());
       b.frames_given = true;
     } else if (a == "--max-lights") {
-      b.max_lights = std::atoi(value().c_str());
+      b.max_lights = positiveInt(a, value());
     } else if (a == "--lights") {
-      b.only = std::atoi(value().c_str());
-      if (b.only <= 0) throw UsageError{"--lights expects a positive count"};
+      b.only = positiveInt(a, value());
     } else if (a == "--range") {
       b.only_range = static_cast<float>(std::atof(value().c_str()));
       if (!(b.only_range > 0.0f)) throw UsageError{"--range expects a positive length in m"};

@@ -47,12 +47,11 @@ int cmdReference(const Args& args) {
     } else if (a == "--size") {
       parseSize(value(), w, h);
     } else if (a == "--samples") {
-      opt.samples = std::atoi(value().c_str());
-      if (opt.samples < 1) throw UsageError{"--samples expects a positive count"};
+      opt.samples = positiveInt(a, value());
     } else if (a == "--target-error") {
       opt.target_rel_error = std::stof(value());
     } else if (a == "--threads") {
-      opt.threads = std::atoi(value().c_str());
+      opt.threads = intInRange(a, value(), 0, 4096);
     } else if (a == "--hdr") {
       hdr = value();
     } else if (a == "--out") {

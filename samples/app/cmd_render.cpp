@@ -80,8 +80,7 @@ RenderArgs parse(const Args& args) {
     } else if (a == "--aov") {
       r.aov = value();
     } else if (a == "--frames") {
-      r.frames = std::atoi(value().c_str());
-      if (r.frames < 1 || r.frames > 1000) throw UsageError{"--frames expects 1..1000"};
+      r.frames = intInRange(a, value(), 1, 1000);
     } else if (a == "--aa") {
       const std::string v = value();
       const auto aa = render::postAAFromString(v);

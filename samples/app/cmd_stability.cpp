@@ -31,8 +31,8 @@ int cmdStability(const Args& args) {
     } else if (args[i] == "--small") {
       o.small = true;
     } else if (args[i] == "--size") {
-      o.size = std::atoi(optionValue(args, i).c_str());
-      if (o.size < 8 || o.size > 1024) throw UsageError{"--size expects 8..1024"};
+      const std::string option = args[i];
+      o.size = intInRange(option, optionValue(args, i), 8, 1024);
     } else {
       throw UsageError{"unknown option '" + args[i] + "'"};
     }

@@ -81,8 +81,7 @@ ViewArgs parse(const Args& args) {
     if (a == "--size") {
       parseSize(value(), r.width, r.height);
     } else if (a == "--frames") {
-      r.frames = std::atoi(value().c_str());
-      if (r.frames < 1) throw UsageError{"--frames expects a positive count"};
+      r.frames = intInRange(a, value(), 1, 2147483647);
     } else if (a == "--screenshot") {
       r.screenshot = value();
     } else if (a == "--press") {

@@ -53,7 +53,9 @@ std::string optionValue(const Args& args, size_t& i);
 
 // `v` as an integer in 1..1000000, all of it digits; else UsageError "<option> expects a positive
 // integer, got '<v>'".
-int positiveInt(const std::string& option, const std::string& v);
+// Strict integer option values: the whole string, decimal, within [lo, hi]; UsageError otherwise.
+int intInRange(const std::string& option, const std::string& v, int lo, int hi);
+int positiveInt(const std::string& option, const std::string& v);  // 1..1,000,000
 
 // A positional argument of a command that takes one scene file: stores it in `scene`; throws
 // UsageError for an unknown option (a leading '-') or a second scene file.

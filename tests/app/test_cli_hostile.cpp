@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "app/cli.hpp"
 
@@ -49,6 +50,34 @@ TEST(CliHostile, SizeIsParsedStrictly) {
     std::string err;
     EXPECT_EQ(run({"render", scene(), "--size", bad}, &err), 2) << bad;
     EXPECT_NE(err.find("--size"), std::string::npos) << err;
+  }
+}
+
+// Every integer option of every command: the whole value, decimal, in range; trailing text,
+// an empty value or an overflow is a usage error (status 2) naming the option, before any work.
+TEST(CliHostile, IntegerOptionsAreParsedStrictly) {
+  const std::vector<std::vector<std::string>> commands = {{"render", scene(), "--frames"},
+                                                          {"view", scene(), "--frames"},
+                                                          {"bench", "--frames"},
+                                                          {"bench", "--max-lights"},
+                                                          {"bench", "--lights"},
+                                                          {"reference", scene(), "--samples"},
+                                                          {"reference", scene(), "--threads"},
+                                                          {"stability", "--size"},
+                                                          {"accuracy", "--threads"},
+                                                          {"ltc-fit", "--size"},
+                                                          {"trade", scene(), "--frames"}};
+  for (const auto& c : commands) {
+    for (const char* bad : {"5abc", "", "-1", "99999999999999999999", "1.5", " 5"}) {
+      std::vector<std::string> args = c;
+      args.push_back(bad);
+      // Options are parsed in order: were the value taken, the command would still stop here
+      // (and the assertions below fail) instead of rendering, fitting or writing docs.
+      args.push_back("--zzzz-not-an-option");
+      std::string err;
+      EXPECT_EQ(run(args, &err), 2) << args[0] << " " << c.back() << " '" << bad << "'";
+      EXPECT_NE(err.find(c.back() + " expects an integer in"), std::string::npos) << err;
+    }
   }
 }
 
