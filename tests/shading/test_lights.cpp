@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "halfvec/shading/light_gpu.hpp"
+#include "karis_double.hpp"
 
 namespace hv::glsl {
 namespace {
@@ -221,9 +222,9 @@ TEST(Lights, SphereHorizonFactorMatchesQuadrature) {
 
 // Karis 2013's representative-point sphere specular evaluated in double precision, written here
 // from the paper independently of lights.glsl: eq. 11 (the point of the sphere closest to the
-// reflection ray), eq. 2 (GGX D), eq. 4 (Schlick-GGX G with the Disney remap k = (r + 1)^2 / 8),
-// F = 1 (f0 = 1), eqs. 10 and 14 (normalization (alpha / alpha')^2, alpha' = saturate(alpha +
-// r / (3 d)), the widening docs/lights.md states), eq. 9 (falloff window / (d^2 + 1)), times N.L.
+// reflection ray), eqs. 2 and 4 with F = 1 (karisSpecularDouble, karis_double.hpp), eqs. 10 and 14
+// (normalization (alpha / alpha')^2, alpha' = saturate(alpha + r / (3 d)), the widening
+// docs/lights.md states), eq. 9 (falloff window / (d^2 + 1)), times N.L.
 double karisSphereSpecularDouble(double roughness, glm::dvec3 center, double radius, glm::dvec3 V,
                                  double I, double range) {
   const glm::dvec3 N(0, 0, 1);
@@ -236,16 +237,12 @@ double karisSphereSpecularDouble(double roughness, glm::dvec3 center, double rad
   const double NoL = std::max(glm::dot(N, L), 0.0), NoV = std::max(glm::dot(N, V), 1e-4);
   const double NoH = std::max(glm::dot(N, H), 0.0);
   const double a = std::max(roughness, 0.045) * std::max(roughness, 0.045);
-  const double den = NoH * NoH * (a * a - 1.0) + 1.0;
-  const double D = a * a / (kPi * den * den);
-  const double rr = std::max(roughness, 0.045);
-  const double k = (rr + 1.0) * (rr + 1.0) / 8.0;
-  auto g1 = [k](double x) { return x / (x * (1.0 - k) + k); };
-  const double vis = g1(NoV) * g1(NoL) / (4.0 * NoV * std::max(NoL, 1e-300));
   const double a_p = std::min(a + radius / (3.0 * d), 1.0);
   const double norm = (a / a_p) * (a / a_p);
   const double window = std::pow(std::clamp(1.0 - std::pow(d / range, 4.0), 0.0, 1.0), 2.0);
-  return NoL > 0.0 ? D * vis * norm * NoL * I * window / (d2 + 1.0) : 0.0;
+  return NoL > 0.0 ? hv::test::karisSpecularDouble(roughness, NoH, NoV, NoL) * norm * NoL * I *
+                         window / (d2 + 1.0)
+                   : 0.0;
 }
 
 // The representative-point sphere light (the default) equals Karis's formula evaluated in double
