@@ -3,11 +3,17 @@
 // override indices beyond size_t. Each must give a SceneError naming the file and the JSON path.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "halfvec/scene/scene_loader.hpp"
 
 namespace {
+
+namespace fs = std::filesystem;
 
 std::string loadError(const std::string& text, const std::vector<std::string>& overrides = {}) {
   try {
@@ -78,6 +84,56 @@ TEST(SceneHostile, BudgetsForLightsAndTessellation) {
   EXPECT_EQ(loadError(R"({"light_generators": [{"count": 1048576}]})"), "");
   EXPECT_EQ(loadError(R"({"objects": [{"primitive": "sphere", "segments": 1024, "rings": 512}]})"),
             "");
+  // The largest single sphere, 2049 x 2047 = 4,194,303 vertices, loads; one ring more does not.
+  // A 70-byte sphere of 4096 x 4090 (16.8 Mi vertices, 1.3 GiB) fit the old budget and took 19 s
+  // of CPU under the sanitizers (tests/fuzz/scene/sphere_4096x4090.json).
+  EXPECT_EQ(loadError(R"({"objects": [{"primitive": "sphere", "segments": 2048, "rings": 2046}]})"),
+            "");
+  e = loadError(R"({"objects": [{"primitive": "sphere", "segments": 2048, "rings": 2047}]})");
+  EXPECT_TRUE(has(e, "/objects/0/segments") && has(e, "4194304")) << e;
+}
+
+TEST(SceneHostile, UnusedFallbacksAreValidatedNotBuilt) {
+  // A glTF object whose file exists does not use its fallback: the scene holds only the glTF's
+  // meshes, and the fallback's errors are still reported. (Its mesh is not even built; that only
+  // shows as time, 0.2 s per budget-sized sphere here, so it is not asserted.)
+  const fs::path dir = fs::temp_directory_path() / ("hv_fallback_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  {
+    // One triangle, its buffer a data URI: 3 positions (36 bytes) then 3 uint16 indices.
+    std::ofstream(dir / "tri.gltf")
+        << R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+"nodes": [{"mesh": 0}], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+"accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+  "min": [0, 0, 0], "max": [1, 1, 0]},
+  {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}],
+"bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+"buffers": [{"byteLength": 42, "uri": "data:application/octet-stream;base64,)"
+        << "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIA"
+        << R"("}]})";
+  }
+  const std::string scene_path = (dir / "scene.json").string();
+  std::string objects;
+  for (int i = 0; i < 4; ++i) {
+    objects += std::string(i ? "," : "") +
+               R"({"gltf": "tri.gltf", "fallback": {"primitive": "sphere", "segments": 2048,
+                   "rings": 2046}})";
+  }
+  hv::Scene scene = hv::loadSceneFromString(R"({"objects": [)" + objects + "]}", scene_path, {});
+  size_t vertices = 0;
+  for (const hv::Mesh& m : scene.meshes) vertices += m.vertices.size();
+  EXPECT_EQ(scene.objects.size(), 4u);
+  EXPECT_EQ(vertices, 4u * 3u) << "a fallback's mesh is in the scene";
+  std::string e;
+  try {
+    hv::loadSceneFromString(
+        R"({"objects": [{"gltf": "tri.gltf", "fallback": {"primitive": "sphere", "radius": -1}}]})",
+        scene_path, {});
+  } catch (const hv::SceneError& err) {
+    e = err.what();
+  }
+  EXPECT_TRUE(has(e, "scene.json") && has(e, "/objects/0/fallback/radius")) << e;
+  fs::remove_all(dir);
 }
 
 TEST(SceneHostile, ParseErrorsNameFileAndPosition) {

@@ -30,6 +30,10 @@ struct ProfilePoint {
 Mesh revolve(float radius, int segments, const std::vector<ProfilePoint>& profile) {
   Mesh m;
   const int cols = segments + 1;
+  // Sized once: a budget-sized sphere is millions of vertices, and growing by doubling would
+  // copy them several times and hold twice the memory at the peak.
+  m.vertices.reserve(profile.size() * size_t(cols));
+  m.indices.reserve((profile.size() - 1) * size_t(segments) * 6);
   for (const ProfilePoint& pp : profile) {
     const float st = std::sin(pp.theta), ct = std::cos(pp.theta);
     for (int j = 0; j <= segments; ++j) {

@@ -664,7 +664,7 @@ class SceneBuilder {
         const int segments = o.integer("segments", 64, 3, 4096),
                   rings = o.integer("rings", 32, 2, 4096);
         budget(segments, rings, size_t(segments + 1) * size_t(rings + 1));
-        mesh = makeSphere(radius, segments, rings);
+        if (!validate_only_) mesh = makeSphere(radius, segments, rings);
         break;
       }
       case PrimKind::Plane: {
@@ -694,7 +694,7 @@ class SceneBuilder {
         const int segments = o.integer("segments", 48, 3, 4096),
                   rings = o.integer("rings", 24, 2, 4096);
         budget(segments, rings, size_t(segments + 1) * size_t(2 * ((rings + 1) / 2 + 1)));
-        mesh = makeCapsule(radius, half_length, segments, rings);
+        if (!validate_only_) mesh = makeCapsule(radius, half_length, segments, rings);
         break;
       }
     }
@@ -742,6 +742,7 @@ class SceneBuilder {
       Scene scratch;
       SceneBuilder check(ctx_, scratch);
       check.material_names_ = material_names_;
+      check.validate_only_ = true;  // its mesh is never used: do not build it
       check.scene_.materials = scene_.materials;
       check.parsePrimitiveObject(o["fallback"], o.at("fallback"), transform, name);
     }
@@ -767,6 +768,8 @@ class SceneBuilder {
   int default_material_ = -1;
   int object_count_ = 0;
   size_t primitive_vertices_ = 0;
+  // Checks objects without building their meshes (an unused fallback).
+  bool validate_only_ = false;
 };
 
 // nlohmann's message without its "[json.exception.parse_error.101] " prefix.
