@@ -46,7 +46,6 @@ layout(local_size_x = HV_TILE_SIZE, local_size_y = HV_TILE_SIZE) in;
 layout(binding = HV_UNIT_BASE_CAVITY) uniform sampler2D t_base_cavity;
 layout(binding = HV_UNIT_MATERIAL) uniform sampler2D t_material;
 layout(binding = HV_UNIT_NORMAL) uniform sampler2D t_normal;
-layout(binding = HV_UNIT_DEPTH) uniform sampler2D t_depth;
 layout(binding = HV_UNIT_RADIANCE) uniform samplerCube t_radiance;    // prefiltered: one roughness per mip
 layout(binding = HV_UNIT_ENV_BRDF) uniform sampler2D t_env_brdf;      // (scale, bias) over (NoV, roughness)
 layout(binding = HV_UNIT_IRRADIANCE) uniform samplerCube t_irradiance;  // E(n), not divided by pi
@@ -71,9 +70,11 @@ void main() {
   vec4 hdr = imageLoad(i_hdr, px);
   vec4 result = hdr;  // unlit surfaces keep what the G-buffer pass wrote (emissive)
   vec2 uv = (vec2(px) + 0.5) / vec2(u_viewport.xy);
-  // A background pixel's ray through a far point (reversed Z: depth 1e-3 is far away).
-  float depth = background ? 1e-3 : texelFetch(t_depth, px, 0).r;
-  vec3 ray = normalize(reconstructWorldPosition(uv, depth, u_inv_view_proj) - u_camera_pos.xyz);
+  // The view ray through the pixel, to a far point on it (reversed Z: depth 1e-3 is far away).
+  // The camera is a pinhole (perspective only), so the surface seen in the pixel lies on the same
+  // ray: no depth fetch is needed (measured, 21 interleaved frames at 1280x720: this pass 3.48x ->
+  // 3.26x floor on the default scene, 3.78x -> 3.39x on helmet_sunset).
+  vec3 ray = normalize(reconstructWorldPosition(uv, 1e-3, u_inv_view_proj) - u_camera_pos.xyz);
 #if HV_ENVIRONMENT
   bool env_present = true;
 #if HV_ENV_RUNTIME_CHECK
