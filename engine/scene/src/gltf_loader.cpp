@@ -318,6 +318,7 @@ class Importer {
         if (!child[i]) roots.push_back(int(i));
       roots_el = "nodes";
     }
+    checkExpansion(roots);
     for (int r : roots) visit(r, transform, roots_el);
   }
 
@@ -929,6 +930,72 @@ class Importer {
                                                 finite(n.scale[2], f)));
     }
     return t * r * s;
+  }
+
+  // The budgets of node instances and instanced triangles, checked before anything is instanced:
+  // per node, the instances and triangles of its subtree, counted once per node over the graph
+  // (O(nodes + children) however often a node is reused) and saturating at the budgets. A few KB
+  // whose 64 nodes each list the next one 4 times (4^63 instances) are rejected at once instead
+  // of after a million instances have been built (9 s). A child that is out of range or closes a
+  // cycle counts 0 here and is left to visit(), which names it; with neither, visit() counts
+  // exactly these totals.
+  void checkExpansion(const std::vector<int>& roots) {
+    const size_t n = m_.nodes.size();
+    auto capOf = [](uint64_t limit) { return std::max(limit, limit + 1); };  // limit + 1, no wrap
+    const uint64_t cap_i = capOf(lim_.max_node_instances);
+    const uint64_t cap_t = capOf(lim_.max_instanced_triangles);
+    auto add = [](uint64_t a, uint64_t b, uint64_t cap) { return b > cap - a ? cap : a + b; };
+    std::vector<uint64_t> inst(n, 0), tris(n, 0);
+    std::vector<uint8_t> state(n, 0);              // 0 not seen, 1 on the current path, 2 counted
+    std::vector<std::pair<size_t, size_t>> stack;  // node, next child
+    uint64_t total_i = 0, total_t = 0;
+    for (int r : roots) {
+      if (r < 0 || size_t(r) >= n) continue;
+      if (state[size_t(r)] == 0) {
+        state[size_t(r)] = 1;
+        stack.push_back({size_t(r), 0});
+      }
+      while (!stack.empty()) {
+        const size_t ni = stack.back().first;
+        const tinygltf::Node& node = m_.nodes[ni];
+        if (stack.back().second < node.children.size()) {
+          const int c = node.children[stack.back().second++];
+          if (c >= 0 && size_t(c) < n && state[size_t(c)] == 0) {
+            state[size_t(c)] = 1;
+            stack.push_back({size_t(c), 0});
+          }
+          continue;
+        }
+        uint64_t i = 1, t = 0;
+        if (node.mesh >= 0 && size_t(node.mesh) < mesh_triangles_.size()) {
+          t = std::min(cap_t, mesh_triangles_[size_t(node.mesh)]);
+        }
+        for (int c : node.children) {
+          if (c < 0 || size_t(c) >= n || state[size_t(c)] != 2) continue;
+          i = add(i, inst[size_t(c)], cap_i);
+          t = add(t, tris[size_t(c)], cap_t);
+        }
+        inst[ni] = i;
+        tris[ni] = t;
+        state[ni] = 2;
+        stack.pop_back();
+      }
+      total_i = add(total_i, inst[size_t(r)], cap_i);
+      total_t = add(total_t, tris[size_t(r)], cap_t);
+      const std::string el = idx("nodes", size_t(r));
+      if (total_i > lim_.max_node_instances) {
+        fail(el, "the node graph expands into more than " +
+                     std::to_string(lim_.max_node_instances) +
+                     " node instances (GltfLimits::max_node_instances; nodes reused by several "
+                     "parents count once per use)");
+      }
+      if (total_t > lim_.max_instanced_triangles) {
+        fail(el, "the instanced meshes exceed the budget of " +
+                     std::to_string(lim_.max_instanced_triangles) +
+                     " triangles (GltfLimits::max_instanced_triangles; nodes reused by several "
+                     "parents count once per use)");
+      }
+    }
   }
 
   // Depth-first over the node graph from root `root` with an explicit stack (a file controls
