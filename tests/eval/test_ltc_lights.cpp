@@ -63,7 +63,8 @@ TermError ltcError(const Light& l, LightTerm term, float roughness, glm::vec3 di
 // Small scenes, engine `ltc` vs the reference. Bounds (|bias| over the views, |peak - 1| at the
 // mirror view): the values measured when docs/accuracy.md was generated for the same
 // configurations (the accuracy sweep's grid), plus the reference's noise (4 standard errors of
-// the sum) and a margin: glossy and rough spheres above the horizon 5%; a sphere straddling the
+// the sum) and a margin: glossy and rough spheres above the horizon 5% (8% near the horizon at a
+// grazing view); a sphere straddling the
 // horizon (elevation 0) and a shading point inside a sphere 10%; capsules across and along the
 // plane of incidence 10% (specular) and 2% (diffuse).
 TEST(LtcLights, MatchReferenceOnSmallScenes) {
@@ -76,6 +77,11 @@ TEST(LtcLights, MatchReferenceOnSmallScenes) {
       {"glossy sphere", light(LightType::Sphere, dirAt(45), 0.2f), 0.1f, 45, 0.22f, 0.05f, 0.02f},
       {"rough sphere", light(LightType::Sphere, dirAt(45), 0.2f), 0.7f, 45, 1.2f, 0.05f, 0.02f},
       {"straddling sphere", light(LightType::Sphere, dirAt(0), 0.3f), 0.3f, 0, 0.5f, 0.10f, 0.02f},
+      // Near the horizon at a grazing view (N.V 0.087), where the lobe falls off across the light:
+      // bias +23% and peak 1.36 with the small-light correction taken at one point, +5.3% and
+      // 1.015 with two (lights.glsl); bound 8%.
+      {"sphere near the horizon", light(LightType::Sphere, dirAt(5), 0.05f), 0.5f, 5, 0.18f, 0.08f,
+       0.02f},
       {"inside a sphere", light(LightType::Sphere, 0.5f * dirAt(60), 1.0f), 0.4f, 60, 0.8f, 0.10f,
        0.02f},
       {"capsule across", light(LightType::Tube, dirAt(45), 0.1f, 1.0f, {0, 1, 0}), 0.2f, 45, 0.9f,

@@ -40,8 +40,8 @@ bool applySettingsPreset(std::string_view name, RenderSettings& s) {
     s.falloff_plus_one = false;
     s.sphere_diffuse = SphereDiffuse::HorizonCorrect;
     // docs/accuracy.md: median / worst error over the sweeps, ltc vs the representative point:
-    // sphere specular 2.2% / 32% vs 32% / 1676% (with this preset's Schlick-GGX V), tube specular
-    // 3.5% / 16% vs 41% / 96%, tube diffuse 1.9% / 4.2% vs 8.6% / 20%.
+    // sphere specular 2.2% / 17% vs 32% / 1676% (with this preset's Schlick-GGX V), tube specular
+    // 3.6% / 16% vs 41% / 96%, tube diffuse 1.9% / 4.2% vs 8.6% / 20%.
     s.sphere_specular = SphereSpecular::Ltc;
     s.tube_specular = TubeSpecular::Ltc;
     s.tube_diffuse = TubeDiffuse::Ltc;
