@@ -3,10 +3,12 @@
 // hostile headers: dimensions past kMaxImageSide, sizes the data cannot hold.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <vector>
 
+#include "halfvec/core/png_bound.hpp"
 #include "halfvec/image/image.hpp"
 
 namespace {
@@ -98,6 +100,43 @@ TEST(ImageReaders, PngDimensionsBoundedBeforeDecoding) {
   png = encodePng(64, 64, std::vector<uint8_t>(64 * 64 * 4, 9));
   e = errorOf([&] { hv::decodePng(png.data(), png.size() / 2, "cut.png"); });
   EXPECT_NE(e.find("cut.png"), std::string::npos) << e;
+}
+
+TEST(ImageReaders, PngDataMustInflateToTheDeclaredPixels) {
+  // A 1x1 file whose header declares 4096 x 4096: 12 bytes of zlib data cannot inflate to the
+  // 67 MB of scanlines (deflate expands at most 1032:1), so it is rejected before stb_image
+  // allocates them.
+  std::vector<uint8_t> png = encodePng(1, 1, {1, 2, 3, 4});
+  for (int at : {16, 20}) png[size_t(at) + 2] = 0x10, png[size_t(at) + 3] = 0;  // 4096
+  std::string e = errorOf([&] { hv::decodePng(png.data(), png.size(), "bomb.png"); });
+  EXPECT_NE(e.find("bomb.png"), std::string::npos) << e;
+  EXPECT_NE(e.find("4096x4096"), std::string::npos) << e;
+  EXPECT_NE(e.find("IDAT"), std::string::npos) << e;
+  // The bound exactly: one 1032-pixel row of 8-bit gray is 1033 bytes of scanline, which 1 byte
+  // of compressed data cannot give and 2 bytes can.
+  auto grayRow = [](size_t idat_bytes) {
+    std::vector<uint8_t> p = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    std::vector<uint8_t> ihdr;
+    putBe32(ihdr, 1032);
+    putBe32(ihdr, 1);
+    ihdr.insert(ihdr.end(), {8, 0, 0, 0, 0});
+    chunk(p, "IHDR", ihdr);
+    chunk(p, "IDAT", std::vector<uint8_t>(idat_bytes, 0));
+    chunk(p, "IEND", {});
+    return p;
+  };
+  std::vector<uint8_t> one = grayRow(1), two = grayRow(2);
+  EXPECT_NE(hv::pngDataShortfall(one.data(), one.size()), "");
+  EXPECT_EQ(hv::pngDataShortfall(two.data(), two.size()), "");
+  // Legitimate files pass, however well they compress: 512 x 512 of one color by stb's writer.
+  const std::string path = ::testing::TempDir() + "flat.png";
+  hv::ImageRGBA8 flat = hv::makeImageRGBA8(512, 512);
+  for (uint8_t& c : flat.px) c = 200;
+  hv::writePng(path, flat);
+  EXPECT_EQ(hv::readPng(path).px, flat.px);
+  std::remove(path.c_str());
+  // Not a PNG, or no header: left to the decoder.
+  EXPECT_EQ(hv::pngDataShortfall(png.data(), 7), "");
 }
 
 TEST(ImageReaders, PfmFromAnIndependentWriter) {

@@ -262,6 +262,11 @@ TEST(GltfHostile, ImagesAreBoundedBeforeDecoding) {
   j["images"][0]["uri"] = "data:image/png;base64," + base64(pngHeaderOnly(100, 100));
   e = loadError(j, "budget.gltf", opt);
   EXPECT_TRUE(has(e, "images[0]") && has(e, "max_image_pixels")) << e;
+  // Within the budgets, but no image data to inflate to 4096 x 4096 pixels: rejected before
+  // stb_image allocates 64 MiB for them (halfvec/core/png_bound.hpp).
+  j["images"][0]["uri"] = "data:image/png;base64," + base64(pngHeaderOnly(4096, 4096));
+  e = loadError(j, "nodata.gltf");
+  EXPECT_TRUE(has(e, "images[0]") && has(e, "4096x4096") && has(e, "IDAT")) << e;
   // An image in a bufferView that reaches past its buffer (tinygltf would read out of bounds).
   json g = quadGlbJson();
   g["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 80}, {"byteLength", 4000}});

@@ -1,5 +1,7 @@
 #include "halfvec/image/image.hpp"
 
+#include "halfvec/core/png_bound.hpp"
+
 #include <algorithm>
 #include <bit>
 #include <cctype>
@@ -91,6 +93,11 @@ ImageRGBA8 decodePng(const uint8_t* bytes, size_t size, const std::string& path,
   if (w <= 0 || h <= 0 || w > max_side || h > max_side) {
     throw ImageError("readPng '" + path + "': " + std::to_string(w) + "x" + std::to_string(h) +
                      " outside 1.." + std::to_string(max_side) + " per side (kMaxImageSide)");
+  }
+  // The compressed data must be able to inflate to the declared pixels (halfvec/core/png_bound.hpp)
+  // before stb_image allocates them.
+  if (const std::string why = pngDataShortfall(bytes, size); !why.empty()) {
+    throw ImageError("readPng '" + path + "': " + why);
   }
   int dw = 0, dh = 0;
   stbi_uc* data = stbi_load_from_memory(bytes, int(size), &dw, &dh, &n, 4);

@@ -14,6 +14,8 @@
 
 #include "halfvec/scene/gltf_loader.hpp"
 
+#include "halfvec/core/png_bound.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -243,6 +245,12 @@ bool decodeImage(tinygltf::Image* image, const int index, std::string* err, std:
   if (ctx->image_pixels > lim.max_image_pixels) {
     *err += el + ": the file's images exceed the budget of " +
             std::to_string(lim.max_image_pixels) + " pixels (GltfLimits::max_image_pixels)";
+    return false;
+  }
+  // A PNG's compressed data must be able to inflate to its declared pixels before stb_image
+  // allocates them (halfvec/core/png_bound.hpp).
+  if (const std::string why = pngDataShortfall(bytes, size_t(size)); !why.empty()) {
+    *err += el + ": " + why;
     return false;
   }
   int dw = 0, dh = 0;

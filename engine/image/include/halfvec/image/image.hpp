@@ -37,9 +37,10 @@ ImageRGBA8 makeImageRGBA8(int width, int height);  // zero-filled
 ImageRGBf makeImageRGBf(int width, int height, glm::vec3 fill = glm::vec3(0.0f));
 
 // Largest width and height the readers accept (the renderer's largest --size). Declared
-// dimensions are checked against it and against the file's size before pixels are allocated, so
-// no file makes a reader allocate more than about three times its size, and at most 1 GiB (PNG,
-// 8-bit RGBA) or 3 GiB (PFM, float RGB, which must be present in the file).
+// dimensions are checked against it and against the file's data before pixels are allocated: a
+// PFM's floats must be present in the file (so it allocates about three times its size, at most
+// 3 GiB), a PNG's compressed data must be able to inflate to its scanlines (deflate expands at
+// most 1032:1, halfvec/core/png_bound.hpp; at most 2 GiB for 16-bit RGBA).
 constexpr int kMaxImageSide = 16384;
 
 // PNG through libstb (stb_image_write / stb_image). readPng always returns 4 channels.
