@@ -115,7 +115,8 @@ void parseSize(const std::string& v, int& w, int& h) {
 int intInRange(const std::string& option, const std::string& v, int lo, int hi) {
   // Decimal digits only, the whole value: '12abc', ' 5', '+5' and '' are refused (atoi took
   // them). lo >= 0 for every option, so no sign is needed.
-  const bool digits = !v.empty() && v.size() <= 10 && std::all_of(v.begin(), v.end(), ::isdigit);
+  const bool digits = !v.empty() && v.size() <= 10 &&
+                      std::all_of(v.begin(), v.end(), [](char c) { return c >= '0' && c <= '9'; });
   const long n = digits ? std::strtol(v.c_str(), nullptr, 10) : -1;
   if (!digits || n < lo || n > hi) {
     throw UsageError{option + " expects an integer in " + std::to_string(lo) + ".." +

@@ -51,9 +51,8 @@ struct UsageError {
 // the option is the last argument.
 std::string optionValue(const Args& args, size_t& i);
 
-// `v` as an integer in 1..1000000, all of it digits; else UsageError "<option> expects a positive
-// integer, got '<v>'".
-// Strict integer option values: the whole string, decimal, within [lo, hi]; UsageError otherwise.
+// `v` as an integer in [lo, hi], the whole string decimal digits; else UsageError "<option>
+// expects an integer in <lo>..<hi>, got '<v>'".
 int intInRange(const std::string& option, const std::string& v, int lo, int hi);
 int positiveInt(const std::string& option, const std::string& v);  // 1..1,000,000
 

@@ -68,7 +68,7 @@ TEST(CliHostile, IntegerOptionsAreParsedStrictly) {
                                                           {"ltc-fit", "--size"},
                                                           {"trade", scene(), "--frames"}};
   for (const auto& c : commands) {
-    for (const char* bad : {"5abc", "", "-1", "99999999999999999999", "1.5", " 5"}) {
+    for (const char* bad : {"5abc", "", "-1", "99999999999999999999", "1.5", " 5", "\xd9\xa5"}) {
       std::vector<std::string> args = c;
       args.push_back(bad);
       // Options are parsed in order: were the value taken, the command would still stop here

@@ -945,8 +945,9 @@ class Importer {
   // (O(nodes + children) however often a node is reused) and saturating at the budgets. A few KB
   // whose 64 nodes each list the next one 4 times (4^63 instances) are rejected at once instead
   // of after a million instances have been built (9 s). A child that is out of range or closes a
-  // cycle counts 0 here and is left to visit(), which names it; with neither, visit() counts
-  // exactly these totals.
+  // cycle counts 0 here and is left to visit(), which names it (before it has instanced more than
+  // these totals); with neither, visit() instances exactly these totals, so it checks no budget of
+  // its own.
   void checkExpansion(const std::vector<int>& roots) {
     const size_t n = m_.nodes.size();
     auto capOf = [](uint64_t limit) { return std::max(limit, limit + 1); };  // limit + 1, no wrap
@@ -1007,8 +1008,8 @@ class Importer {
   }
 
   // Depth-first over the node graph from root `root` with an explicit stack (a file controls
-  // the depth), rejecting cycles; nodes reused by several parents are instanced, within the
-  // budgets of node instances and instanced triangles.
+  // the depth), rejecting cycles; nodes reused by several parents are instanced (checkExpansion
+  // has checked the budgets of node instances and instanced triangles).
   void visit(int root, const glm::mat4& parent, const std::string& from) {
     struct Frame {
       int node;
@@ -1028,12 +1029,6 @@ class Importer {
         fail(ref, "node hierarchy deeper than " + std::to_string(lim_.max_node_depth) +
                       " levels (GltfLimits::max_node_depth)");
       }
-      if (++node_instances_ > lim_.max_node_instances) {
-        fail(el, "the node graph expands into more than " +
-                     std::to_string(lim_.max_node_instances) +
-                     " node instances (GltfLimits::max_node_instances; nodes reused by several "
-                     "parents count once per use)");
-      }
       const tinygltf::Node& n = m_.nodes[size_t(ni)];
       const glm::mat4 world = parent_world * localMatrix(n, el);
       for (int k = 0; k < 16; ++k) {
@@ -1044,12 +1039,6 @@ class Importer {
       if (n.mesh >= 0) {
         if (size_t(n.mesh) >= m_.meshes.size()) {
           fail(el + ".mesh", "index " + std::to_string(n.mesh) + " out of range");
-        }
-        instanced_triangles_ += mesh_triangles_[size_t(n.mesh)];
-        if (instanced_triangles_ > lim_.max_instanced_triangles) {
-          fail(el, "the instanced meshes exceed the budget of " +
-                       std::to_string(lim_.max_instanced_triangles) +
-                       " triangles (GltfLimits::max_instanced_triangles)");
         }
         if (!mesh_map_[size_t(n.mesh)].empty()) {
           Object o;
@@ -1106,7 +1095,6 @@ class Importer {
   const GltfLimits& lim_;
   int image_base_ = 0, material_base_ = 0, mesh_base_ = 0;
   uint64_t total_vertices_ = 0, total_triangles_ = 0;
-  uint64_t node_instances_ = 0, instanced_triangles_ = 0;
   std::vector<uint64_t> mesh_triangles_;  // per glTF mesh, all imported primitives
   int default_material_ = -1;
   bool warned_specgloss_ = false;
