@@ -1,5 +1,6 @@
 // `halfvec ltc-fit`: fits the LTC table of shaders/common/ltc.glsl (engine/eval ltc_fit.hpp) and
 // writes it as engine/shading/src/ltc_table.cpp; the fit is cached.
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -30,6 +31,10 @@ Options:
   --fit-samples N     samples per dimension and strategy of the fit's error (default 32)
   --moment-samples N  samples per dimension of the integrated magnitudes (default 256)
   --power P           the fit minimizes integral |D_ltc - lobe|^P (default 3)
+  --cap-weight W      plus W x the relative squared error of the LTC's integrals over caps of
+                      3, 14 and 29 degrees on the lobe, the norm then relative to its value at
+                      the start (default 0: the norm alone; docs/lights.md measures W = 100)
+  --cap-samples N     lobe samples per dimension for the caps' integrals (default 128)
   --threads N         threads (default: all cores)
   --cache DIR         cache folder (default out/cache; "" disables the cache)
   --cell R,NOV        fit one cell at roughness R and N.V = NOV from the identity, print it
@@ -43,6 +48,20 @@ struct Options {
   bool one_cell = false;
   float cell_roughness = 0.5f, cell_nov = 0.5f;
 };
+
+// `v` as a number in [lo, hi], the whole string; else UsageError naming the option and the value.
+double numberInRange(const std::string& option, const std::string& v, double lo, double hi) {
+  char* end = nullptr;
+  const double x = std::strtod(v.c_str(), &end);
+  // strtod skips leading white space; the value must not start with any.
+  const bool space = !v.empty() && std::isspace(static_cast<unsigned char>(v[0]));
+  if (v.empty() || space || end != v.c_str() + v.size() || !(x >= lo && x <= hi)) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, " expects a number in [%g, %g], got '", lo, hi);
+    throw UsageError{option + buf + v + "'"};
+  }
+  return x;
+}
 
 Options parseArgs(const Args& args) {
   Options o;
@@ -58,10 +77,11 @@ Options parseArgs(const Args& args) {
     } else if (a == "--moment-samples") {
       o.fit.moment_samples = positiveInt(a, optionValue(args, i));
     } else if (a == "--power") {
-      o.fit.error_power = std::atof(optionValue(args, i).c_str());
-      if (!(o.fit.error_power >= 1.0 && o.fit.error_power <= 8.0)) {
-        throw UsageError{"--power expects a number in [1, 8]"};
-      }
+      o.fit.error_power = numberInRange(a, optionValue(args, i), 1.0, 8.0);
+    } else if (a == "--cap-weight") {
+      o.fit.cap_weight = numberInRange(a, optionValue(args, i), 0.0, 1e6);
+    } else if (a == "--cap-samples") {
+      o.fit.cap_samples = positiveInt(a, optionValue(args, i));
     } else if (a == "--threads") {
       o.fit.threads = positiveInt(a, optionValue(args, i));
     } else if (a == "--cache") {

@@ -66,6 +66,7 @@ TEST(CliHostile, IntegerOptionsAreParsedStrictly) {
                                                           {"stability", "--size"},
                                                           {"accuracy", "--threads"},
                                                           {"ltc-fit", "--size"},
+                                                          {"ltc-fit", "--cap-samples"},
                                                           {"trade", scene(), "--frames"}};
   for (const auto& c : commands) {
     for (const char* bad : {"5abc", "", "-1", "99999999999999999999", "1.5", " 5", "\xd9\xa5"}) {
@@ -77,6 +78,19 @@ TEST(CliHostile, IntegerOptionsAreParsedStrictly) {
       std::string err;
       EXPECT_EQ(run(args, &err), 2) << args[0] << " " << c.back() << " '" << bad << "'";
       EXPECT_NE(err.find(c.back() + " expects an integer in"), std::string::npos) << err;
+    }
+  }
+}
+
+// The real-valued options of ltc-fit: the whole value a number in range (not NaN, not a prefix of
+// the string), else a usage error naming the option before anything is fitted.
+TEST(CliHostile, NumberOptionsAreParsedStrictly) {
+  for (const char* option : {"--power", "--cap-weight"}) {
+    for (const char* bad : {"abc", "", "2x", "nan", "inf", "-1", "1e9", " 3"}) {
+      std::string err;
+      EXPECT_EQ(run({"ltc-fit", option, bad, "--zzzz-not-an-option"}, &err), 2)
+          << option << " '" << bad << "'";
+      EXPECT_NE(err.find(std::string(option) + " expects a number in"), std::string::npos) << err;
     }
   }
 }

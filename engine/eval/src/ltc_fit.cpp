@@ -237,25 +237,110 @@ double ltcFitError(const LtcParams& p, float roughness, float NoV, double norm, 
   return fitError(makeSamples(roughness, NoV, norm, per_dim), p);
 }
 
+namespace {
+
+// The cap term of the fit (LtcFitOptions::cap_weight): caps (cones of angular radius kCapRadii)
+// centered on directions of the lobe and on the mirror direction, each with the normalized lobe's
+// integral over it, which does not depend on the parameters. Only caps entirely above the
+// horizon (the lobe is 0 below it; the LTC's sphere integral there is the horizon-clipped
+// approximation, not what the fit should match).
+struct LobeCap {
+  glm::vec3 center;
+  float radius = 0.0f;
+  double lobe = 0.0;  // integral over the cap of f (n.l) / n_f
+};
+constexpr float kCapRadii[] = {0.05f, 0.25f, 0.5f};  // radians: 2.9, 14.3 and 28.6 degrees
+constexpr int kCapCenters = 24;                      // lobe directions per radius
+
+std::vector<LobeCap> lobeCaps(float roughness, float NoV, double norm, int samples_per_dim) {
+  const float alpha = cellAlpha(roughness);
+  const glm::vec3 V = cellView(NoV);
+  const float nov = std::max(V.z, g::HV_MIN_NOV);
+  const float G1 = g::G1_SmithGGX(alpha, nov);
+  // The lobe's integral over each cap from GGX visible-normal samples (estimator as in
+  // integrateLtcLobe: f (n.l) / pdf = 4 N.V V_corr (n.l) / G1(V)).
+  const int n = samples_per_dim * samples_per_dim;
+  std::vector<glm::vec3> dirs;
+  std::vector<double> weights;
+  for (int i = 0; i < n; ++i) {
+    const glm::vec3 l = glm::reflect(-V, g::sampleGGXVNDF(V, alpha, hammersley2(i, n)));
+    if (l.z <= 0.0f) continue;
+    dirs.push_back(l);
+    weights.push_back(4.0 * nov * g::V_SmithGGXCorrelated(alpha, nov, l.z) * l.z / G1 / norm /
+                      double(n));
+  }
+  std::vector<LobeCap> caps;
+  for (float r : kCapRadii) {
+    // Centers: lobe directions from the middle half of the visible normals' second coordinate
+    // (the lobe's core and flanks, not its far tail), then the mirror direction.
+    for (int k = 0; k <= kCapCenters; ++k) {
+      const glm::vec2 u = hammersley2(k, kCapCenters);
+      const glm::vec3 H = k == kCapCenters
+                              ? glm::vec3(0.0f, 0.0f, 1.0f)
+                              : g::sampleGGXVNDF(V, alpha, glm::vec2(u.x, 0.25f + 0.5f * u.y));
+      const glm::vec3 c = glm::reflect(-V, H);
+      if (c.z <= std::sin(r) + 0.01f) continue;
+      LobeCap cap{c, r, 0.0};
+      const float cos_r = std::cos(r);
+      for (size_t i = 0; i < dirs.size(); ++i) {
+        if (glm::dot(dirs[i], c) >= cos_r) cap.lobe += weights[i];
+      }
+      caps.push_back(cap);
+    }
+  }
+  return caps;
+}
+
+// sum over the caps of (integral of D_ltc - the lobe's)^2 / sum of the lobe's integrals^2: the
+// relative error of sphere lights of those sizes and places, as ltcSphereIntegral shades them.
+double capError(const std::vector<LobeCap>& caps, const LtcParams& p, float alpha,
+                const glm::vec3& V) {
+  const g::Ltc l = cellLtc(p, alpha, V);
+  double e = 0.0, sum = 0.0;
+  for (const LobeCap& c : caps) {
+    const double I = g::ltcSphereIntegral(l, c.center, std::sin(c.radius));
+    e += (I - c.lobe) * (I - c.lobe);
+    sum += c.lobe * c.lobe;
+  }
+  return sum > 0.0 ? e / sum : 0.0;
+}
+
+}  // namespace
+
 LtcCell fitLtcCell(float roughness, float NoV, const LtcParams& start, const LtcFitOptions& o) {
   const LtcLobeMoments m = integrateLtcLobe(roughness, NoV, o.moment_samples);
   const float dx = float(m.mean.x);
   const CellSamples s = makeSamples(roughness, NoV, m.norm, o.fit_samples);
-  auto f = [&](const std::array<double, 4>& x) {
-    // Widths outside [1e-3, 1e3] (times alpha) are not lobes; a large value keeps the simplex out.
-    if (std::abs(x[0]) > 6.9 || std::abs(x[1]) > 6.9) return 1e30;
-    return fitErrorP(s, toParams(x, dx), o.error_power);
-  };
-  LtcCell c;
+  const std::vector<LobeCap> caps =
+      o.cap_weight > 0.0 ? lobeCaps(roughness, NoV, m.norm, o.cap_samples) : std::vector<LobeCap>{};
   const std::array<double, 4> x0 = {std::log(double(std::max(start.ax, 1e-3f))),
                                     std::log(double(std::max(start.ay, 1e-3f))), double(start.sk),
                                     0.0};
+  // The pointwise norm relative to its value at the start, so that cap_weight means the same in
+  // every cell (the norm's scale grows with the lobe's peak).
+  const double e0 =
+      caps.empty() ? 1.0 : std::max(fitErrorP(s, toParams(x0, dx), o.error_power), 1e-300);
+  auto f = [&](const std::array<double, 4>& x) {
+    // Widths outside [1e-3, 1e3] (times alpha) are not lobes; a large value keeps the simplex out.
+    if (std::abs(x[0]) > 6.9 || std::abs(x[1]) > 6.9) return 1e30;
+    const LtcParams p = toParams(x, dx);
+    double e = fitErrorP(s, p, o.error_power) / e0;
+    if (!caps.empty()) e += o.cap_weight * capError(caps, p, s.alpha, s.V);
+    return e;
+  };
+  LtcCell c;
   const std::array<double, 4> x = nelderMead(f, x0, o.max_iterations, c.iterations);
   c.params = toParams(x, dx);
   c.norm = m.norm;
   c.fresnel = m.fresnel;
   c.error = fitError(s, c.params);
   return c;
+}
+
+double ltcCapError(const LtcParams& p, float roughness, float NoV, double norm,
+                   int samples_per_dim) {
+  return capError(lobeCaps(roughness, NoV, norm, samples_per_dim), p, cellAlpha(roughness),
+                  cellView(NoV));
 }
 
 LtcParams ltcFitStart(const LtcTable& t, int i, int j) {
@@ -298,7 +383,13 @@ std::string ltcTableSource(const LtcTable& t, const LtcFitOptions& o, const std:
        "shaders/common/ltc.glsl, fitted to GGX x\n// height-correlated Smith x cos (F = 1): "
     << t.size << "x" << t.size << " cells, " << o.fit_samples << "^2 + " << o.fit_samples
     << "^2 fit samples, " << o.moment_samples << "^2 moment samples per cell,\n// minimizing "
-    << "integral |D_ltc - lobe|^" << o.error_power << ".\n";
+    << "integral |D_ltc - lobe|^" << o.error_power;
+  if (o.cap_weight > 0.0) {
+    s << " (relative to the start) + " << o.cap_weight
+      << " x the relative squared\n// error of the integrals over caps of the lobe ("
+      << o.cap_samples << "^2 lobe samples per cell)";
+  }
+  s << ".\n";
   std::snprintf(buf, sizeof buf,
                 "// L1 distance between each cell's LTC and its lobe: mean %.4f, worst %.4f.\n",
                 sum / double(t.cells.size()), worst);
@@ -325,16 +416,20 @@ std::string ltcTableSource(const LtcTable& t, const LtcFitOptions& o, const std:
     << "}  // namespace\n\nstd::span<const float> ltcTableData() { return kTable; }\n"
     << "std::string_view ltcTableProvenance() {\n  return \"" << command << " (size " << t.size
     << ", fit samples " << o.fit_samples << ", moment samples " << o.moment_samples
-    << ", error power " << o.error_power << ", fit version " << kLtcFitVersion
-    << ")\";\n}\n\n}  // namespace hv\n";
+    << ", error power " << o.error_power;
+  if (o.cap_weight > 0.0) {
+    s << ", cap weight " << o.cap_weight << ", cap samples " << o.cap_samples;
+  }
+  s << ", fit version " << kLtcFitVersion << ")\";\n}\n\n}  // namespace hv\n";
   return s.str();
 }
 
 std::string ltcCacheKey(const LtcFitOptions& o) {
   char buf[160];
-  std::snprintf(
-      buf, sizeof buf, "halfvec-ltc-fit v%d size %d fit %d moments %d iterations %d power %g",
-      kLtcFitVersion, o.size, o.fit_samples, o.moment_samples, o.max_iterations, o.error_power);
+  std::snprintf(buf, sizeof buf,
+                "halfvec-ltc-fit v%d size %d fit %d moments %d iterations %d power %g caps %g x %d",
+                kLtcFitVersion, o.size, o.fit_samples, o.moment_samples, o.max_iterations,
+                o.error_power, o.cap_weight, o.cap_weight > 0.0 ? o.cap_samples : 0);
   return buf;
 }
 

@@ -3,10 +3,14 @@
 // as C++. Per cell of (roughness, N.V): the magnitude n_f and the Fresnel weight integral are
 // integrated (not fitted); the widths a_x, a_y, the skew s of M and the tilt of its axis (started
 // at the lobe's mean direction, which is not the best axis: fitting it too cut the distance below
-// by 2x to 7x at roughness 0.045-0.1) are fitted by Nelder-Mead, minimizing the L1 distance
+// by 2x to 7x at roughness 0.045-0.1) are fitted by Nelder-Mead, minimizing
 // integral |D_ltc - f cos / n_f|^3 over the sphere (the L3 norm, as Heitz et al. 2016 section 4:
 // it weighs the lobe's peak, which small lights see, more than the L1 norm does; measured on the
-// sphere sweep, docs/lights.md). Each cell reports its L1 distance, which bounds the error of
+// sphere sweep, docs/lights.md); with cap_weight > 0 (not the committed table's fit), relative
+// to its value at the start plus cap_weight times the relative squared error of the LTC's
+// integrals over caps of 3, 14 and 29 degrees on the lobe (what sphere lights of those sizes see;
+// measured in docs/lights.md: more sphere configurations within 5%, worse near the horizon). Each
+// cell reports its L1 distance, which bounds the error of
 // any emitter's integral: for every region P of directions, |integral over P of
 // (D_ltc - f cos / n_f)| <= the distance, so a cell of distance e shades any light within e n_f
 // of the exact lobe (before the horizon approximation). Deterministic: fixed
@@ -55,6 +59,8 @@ struct LtcFitOptions {
   int moment_samples = 256;  // per dimension, for n_f, the Fresnel integral and the mean
   int max_iterations = 400;  // Nelder-Mead iterations per cell
   double error_power = 3.0;  // the fit minimizes integral |D_ltc - lobe|^error_power
+  double cap_weight = 0.0;   // + this x the caps' relative squared error (0: the norm alone)
+  int cap_samples = 128;     // per dimension, for the lobe's integral over each cap
   int threads = 0;           // 0: all cores
   std::function<void(int done, int total)> progress;  // one call per finished row (may be empty)
 };
@@ -65,6 +71,12 @@ struct LtcCell {
   double error = 0.0;  // the fitted cell's L1 distance (ltcFitError with the fit's samples)
   int iterations = 0;
 };
+
+// The relative squared error of the cell's LTC with parameters p over the fit's caps (the term
+// cap_weight multiplies): sum over the caps of (integral of D_ltc - the lobe's)^2 / sum of the
+// lobe's integrals^2, the LTC's integrals as ltcSphereIntegral shades a sphere light.
+double ltcCapError(const LtcParams& p, float roughness, float NoV, double norm,
+                   int samples_per_dim);
 
 // One cell fitted from `start` (the previous cell of its row, or the identity for the first).
 LtcCell fitLtcCell(float roughness, float NoV, const LtcParams& start, const LtcFitOptions& o);
