@@ -129,6 +129,19 @@ int positiveInt(const std::string& option, const std::string& v) {
   return intInRange(option, v, 1, 1000000);
 }
 
+double numberInRange(const std::string& option, const std::string& v, double lo, double hi) {
+  char* end = nullptr;
+  const double x = std::strtod(v.c_str(), &end);
+  // strtod skips leading white space; the value must not start with any.
+  const bool space = !v.empty() && std::isspace(static_cast<unsigned char>(v[0]));
+  if (v.empty() || space || end != v.c_str() + v.size() || !(x >= lo && x <= hi)) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, " expects a number in [%g, %g], got '", lo, hi);
+    throw UsageError{option + buf + v + "'"};
+  }
+  return x;
+}
+
 std::string optionValue(const Args& args, size_t& i) {
   if (i + 1 >= args.size()) throw UsageError{args[i] + " needs a value"};
   return args[++i];

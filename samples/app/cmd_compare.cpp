@@ -1,5 +1,6 @@
 // `halfvec compare TEST REF`: error metrics of an image against a reference, and a pass/fail exit
 // status for regression tests (docs/testing.md).
+#include <cmath>
 #include <cstdio>
 #include <cctype>
 #include <cstdlib>
@@ -48,12 +49,7 @@ struct CompareArgs {
 };
 
 double parseTolerance(const std::string& option, const std::string& v) {
-  char* end = nullptr;
-  const double x = std::strtod(v.c_str(), &end);
-  if (v.empty() || *end != '\0' || !(x >= 0.0)) {
-    throw UsageError{option + " expects a number >= 0, got '" + v + "'"};
-  }
-  return x;
+  return numberInRange(option, v, 0.0, HUGE_VAL);
 }
 
 CompareArgs parse(const Args& args) {

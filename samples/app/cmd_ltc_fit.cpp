@@ -1,6 +1,5 @@
 // `halfvec ltc-fit`: fits the LTC table of shaders/common/ltc.glsl (engine/eval ltc_fit.hpp) and
 // writes it as engine/shading/src/ltc_table.cpp; the fit is cached.
-#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -48,20 +47,6 @@ struct Options {
   bool one_cell = false;
   float cell_roughness = 0.5f, cell_nov = 0.5f;
 };
-
-// `v` as a number in [lo, hi], the whole string; else UsageError naming the option and the value.
-double numberInRange(const std::string& option, const std::string& v, double lo, double hi) {
-  char* end = nullptr;
-  const double x = std::strtod(v.c_str(), &end);
-  // strtod skips leading white space; the value must not start with any.
-  const bool space = !v.empty() && std::isspace(static_cast<unsigned char>(v[0]));
-  if (v.empty() || space || end != v.c_str() + v.size() || !(x >= lo && x <= hi)) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, " expects a number in [%g, %g], got '", lo, hi);
-    throw UsageError{option + buf + v + "'"};
-  }
-  return x;
-}
 
 Options parseArgs(const Args& args) {
   Options o;

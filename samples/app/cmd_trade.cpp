@@ -1,5 +1,6 @@
 // `halfvec trade`: the speed/accuracy trade report of a scene (halfvec/eval/trade.hpp,
 // docs/trade.md).
+#include <cmath>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -156,12 +157,9 @@ struct TradeArgs {
   bool size_given = false, help = false;
 };
 
+// --max-error, --max-ms: a bound of 0 admits nothing.
 double positiveNumber(const std::string& option, const std::string& v) {
-  char* end = nullptr;
-  const double x = std::strtod(v.c_str(), &end);
-  if (!end || *end || !(x > 0.0))
-    throw UsageError{option + " expects a number > 0, got '" + v + "'"};
-  return x;
+  return numberInRange(option, v, 1e-9, HUGE_VAL);
 }
 
 TradeArgs parseTradeArgs(const Args& args) {

@@ -55,6 +55,9 @@ std::string optionValue(const Args& args, size_t& i);
 // expects an integer in <lo>..<hi>, got '<v>'".
 int intInRange(const std::string& option, const std::string& v, int lo, int hi);
 int positiveInt(const std::string& option, const std::string& v);  // 1..1,000,000
+// `v` as a number in [lo, hi] (hi may be infinity), the whole string (no leading space, not NaN);
+// else UsageError "<option> expects a number in [<lo>, <hi>], got '<v>'".
+double numberInRange(const std::string& option, const std::string& v, double lo, double hi);
 
 // A positional argument of a command that takes one scene file: stores it in `scene`; throws
 // UsageError for an unknown option (a leading '-') or a second scene file.

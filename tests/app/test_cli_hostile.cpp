@@ -93,6 +93,25 @@ TEST(CliHostile, NumberOptionsAreParsedStrictly) {
       EXPECT_NE(err.find(std::string(option) + " expects a number in"), std::string::npos) << err;
     }
   }
+  // compare's tolerances (>= 0) and trade's bounds (> 0) parse the same way.
+  const std::vector<std::vector<std::string>> others = {
+      {"compare", "a.pfm", "b.pfm", "--max-abs"},
+      {"compare", "a.pfm", "b.pfm", "--heatmap-max"},
+      {"trade", "--max-error"},
+      {"trade", "--max-ms"}};
+  for (const auto& c : others) {
+    for (const char* bad : {"abc", "", "2x", "nan", " 3", "-1"}) {
+      std::vector<std::string> args = c;
+      args.push_back(bad);
+      args.push_back("--zzzz-not-an-option");
+      std::string err;
+      EXPECT_EQ(run(args, &err), 2) << c.back() << " '" << bad << "'";
+      EXPECT_NE(err.find(c.back() + " expects a number in"), std::string::npos) << err;
+    }
+  }
+  std::string err;
+  EXPECT_EQ(run({"trade", "--max-ms", "0", "--zzzz-not-an-option"}, &err), 2);
+  EXPECT_NE(err.find("--max-ms expects a number in"), std::string::npos) << err;
 }
 
 TEST(CliHostile, UnwritableOutputFailsBeforeRenderingAndLeavesNothing) {
