@@ -46,6 +46,13 @@ double vndfPdf(float alpha, const glm::vec3& V, const glm::vec3& l) {
   return double(g::pdfGGXVNDF(V, H, alpha)) / (4.0 * VoH);
 }
 
+// The weight f (n.l) / pdf of a direction l = reflect(-V, H), H from sampleGGXVNDF (N.V = nov,
+// clamped as the lobe clamps it; G1 = G1(V)): D V_corr (n.l) / (G1(V) D / (4 N.V)) =
+// 4 N.V V_corr (n.l) / G1(V).
+double lobeOverVndfPdf(float alpha, float nov, float G1, float NoL) {
+  return 4.0 * nov * g::V_SmithGGXCorrelated(alpha, nov, NoL) * NoL / G1;
+}
+
 glm::vec2 hammersley2(int i, int n) {
   return g::hammersley(uint32_t(i), uint32_t(n));
 }
@@ -206,16 +213,15 @@ LtcLobeMoments integrateLtcLobe(float roughness, float NoV, int per_dim) {
   const float alpha = cellAlpha(roughness);
   const glm::vec3 V = cellView(NoV);
   const int n = per_dim * per_dim;
-  const float G1 = g::G1_SmithGGX(alpha, std::max(V.z, g::HV_MIN_NOV));
+  const float nov = std::max(V.z, g::HV_MIN_NOV);
+  const float G1 = g::G1_SmithGGX(alpha, nov);
   double norm = 0.0, fresnel = 0.0;
   glm::dvec3 mean(0.0);
   for (int i = 0; i < n; ++i) {
     const glm::vec3 H = g::sampleGGXVNDF(V, alpha, hammersley2(i, n));
     const glm::vec3 l = glm::reflect(-V, H);
     if (l.z <= 0.0f) continue;
-    // f (n.l) / pdf = D V_corr (n.l) / (G1(V) D / (4 N.V)) = 4 N.V V_corr (n.l) / G1(V).
-    const double w = 4.0 * std::max(V.z, g::HV_MIN_NOV) *
-                     g::V_SmithGGXCorrelated(alpha, std::max(V.z, g::HV_MIN_NOV), l.z) * l.z / G1;
+    const double w = lobeOverVndfPdf(alpha, nov, G1, l.z);
     const double VoH = std::clamp(double(glm::dot(V, H)), 0.0, 1.0);
     norm += w;
     fresnel += w * std::pow(1.0 - VoH, 5.0);
@@ -257,8 +263,7 @@ std::vector<LobeCap> lobeCaps(float roughness, float NoV, double norm, int sampl
   const glm::vec3 V = cellView(NoV);
   const float nov = std::max(V.z, g::HV_MIN_NOV);
   const float G1 = g::G1_SmithGGX(alpha, nov);
-  // The lobe's integral over each cap from GGX visible-normal samples (estimator as in
-  // integrateLtcLobe: f (n.l) / pdf = 4 N.V V_corr (n.l) / G1(V)).
+  // The lobe's integral over each cap from GGX visible-normal samples (as integrateLtcLobe).
   const int n = samples_per_dim * samples_per_dim;
   std::vector<glm::vec3> dirs;
   std::vector<double> weights;
@@ -266,8 +271,7 @@ std::vector<LobeCap> lobeCaps(float roughness, float NoV, double norm, int sampl
     const glm::vec3 l = glm::reflect(-V, g::sampleGGXVNDF(V, alpha, hammersley2(i, n)));
     if (l.z <= 0.0f) continue;
     dirs.push_back(l);
-    weights.push_back(4.0 * nov * g::V_SmithGGXCorrelated(alpha, nov, l.z) * l.z / G1 / norm /
-                      double(n));
+    weights.push_back(lobeOverVndfPdf(alpha, nov, G1, l.z) / norm / double(n));
   }
   std::vector<LobeCap> caps;
   for (float r : kCapRadii) {
