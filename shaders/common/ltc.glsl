@@ -19,8 +19,14 @@
 // so M maps the cosine's axis onto Z' exactly and its x and y axes onto lobe widths a_x, a_y,
 // with s the skew of the lobe toward (or away from) the mean direction. For small alpha every
 // width scales as alpha, so the table stores a_x / alpha, a_y / alpha, s / alpha (nearly
-// constant as alpha -> 0: what bilinear filtering interpolates well) and d_x; the second texture
-// stores the magnitudes n_f and the Fresnel weight integral of (1 - V.H)^5.
+// constant as alpha -> 0: what bilinear filtering interpolates well) and the axis as its tilt
+// tau from the mirror direction: Z''s polar angle (toward the mirror side, d_x = -sin) is
+// acos(N.V) + tau. d_x itself varies fastest where N.V -> 0 and its bilinear interpolation
+// between rows there moved a glossy lobe's axis by about its width (at roughness 0.05, N.V
+// 0.048: the table's LTC integrated a light at the lobe's edge to 1.63 times what the LTC fitted
+// at that N.V does); tau is small and smooth (-2e-4 to -4e-5 rad at roughness 0.045 on the
+// grazing rows). The second texture stores the magnitudes n_f and the Fresnel weight integral of
+// (1 - V.H)^5.
 #ifndef HV_LTC_GLSL
 #define HV_LTC_GLSL
 
@@ -30,20 +36,16 @@
 #include "sampling.glsl"
 
 // Table: HV_LTC_TABLE_SIZE^2 cells; x = (roughness - HV_MIN_ROUGHNESS) / (1 - HV_MIN_ROUGHNESS),
-// y = sqrt(1 - N.V) (more cells toward grazing views, where the lobe changes fastest); cell (i,j)
-// is fitted at x = i / (size - 1), y = j / (size - 1). Two RGBA textures (texture units below),
+// y = sqrt((1 - N.V) / (1 - HV_LTC_MIN_NOV)) (more cells toward grazing views, where the lobe
+// changes fastest; the last row is the smallest N.V looked up, not a lobe no pixel reads, whose
+// bilinear blend into the rows above it the table had before); cell (i,j) is fitted at
+// x = i / (size - 1), y = j / (size - 1). Two RGBA textures (texture units below),
 // sampled with linear filtering and clamp-to-edge: tex 0 = (a_x / alpha, a_y / alpha, s / alpha,
-// d_x), tex 1 = (n_f, n_fresnel, 0, 0) with n_fresnel = integral of f (n.l) (1 - V.H)^5.
+// tau), tex 1 = (n_f, n_fresnel, 0, 0) with n_fresnel = integral of f (n.l) (1 - V.H)^5.
 #define HV_LTC_TABLE_SIZE 64
 #define HV_LTC_TEXTURE_UNIT0 6
 #define HV_LTC_TEXTURE_UNIT1 7
 
-// Cell coordinates (texel units, 0 .. size - 1) of a roughness and N.V.
-vec2 ltcCellCoord(float roughness, float NoV) {
-  float x = saturate((roughness - HV_MIN_ROUGHNESS) / (1.0f - HV_MIN_ROUGHNESS));
-  float y = sqrt(saturate(1.0f - NoV));
-  return vec2(x, y) * float(HV_LTC_TABLE_SIZE - 1);
-}
 // Smallest N.V the LTC modes look up. Toward N.V = 0 the lobe's width across the plane of
 // incidence goes to 0 (a_y ~ 2 alpha N.V), and below N.V = 0.02 at the lowest roughness the
 // cosine space is stretched by 1e4 or more across, beyond what the cone integral's float
@@ -51,16 +53,27 @@ vec2 ltcCellCoord(float roughness, float NoV) {
 // pixels below it are shaded with the lobe of N.V = 0.02.
 const float HV_LTC_MIN_NOV = 0.02f;
 
+// Cell coordinates (texel units, 0 .. size - 1) of a roughness and N.V.
+vec2 ltcCellCoord(float roughness, float NoV) {
+  float x = saturate((roughness - HV_MIN_ROUGHNESS) / (1.0f - HV_MIN_ROUGHNESS));
+  float y = saturate(sqrt(saturate(1.0f - NoV)) * inversesqrt(1.0f - HV_LTC_MIN_NOV));
+  return vec2(x, y) * float(HV_LTC_TABLE_SIZE - 1);
+}
+
 // Texture coordinates of the same point: texel centers at (i + 0.5) / size.
 vec2 ltcTableUv(float roughness, float NoV) {
   return (ltcCellCoord(roughness, max(NoV, HV_LTC_MIN_NOV)) + vec2(0.5f)) *
          (1.0f / float(HV_LTC_TABLE_SIZE));
 }
-// The (roughness, N.V) a cell is fitted at (inverse of ltcCellCoord at integer coordinates).
+// The (roughness, N.V) at table coordinates x, y in [0, 1] (inverse of ltcCellCoord / (size - 1)).
+vec2 ltcTableParameters(float x, float y) {
+  return vec2(HV_MIN_ROUGHNESS + (1.0f - HV_MIN_ROUGHNESS) * x,
+              max(1.0f - y * y * (1.0f - HV_LTC_MIN_NOV), HV_LTC_MIN_NOV));
+}
+// The (roughness, N.V) a cell is fitted at.
 vec2 ltcCellParameters(int i, int j) {
-  float x = float(i) / float(HV_LTC_TABLE_SIZE - 1);
-  float y = float(j) / float(HV_LTC_TABLE_SIZE - 1);
-  return vec2(HV_MIN_ROUGHNESS + (1.0f - HV_MIN_ROUGHNESS) * x, max(1.0f - y * y, HV_MIN_NOV));
+  return ltcTableParameters(float(i) / float(HV_LTC_TABLE_SIZE - 1),
+                            float(j) / float(HV_LTC_TABLE_SIZE - 1));
 }
 
 // One LTC in world space, as what the integrals need: the rows of alpha M^-1 (world -> cosine
@@ -76,27 +89,47 @@ struct Ltc {
   float peak;     // D at the cosine's axis (its largest value): 1 / (pi a_x a_y)
 };
 
-// The LTC of a table cell's parameters (tex 0) for the unit normal N, unit view V and the
-// surface's alpha. The frame's T1 is V's component along the surface; at normal incidence any
-// tangent does (the lobe is then symmetric about N): a 1e-6 nudge toward tangentFrame's T picks
-// one without a branch and changes nothing measurable otherwise.
-Ltc makeLtc(vec3 N, vec3 V, float alpha, vec4 params) {
+// The table's tilt tau of a lobe axis (d_x, d_z) fitted at N.V = cos_v (see the top).
+float ltcTiltFromAxis(float dx, float cos_v) {
+  return asin(clamp(-dx, -1.0f, 1.0f)) - acos(clamp(cos_v, 0.0f, 1.0f));
+}
+// The axis (d_x, d_z) of the tilt tau at N.V = cos_v: the polar angle acos(cos_v) + tau, at most
+// the horizon's (d_z >= 0).
+vec2 ltcAxisFromTilt(float tau, float cos_v) {
+  float sin_v = sqrt(max(1.0f - cos_v * cos_v, 0.0f));
+  float st = sin(tau);
+  float ct = cos(tau);
+  vec2 a = vec2(-(sin_v * ct + cos_v * st), max(cos_v * ct - sin_v * st, 0.0f));
+  return a * inversesqrt(max(dot(a, a), 1e-30f));
+}
+
+// The LTC of the widths and skew (a_x/alpha, a_y/alpha, s/alpha) and the axis (d_x, d_z) in the
+// plane of incidence, for the unit normal N, unit view V and the surface's alpha. The frame's
+// T1 is V's component along the surface; at normal incidence any tangent does (the lobe is then
+// symmetric about N): a 1e-6 nudge toward tangentFrame's T picks one without a branch and
+// changes nothing measurable otherwise.
+Ltc makeLtcAxis(vec3 N, vec3 V, float alpha, vec3 shape, float dx, float dz) {
   vec3 T;
   vec3 B;
   tangentFrame(N, T, B);
   vec3 T1 = safeNormalize(V - N * dot(N, V) + 1e-6f * T);
   vec3 T2 = cross(N, T1);
-  float dx = params.w;
-  float dz = sqrt(max(1.0f - dx * dx, 0.0f));
   vec3 Xp = T1 * dz - N * dx;
   vec3 Zp = T1 * dx + N * dz;
   Ltc l;
-  l.i0 = Xp / params.x;
-  l.i1 = T2 / params.y;
-  l.i2 = Zp * alpha - Xp * (params.z / params.x);
-  l.det_inv = alpha / (params.x * params.y);
-  l.peak = INV_PI / (alpha * alpha * params.x * params.y);
+  l.i0 = Xp / shape.x;
+  l.i1 = T2 / shape.y;
+  l.i2 = Zp * alpha - Xp * (shape.z / shape.x);
+  l.det_inv = alpha / (shape.x * shape.y);
+  l.peak = INV_PI / (alpha * alpha * shape.x * shape.y);
   return l;
+}
+
+// The LTC of a table cell's parameters (tex 0) for N, V and alpha; the axis's tilt is taken from
+// the mirror direction at the N.V the table is read at (ltcTableUv: at least HV_LTC_MIN_NOV).
+Ltc makeLtc(vec3 N, vec3 V, float alpha, vec4 params) {
+  vec2 a = ltcAxisFromTilt(params.w, max(dot(N, V), HV_LTC_MIN_NOV));
+  return makeLtcAxis(N, V, alpha, vec3(params.x, params.y, params.z), a.x, a.y);
 }
 
 // The identity LTC about N (D = the clamped cosine itself): Lambertian irradiance.

@@ -57,8 +57,10 @@ glm::vec2 hammersley2(int i, int n) {
   return g::hammersley(uint32_t(i), uint32_t(n));
 }
 
+// The fit works with the axis's d_x (d_z >= 0); the table stores its tilt (ltcTableTilt).
 g::Ltc cellLtc(const LtcParams& p, float alpha, const glm::vec3& V) {
-  return g::makeLtc(glm::vec3(0.0f, 0.0f, 1.0f), V, alpha, glm::vec4(p.ax, p.ay, p.sk, p.dx));
+  return g::makeLtcAxis(glm::vec3(0.0f, 0.0f, 1.0f), V, alpha, glm::vec3(p.ax, p.ay, p.sk), p.dx,
+                        std::sqrt(std::max(1.0f - p.dx * p.dx, 0.0f)));
 }
 
 // M (up to a positive factor) of an LTC: the inverse of its rows alpha M^-1.
@@ -347,6 +349,10 @@ double ltcCapError(const LtcParams& p, float roughness, float NoV, double norm,
                   cellView(NoV));
 }
 
+float ltcTableTilt(const LtcParams& p, float NoV) {
+  return g::ltcTiltFromAxis(p.dx, NoV);
+}
+
 LtcParams ltcFitStart(const LtcTable& t, int i, int j) {
   return i + 1 < t.size ? t.at(i + 1, j).params : LtcParams{};
 }
@@ -359,11 +365,10 @@ LtcTable fitLtcTable(const LtcFitOptions& o) {
   std::mutex progress_mutex;
   detail::parallelFor(o.size, o.threads, [&](int j) {
     for (int i = o.size - 1; i >= 0; --i) {
-      const float x = float(i) / float(o.size - 1), y = float(j) / float(o.size - 1);
-      const float roughness = g::HV_MIN_ROUGHNESS + (1.0f - g::HV_MIN_ROUGHNESS) * x;
-      const float NoV = std::max(1.0f - y * y, g::HV_MIN_NOV);
+      const glm::vec2 rn =
+          g::ltcTableParameters(float(i) / float(o.size - 1), float(j) / float(o.size - 1));
       t.cells[size_t(j) * size_t(o.size) + size_t(i)] =
-          fitLtcCell(roughness, NoV, ltcFitStart(t, i, j), o);
+          fitLtcCell(rn.x, rn.y, ltcFitStart(t, i, j), o);
     }
     const int d = ++done;
     if (o.progress) {
@@ -399,7 +404,7 @@ std::string ltcTableSource(const LtcTable& t, const LtcFitOptions& o, const std:
                 sum / double(t.cells.size()), worst);
   s << buf << "// clang-format off\n#include \"halfvec/shading/ltc_table.hpp\"\n"
     << "#include \"halfvec/shading/shading.hpp\"\n\nnamespace hv {\nnamespace {\n"
-    << "// Per cell: a_x/alpha, a_y/alpha, s/alpha, d_x, n_f, n_fresnel, fit error, 0.\n"
+    << "// Per cell: a_x/alpha, a_y/alpha, s/alpha, tilt, n_f, n_fresnel, fit error, 0.\n"
     << "constexpr float kTable[] = {\n";
   // A float literal that reads back as the same float: 9 significant digits, and a '.' or an
   // exponent before the f suffix.
@@ -410,10 +415,14 @@ std::string ltcTableSource(const LtcTable& t, const LtcFitOptions& o, const std:
     if (r.find_first_of(".en") == std::string::npos) r += ".0";
     return r + "f";
   };
-  for (const LtcCell& c : t.cells) {
-    s << "    " << literal(c.params.ax) << ", " << literal(c.params.ay) << ", "
-      << literal(c.params.sk) << ", " << literal(c.params.dx) << ", " << literal(c.norm) << ", "
-      << literal(c.fresnel) << ", " << literal(c.error) << ", 0.0f,\n";
+  for (int j = 0; j < t.size; ++j) {
+    const float NoV = g::ltcTableParameters(0.0f, float(j) / float(t.size - 1)).y;
+    for (int i = 0; i < t.size; ++i) {
+      const LtcCell& c = t.at(i, j);
+      s << "    " << literal(c.params.ax) << ", " << literal(c.params.ay) << ", "
+        << literal(c.params.sk) << ", " << literal(ltcTableTilt(c.params, NoV)) << ", "
+        << literal(c.norm) << ", " << literal(c.fresnel) << ", " << literal(c.error) << ", 0.0f,\n";
+    }
   }
   s << "};\nstatic_assert(sizeof(kTable) / sizeof(float) ==\n"
     << "              HV_LTC_TABLE_SIZE * HV_LTC_TABLE_SIZE * kLtcFloatsPerCell);\n"

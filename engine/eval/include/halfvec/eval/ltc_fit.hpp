@@ -93,12 +93,16 @@ LtcTable fitLtcTable(const LtcFitOptions& o);
 // The start of cell (i, j) in fitLtcTable: the fitted cell (i + 1, j), or the identity.
 LtcParams ltcFitStart(const LtcTable& t, int i, int j);
 
+// The table's 4th value of a cell fitted to p at N.V: the tilt of its axis from the mirror
+// direction (ltc.glsl, ltcTiltFromAxis).
+float ltcTableTilt(const LtcParams& p, float NoV);
+
 // The C++ source of engine/shading/src/ltc_table.cpp for `t`, with a header naming `command`.
 std::string ltcTableSource(const LtcTable& t, const LtcFitOptions& o, const std::string& command);
 
 // A cache file of a fitted table: binary, keyed by the options and kLtcFitVersion (a fit with
 // other options or another version of the fitting code does not match).
-inline constexpr int kLtcFitVersion = 2;
+inline constexpr int kLtcFitVersion = 3;
 std::string ltcCacheKey(const LtcFitOptions& o);
 bool loadLtcCache(const std::string& path, const LtcFitOptions& o, LtcTable& t);
 std::string ltcCacheBytes(const LtcTable& t, const LtcFitOptions& o);
