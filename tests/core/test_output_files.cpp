@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include <signal.h>
 #include <unistd.h>
 
 #include "halfvec/core/output_files.hpp"
@@ -78,5 +79,30 @@ TEST(OutputFiles, UnwritableDestinationsFailAtAdd) {
     fs::permissions(ro, fs::perms::owner_read | fs::perms::owner_exec);
     EXPECT_THROW(out.add(ro / "x.png"), OutputError);
     fs::permissions(ro, fs::perms::owner_all);
+  }
+}
+
+// A run ended by a signal before commit (Ctrl-C, kill, a closed pipe as in `halfvec ... | head`)
+// leaves the previous outputs untouched and none of its temporary files, and still ends by that
+// signal. (Found when a killed `halfvec ltc-fit` left hidden .ltc_table.cpp.XXXXXX files.)
+TEST(OutputFilesDeathTest, ASignalRemovesTheTemporaries) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) {
+    struct sigaction now {};
+    ::sigaction(sig, nullptr, &now);
+    if (now.sa_handler == SIG_IGN) continue;  // ignored by whoever started the tests: not ours
+    const fs::path d = freshDir("signal" + std::to_string(sig));
+    writeFileAtomic(d / "image.png", "good");
+    EXPECT_EXIT(
+        {
+          OutputFiles out;
+          out.write(d / "image.png", "half-writ");
+          out.write(d / "stats.json", "{");
+          ::raise(sig);
+          std::exit(0);  // not reached: the signal ends the process
+        },
+        ::testing::KilledBySignal(sig), "");
+    EXPECT_EQ(slurp(d / "image.png"), "good") << "signal " << sig;
+    EXPECT_EQ(entries(d), 1u) << "signal " << sig << ": a temporary file was left";
   }
 }

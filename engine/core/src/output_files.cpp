@@ -1,13 +1,18 @@
 #include "halfvec/core/output_files.hpp"
 
 #include <fcntl.h>
+#include <limits.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <mutex>
 #include <system_error>
 
 namespace hv {
@@ -18,6 +23,64 @@ namespace {
 
 std::string why() {
   return std::strerror(errno);
+}
+
+// ---- Temporaries removed when a signal ends the process ----
+// A run interrupted by Ctrl-C (SIGINT), SIGTERM, SIGHUP or a closed pipe (SIGPIPE: `halfvec ... |
+// head`) never reaches commit() or the destructors, which would leave its temporary files (hidden,
+// half written) beside the destinations. Every live temporary is registered in a fixed table of
+// path buffers that the handler can read without allocating; the handler unlinks them
+// (async-signal-safe), then the signal takes its default action (SA_RESETHAND, re-raised), so the
+// process still ends as the signal says. Installed only for signals whose disposition is the
+// default (a program that handles or ignores one keeps its own).
+constexpr size_t kTemporarySlots = 64;  // more live temporaries are not protected
+struct TemporarySlot {
+  std::atomic<int> state{0};  // 0 free, 1 being filled, 2 registered
+  char path[PATH_MAX] = {};
+};
+std::array<TemporarySlot, kTemporarySlots> g_temporaries;
+constexpr int kCleanupSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
+
+extern "C" void removeTemporariesAndDie(int sig) {
+  for (TemporarySlot& slot : g_temporaries) {
+    if (slot.state.load(std::memory_order_acquire) == 2) ::unlink(slot.path);
+  }
+  ::raise(sig);  // delivered when the handler returns, with the default action (SA_RESETHAND)
+}
+
+void installCleanupHandlers() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    for (int sig : kCleanupSignals) {
+      struct sigaction old {};
+      if (::sigaction(sig, nullptr, &old) != 0 || old.sa_handler != SIG_DFL) continue;
+      struct sigaction sa {};
+      sa.sa_handler = removeTemporariesAndDie;
+      sigemptyset(&sa.sa_mask);
+      sa.sa_flags = SA_RESETHAND;
+      ::sigaction(sig, &sa, nullptr);
+    }
+  });
+}
+
+// The slot holding `path`, or -1 when the table is full or the path too long.
+int registerTemporary(const fs::path& path) {
+  installCleanupHandlers();
+  const std::string s = path.string();
+  if (s.size() >= PATH_MAX) return -1;
+  for (size_t i = 0; i < g_temporaries.size(); ++i) {
+    int expected = 0;
+    if (g_temporaries[i].state.compare_exchange_strong(expected, 1)) {
+      std::memcpy(g_temporaries[i].path, s.c_str(), s.size() + 1);
+      g_temporaries[i].state.store(2, std::memory_order_release);
+      return int(i);
+    }
+  }
+  return -1;
+}
+
+void unregisterTemporary(int slot) {
+  if (slot >= 0) g_temporaries[size_t(slot)].state.store(0, std::memory_order_release);
 }
 
 // Creates a new, empty file "<dir>/.<name>.<random>.tmp" beside `destination` (O_EXCL, so two
@@ -54,6 +117,7 @@ OutputFiles::~OutputFiles() {
   for (const File& f : files_) {
     std::error_code ec;
     fs::remove(f.temporary, ec);
+    unregisterTemporary(f.slot);
   }
 }
 
@@ -64,7 +128,8 @@ fs::path OutputFiles::add(const fs::path& destination) {
       throw OutputError(destination.string() + ": named twice as an output of one run");
     }
   }
-  files_.push_back({abs, createTemporary(abs)});
+  const fs::path tmp = createTemporary(abs);
+  files_.push_back({abs, tmp, registerTemporary(tmp)});
   return files_.back().temporary;
 }
 
@@ -89,6 +154,7 @@ void OutputFiles::commit() {
   for (size_t i = 0; i < pending.size(); ++i) {
     std::error_code ec;
     fs::rename(pending[i].temporary, pending[i].destination, ec);
+    if (!ec) unregisterTemporary(pending[i].slot);
     if (ec) {
       // Keep the rest for the destructor to clean up.
       files_.assign(pending.begin() + std::ptrdiff_t(i), pending.end());

@@ -7,8 +7,7 @@
 #include <optional>
 #include <sstream>
 
-#include <unistd.h>
-
+#include "halfvec/core/output_files.hpp"
 #include "halfvec/gl/log.hpp"
 
 namespace hv::gl {
@@ -188,10 +187,10 @@ bool readBinary(const fs::path& path, const BinaryKey& key, BinaryBlob& blob, st
 
 void writeBinary(const fs::path& path, const BinaryKey& key, const BinaryBlob& blob) {
   fs::create_directories(path.parent_path());
-  // Unique per process and write: parallel runs (ctest -j) never share a temporary file.
-  static int counter = 0;
-  const fs::path tmp =
-      path.string() + ".tmp" + std::to_string(getpid()) + "_" + std::to_string(counter++);
+  // A temporary file of its own beside the cache file (parallel runs, ctest -j, never share one),
+  // renamed over it when whole; removed if the write fails or a signal ends the run.
+  OutputFiles out;
+  const fs::path tmp = out.add(path);
   {
     std::ofstream o(tmp, std::ios::binary | std::ios::trunc);
     if (!o) throw ShaderError("program binary cache '" + tmp.string() + "': cannot open");
@@ -208,7 +207,7 @@ void writeBinary(const fs::path& path, const BinaryKey& key, const BinaryBlob& b
     o.write(reinterpret_cast<const char*>(&sum), 8);
     if (!o) throw ShaderError("program binary cache '" + tmp.string() + "': write failed");
   }
-  fs::rename(tmp, path);
+  out.commit();
 }
 
 std::string glString(GLenum e) {

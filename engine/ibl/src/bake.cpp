@@ -7,12 +7,11 @@
 #include <fstream>
 #include <sstream>
 
-#include <unistd.h>
-
 #include <glm/gtc/constants.hpp>
 
 #include "halfvec/ibl/ibl.hpp"
 #include "halfvec/ibl/ibl_math.hpp"
+#include "halfvec/core/output_files.hpp"
 #include "halfvec/core/parallel.hpp"
 
 namespace fs = std::filesystem;
@@ -78,7 +77,11 @@ bool readCube(std::istream& in, CubeMapF& c) {
 
 void writeCache(const fs::path& path, const IblBake& b) {
   fs::create_directories(path.parent_path());
-  const fs::path tmp = path.string() + ".tmp" + std::to_string(::getpid());
+  // Written to a temporary file of its own beside the cache file and renamed over it when whole
+  // (atomic: a concurrent reader sees the old file or the whole new one); the temporary is removed
+  // if the write fails or a signal ends the run.
+  OutputFiles out;
+  const fs::path tmp = out.add(path);
   {
     std::ofstream o(tmp, std::ios::binary);
     if (!o) throw IblError("IBL cache '" + tmp.string() + "': cannot open for writing");
@@ -93,7 +96,7 @@ void writeCache(const fs::path& path, const IblBake& b) {
     writeCube(o, b.irradiance);
     if (!o) throw IblError("IBL cache '" + tmp.string() + "': write failed");
   }
-  fs::rename(tmp, path);  // atomic: a concurrent reader sees the old file or the whole new one
+  out.commit();
 }
 
 bool readCache(const fs::path& path, IblBake& b) {

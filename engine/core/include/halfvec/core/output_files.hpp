@@ -2,7 +2,10 @@
 // temporary file in its destination folder and is renamed over the destination only when it is
 // complete, so an interrupted or failed run never leaves a truncated file where a good one was.
 // OutputFiles groups the outputs of one run: nothing is renamed until every one was written, and
-// a run that fails (an exception, an unwritable folder) leaves none of its outputs behind.
+// a run that fails (an exception, an unwritable folder) leaves none of its outputs behind, and
+// one ended by SIGINT, SIGTERM, SIGHUP or SIGPIPE none of its temporary files (a handler removes
+// them, then the signal ends the process as it would have; installed only where the signal's
+// disposition is the default).
 #pragma once
 
 #include <filesystem>
@@ -43,6 +46,7 @@ class OutputFiles {
  private:
   struct File {
     std::filesystem::path destination, temporary;
+    int slot = -1;  // its entry in the table the signal handler cleans up (-1: none)
   };
   std::vector<File> files_;
 };
