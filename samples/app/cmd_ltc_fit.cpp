@@ -92,7 +92,7 @@ int fitOneCell(const Options& o) {
   const eval::LtcCell c = eval::fitLtcCell(o.cell_roughness, o.cell_nov, {}, o.fit);
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf(
-      "roughness %g, N.V %g: a_x/alpha %.6g, a_y/alpha %.6g, s/alpha %.6g, d_x %.6g, n_f %.6g, "
+      "roughness %g, N.V %g: a_x/alpha %.6g, a_y/alpha %.6g, s %.6g, d_x %.6g, n_f %.6g, "
       "n_fresnel %.6g, L1 distance %.5f, %d iterations, %.2f s\n",
       o.cell_roughness, o.cell_nov, c.params.ax, c.params.ay, c.params.sk, c.params.dx, c.norm,
       c.fresnel, c.error, c.iterations, s);

@@ -17,9 +17,10 @@
 // Z' = (d_x, 0, d_z) and X' = (d_z, 0, -d_x):
 //   M = [X' T2 Z'] * [[a_x, 0, 0], [0, a_y, 0], [s, 0, 1]],
 // so M maps the cosine's axis onto Z' exactly and its x and y axes onto lobe widths a_x, a_y,
-// with s the skew of the lobe toward (or away from) the mean direction. For small alpha every
-// width scales as alpha, so the table stores a_x / alpha, a_y / alpha, s / alpha (nearly
-// constant as alpha -> 0: what bilinear filtering interpolates well) and the axis as its tilt
+// with s the skew of the lobe toward (or away from) the mean direction. For small alpha both
+// widths scale as alpha, so the table stores a_x / alpha, a_y / alpha (nearly constant as
+// alpha -> 0: what bilinear filtering interpolates well), the skew s itself (it shears the
+// axis's component, and stays O(0.01-1) at every roughness) and the axis as its tilt
 // tau from the mirror direction: Z''s polar angle (toward the mirror side, d_x = -sin) is
 // acos(N.V) + tau. d_x itself varies fastest where N.V -> 0 and its bilinear interpolation
 // between rows there moved a glossy lobe's axis by about its width (at roughness 0.05, N.V
@@ -40,8 +41,7 @@
 // changes fastest; the last row is the smallest N.V looked up, not a lobe no pixel reads, whose
 // bilinear blend into the rows above it the table had before); cell (i,j) is fitted at
 // x = i / (size - 1), y = j / (size - 1). Two RGBA textures (texture units below),
-// sampled with linear filtering and clamp-to-edge: tex 0 = (a_x / alpha, a_y / alpha, s / alpha,
-// tau), tex 1 = (n_f, n_fresnel, 0, 0) with n_fresnel = integral of f (n.l) (1 - V.H)^5.
+// sampled with linear filtering and clamp-to-edge: tex 0 = (a_x / alpha, a_y / alpha, s, tau), tex 1 = (n_f, n_fresnel, 0, 0) with n_fresnel = integral of f (n.l) (1 - V.H)^5.
 #define HV_LTC_TABLE_SIZE 64
 #define HV_LTC_TEXTURE_UNIT0 6
 #define HV_LTC_TEXTURE_UNIT1 7
@@ -80,7 +80,8 @@ vec2 ltcCellParameters(int i, int j) {
 // space; the factor alpha keeps every entry O(1) at low roughness, and any positive factor leaves
 // directions, hence the integrals, unchanged) and its determinant. From the parametrization,
 // M^-1 = A^-1 [X' T2 Z']^T with A^-1 = [[1/a_x, 0, 0], [0, 1/a_y, 0], [-s/a_x, 0, 1]]: rows
-// X'/a_x, T2/a_y, Z' - (s/a_x) X'; times alpha with the table's a_x/alpha, a_y/alpha, s/alpha.
+// X'/a_x, T2/a_y, Z' - (s/a_x) X'; times alpha with the table's a_x/alpha, a_y/alpha and s:
+// X'/(a_x/alpha), T2/(a_y/alpha), alpha Z' - (s/(a_x/alpha)) X'.
 struct Ltc {
   vec3 i0;
   vec3 i1;
@@ -103,7 +104,7 @@ vec2 ltcAxisFromTilt(float tau, float cos_v) {
   return a * inversesqrt(max(dot(a, a), 1e-30f));
 }
 
-// The LTC of the widths and skew (a_x/alpha, a_y/alpha, s/alpha) and the axis (d_x, d_z) in the
+// The LTC of the widths and skew (a_x/alpha, a_y/alpha, s) and the axis (d_x, d_z) in the
 // plane of incidence, for the unit normal N, unit view V and the surface's alpha. The frame's
 // T1 is V's component along the surface; at normal incidence any tangent does (the lobe is then
 // symmetric about N): a 1e-6 nudge toward tangentFrame's T picks one without a branch and

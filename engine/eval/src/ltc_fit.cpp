@@ -404,7 +404,7 @@ std::string ltcTableSource(const LtcTable& t, const LtcFitOptions& o, const std:
                 sum / double(t.cells.size()), worst);
   s << buf << "// clang-format off\n#include \"halfvec/shading/ltc_table.hpp\"\n"
     << "#include \"halfvec/shading/shading.hpp\"\n\nnamespace hv {\nnamespace {\n"
-    << "// Per cell: a_x/alpha, a_y/alpha, s/alpha, tilt, n_f, n_fresnel, fit error, 0.\n"
+    << "// Per cell: a_x/alpha, a_y/alpha, s, tilt, n_f, n_fresnel, fit error, 0.\n"
     << "constexpr float kTable[] = {\n";
   // A float literal that reads back as the same float: 9 significant digits, and a '.' or an
   // exponent before the f suffix.

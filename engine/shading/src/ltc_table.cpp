@@ -9,7 +9,7 @@
 
 namespace hv {
 namespace {
-// Per cell: a_x/alpha, a_y/alpha, s/alpha, tilt, n_f, n_fresnel, fit error, 0.
+// Per cell: a_x/alpha, a_y/alpha, s, tilt, n_f, n_fresnel, fit error, 0.
 constexpr float kTable[] = {
     2.00000238f, 2.00000238f, -8.32432718e-08f, -4.14689866e-10f, 1.0f, 2.87168983e-10f, 8.55691451e-06f, 0.0f,
     2.00000882f, 2.00000763f, -1.07337542e-06f, -3.18052784e-09f, 1.0f, 2.279622e-08f, 2.71322679e-05f, 0.0f,

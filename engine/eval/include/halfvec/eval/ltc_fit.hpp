@@ -28,8 +28,9 @@
 
 namespace hv::eval {
 
-// The parameters of one cell, as the table stores them (ltc.glsl): widths and skew divided by
-// alpha, and the x component of the lobe's mean direction in the frame (T1, T2, N).
+// The parameters of one cell as the fit works with them (ltc.glsl): widths divided by alpha, the
+// skew s, and the x component d_x of the lobe's mean direction in the frame (T1, T2, N); the table
+// stores the axis as its tilt from the mirror direction instead (ltcTableTilt).
 struct LtcParams {
   float ax = 1.0f, ay = 1.0f, sk = 0.0f, dx = 0.0f;
 };

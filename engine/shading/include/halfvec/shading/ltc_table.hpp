@@ -11,7 +11,7 @@
 
 namespace hv {
 
-// Floats per cell: texture 0 (a_x/alpha, a_y/alpha, s/alpha, d_x), then texture 1 (n_f,
+// Floats per cell: texture 0 (a_x/alpha, a_y/alpha, s, the axis's tilt), then texture 1 (n_f,
 // n_fresnel, the cell's fit error, 0).
 inline constexpr int kLtcFloatsPerCell = 8;
 
