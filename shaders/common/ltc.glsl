@@ -40,8 +40,9 @@
 // y = sqrt((1 - N.V) / (1 - HV_LTC_MIN_NOV)) (more cells toward grazing views, where the lobe
 // changes fastest; the last row is the smallest N.V looked up, not a lobe no pixel reads, whose
 // bilinear blend into the rows above it the table had before); cell (i,j) is fitted at
-// x = i / (size - 1), y = j / (size - 1). Two RGBA textures (texture units below),
-// sampled with linear filtering and clamp-to-edge: tex 0 = (a_x / alpha, a_y / alpha, s, tau), tex 1 = (n_f, n_fresnel, 0, 0) with n_fresnel = integral of f (n.l) (1 - V.H)^5.
+// x = i / (size - 1), y = j / (size - 1). Two RGBA textures (texture units below), sampled with
+// linear filtering and clamp-to-edge: tex 0 = (a_x / alpha, a_y / alpha, s, tau), tex 1 = (n_f,
+// n_fresnel, 0, 0) with n_fresnel = integral of f (n.l) (1 - V.H)^5.
 #define HV_LTC_TABLE_SIZE 64
 #define HV_LTC_TEXTURE_UNIT0 6
 #define HV_LTC_TEXTURE_UNIT1 7
