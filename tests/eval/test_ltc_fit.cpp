@@ -33,7 +33,8 @@ TEST(LtcFit, RefitReproducesTheTable) {
     const LtcParams start{next[0], next[1], next[2], glsl::ltcAxisFromTilt(next[3], rn.y).x};
     const LtcCell c = fitLtcCell(rn.x, rn.y, start, o);
     const float* want = cell(i, j);
-    const float got[6] = {c.params.ax,   c.params.ay,     c.params.sk, ltcTableTilt(c.params, rn.y),
+    const float got[6] = {c.params.ax,   c.params.ay,
+                          c.params.sk,   glsl::ltcTiltFromAxis(c.params.dx, rn.y),
                           float(c.norm), float(c.fresnel)};
     for (int k = 0; k < 6; ++k) {
       EXPECT_NEAR(got[k], want[k], 1e-5f * std::abs(want[k]) + 1e-7f)

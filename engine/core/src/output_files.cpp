@@ -154,13 +154,13 @@ void OutputFiles::commit() {
   for (size_t i = 0; i < pending.size(); ++i) {
     std::error_code ec;
     fs::rename(pending[i].temporary, pending[i].destination, ec);
-    if (!ec) unregisterTemporary(pending[i].slot);
     if (ec) {
       // Keep the rest for the destructor to clean up.
       files_.assign(pending.begin() + std::ptrdiff_t(i), pending.end());
       throw OutputError(pending[i].destination.string() + ": cannot rename " +
                         pending[i].temporary.string() + " over it: " + ec.message());
     }
+    unregisterTemporary(pending[i].slot);
   }
 }
 

@@ -57,7 +57,8 @@ glm::vec2 hammersley2(int i, int n) {
   return g::hammersley(uint32_t(i), uint32_t(n));
 }
 
-// The fit works with the axis's d_x (d_z >= 0); the table stores its tilt (ltcTableTilt).
+// The LTC of the fit's parameters (the axis's d_x, d_z >= 0; the table stores its tilt instead,
+// ltc.glsl's ltcTiltFromAxis).
 g::Ltc cellLtc(const LtcParams& p, float alpha, const glm::vec3& V) {
   return g::makeLtcAxis(glm::vec3(0.0f, 0.0f, 1.0f), V, alpha, glm::vec3(p.ax, p.ay, p.sk), p.dx,
                         std::sqrt(std::max(1.0f - p.dx * p.dx, 0.0f)));
@@ -349,10 +350,6 @@ double ltcCapError(const LtcParams& p, float roughness, float NoV, double norm,
                   cellView(NoV));
 }
 
-float ltcTableTilt(const LtcParams& p, float NoV) {
-  return g::ltcTiltFromAxis(p.dx, NoV);
-}
-
 LtcParams ltcFitStart(const LtcTable& t, int i, int j) {
   return i + 1 < t.size ? t.at(i + 1, j).params : LtcParams{};
 }
@@ -420,7 +417,7 @@ std::string ltcTableSource(const LtcTable& t, const LtcFitOptions& o, const std:
     for (int i = 0; i < t.size; ++i) {
       const LtcCell& c = t.at(i, j);
       s << "    " << literal(c.params.ax) << ", " << literal(c.params.ay) << ", "
-        << literal(c.params.sk) << ", " << literal(ltcTableTilt(c.params, NoV)) << ", "
+        << literal(c.params.sk) << ", " << literal(g::ltcTiltFromAxis(c.params.dx, NoV)) << ", "
         << literal(c.norm) << ", " << literal(c.fresnel) << ", " << literal(c.error) << ", 0.0f,\n";
     }
   }

@@ -30,7 +30,7 @@ namespace hv::eval {
 
 // The parameters of one cell as the fit works with them (ltc.glsl): widths divided by alpha, the
 // skew s, and the x component d_x of the lobe's mean direction in the frame (T1, T2, N); the table
-// stores the axis as its tilt from the mirror direction instead (ltcTableTilt).
+// stores the axis as its tilt from the mirror direction instead (ltc.glsl, ltcTiltFromAxis).
 struct LtcParams {
   float ax = 1.0f, ay = 1.0f, sk = 0.0f, dx = 0.0f;
 };
@@ -93,10 +93,6 @@ LtcTable fitLtcTable(const LtcFitOptions& o);
 
 // The start of cell (i, j) in fitLtcTable: the fitted cell (i + 1, j), or the identity.
 LtcParams ltcFitStart(const LtcTable& t, int i, int j);
-
-// The table's 4th value of a cell fitted to p at N.V: the tilt of its axis from the mirror
-// direction (ltc.glsl, ltcTiltFromAxis).
-float ltcTableTilt(const LtcParams& p, float NoV);
 
 // The C++ source of engine/shading/src/ltc_table.cpp for `t`, with a header naming `command`.
 std::string ltcTableSource(const LtcTable& t, const LtcFitOptions& o, const std::string& command);
