@@ -132,7 +132,7 @@ std::string otherBrdfMarkdown(const eval::SphereAccuracy& sphere, const eval::Tu
      << "The LTC table is fitted to GGX x height-correlated Smith (docs/lights.md). With another "
         "V term (the default is Schlick-GGX with the Disney remap), `ltc` keeps the fitted shape "
         "and scales its magnitude by the scene's V over Smith's at the mirror direction (the \"V "
-        "ratio\", HV_LTC_V_RATIO); for spheres the small-light correction also evaluates the "
+        "ratio\", HV_LTC_V_RATIO); the light correction of spheres and tubes evaluates the "
         "scene's own lobe. With Beckmann D the shape stays GGX. Each row against the reference "
         "of its own BRDF (spheres above the horizon; tubes: every configuration):\n\n"
      << headerRow({"light, term", "method", "configurations", "median", "worst (bias)",

@@ -20,8 +20,9 @@
 //  HV_LTC_V_RATIO 1|0           the LTC lobe is fitted with height-correlated Smith V; with another
 //                               V term, 1 scales its magnitude by V / V_Smith at the mirror
 //                               direction (docs/lights.md, "Other BRDF choices")
-//  HV_LTC_POINT_CORRECTION 1|0  LTC sphere: corrects small lights by the lobe's value over the
-//                               LTC's at the representative point (measurement in docs/lights.md)
+//  HV_LTC_POINT_CORRECTION 1|0  LTC spheres and tubes: corrects the LTC's integral by the ratio
+//                               lobe / LTC at two points of the light, where those points represent
+//                               it (ltcCorrection; measurement in docs/lights.md)
 //  HV_HAS_POINT_LIGHTS / HV_HAS_SPHERE_LIGHTS / HV_HAS_TUBE_LIGHTS 1|0: compile that light type
 //  HV_DIRECT_TERMS 3|1|2|0      bit 1 diffuse, bit 2 specular: the terms shadeLight returns (the
 //                               others are 0); for per-term images (`halfvec render --aov`)
@@ -252,28 +253,45 @@ vec3 specularTerm(Surface s, ShadingPoint sp, vec3 Ls, float spec_irr, float spe
 }
 
 #if HV_LTC_TABLE && HV_LTC_POINT_CORRECTION
-// The ratio c of the LTC modes' small-light correction (docs/lights.md): the LTC matches the
-// lobe's integral, not its value in every direction, so a light much smaller than the lobe sees
-// the LTC's value in one direction, off by the fit's local error (at grazing views of rough
-// surfaces the LTC's value at the mirror direction is 0.5-0.9 of the lobe's). c is the sum of the
-// engine's own lobe over the sum of the LTC's values at two points of the light's disk (angular
-// radius sigma, sin2 = sin^2(sigma)) around the representative direction Ls (Karis eq. 11), at
-// +-k tan(sigma) (e1 + e2): e1 toward N, e2 = Ls x e1 (sideways); exact as the light shrinks,
-// clamped to [0, 4]. For a lobe varying quadratically over the disk, and symmetric about the plane
-// of N and Ls, their mean is the disk's mean at k = 1/2; near the horizon at grazing views the
-// lobe falls across the light faster than that (its mean over the cone 0.65 of its value at the
-// center), and k = 0.4 measured best on the sphere sweep (k = 0.3, 0.4, 0.5: 102, 104, 103 of
-// 112 configurations within 5%; one point, Ls: 100, worst bias +31%). The offset stops at
-// sin^2(sigma) = 1/4 (30 degrees), where the correction's weight is already small.
-vec3 ltcCorrectionRatio(Surface s, ShadingPoint sp, vec3 Ls, float sin2) {
-  float sin2_off = min(sin2, 0.25f);
-  vec3 e1 = safeNormalize(s.N - Ls * dot(s.N, Ls));
-  vec3 off = (0.4f * sqrt(sin2_off / (1.0f - sin2_off))) * (e1 + cross(Ls, e1));
-  vec3 L1 = normalize(Ls + off);
-  vec3 L2 = normalize(Ls - off);
+// The LTC modes' light correction (docs/lights.md, "Light correction"). The LTC matches the lobe's
+// integral over the sphere, not its value in every direction: a light sees the lobe over its own
+// cone, where the ratio lobe / LTC is anywhere from 0.5 to 3 in the lobe's flanks and tails at
+// grazing views and high roughness (1.4-1.6 for a sphere of r/d 0.25 overhead, seen at N.V 0.36,
+// roughness 0.5). Where both vary smoothly over the cone, the ratio of their sums at a few of its
+// points is the ratio of their integrals, and the LTC's exact integral I times it is the lobe's.
+// The points: two, at +-k tan(sigma) (e1 + e2) / sqrt(2) around the cone's axis c (e1, e2 from
+// tangentFrame(c), sin2 = sin^2(sigma)); k = 0.6 measured best of 0.4-0.7. Whether two points
+// represent the light is tested on the LTC itself, whose integral is known: their quadrature
+// omega (D(x1) + D(x2)) / 2 against I, and against omega D(c). Each disagreement u = (a - b) /
+// (a + b) lowers the correction's weight linearly, from 1 at u = 0 to 0 at |u| = 0.2 (against I)
+// and 0.7 (against the axis) (measured best of 0.1-0.3 and 0.2-1; weight 0: the LTC alone). As
+// the light shrinks, both tests and the ratio become exact: the point light's limit, the lobe's
+// own value times the solid angle. omega: the light's solid angle (for a capsule, a bound); the
+// ratio is clamped to [0, 16].
+const float HV_LTC_CORRECTION_K = 0.6f;
+const float HV_LTC_CORRECTION_INTEGRAL_TOL = 0.2f;
+const float HV_LTC_CORRECTION_AXIS_TOL = 0.7f;
+vec3 ltcCorrection(Surface s, ShadingPoint sp, vec3 c, vec3 along, float sin2, float omega,
+                   float I) {
+  // The offset stops at sin^2 = 0.9 (72 degrees): inside the sphere sin2 is 1, and the tests
+  // below then keep the weight small.
+  float s2 = min(sin2, 0.9f);
+  vec3 e1;
+  vec3 e2;
+  tangentFrame(c, e1, e2);
+  vec3 off = (HV_LTC_CORRECTION_K * 0.70710678f * sqrt(s2 / (1.0f - s2))) * (e1 + e2) + along;
+  vec3 L1 = normalize(c + off);
+  vec3 L2 = normalize(c - off);
   vec3 f = specularTerm(s, sp, L1, 1.0f, 1.0f) + specularTerm(s, sp, L2, 1.0f, 1.0f);
   float d = ltcDensity(sp.ltc, L1) + ltcDensity(sp.ltc, L2);
-  return clamp(f / max(sp.ltc_spec * d, vec3(1e-30f)), vec3(0.0f), vec3(4.0f));
+  vec3 ratio = clamp(f / max(sp.ltc_spec * d, vec3(1e-30f)), vec3(0.0f), vec3(16.0f));
+  float quad = 0.5f * omega * d;
+  float axis = omega * ltcDensity(sp.ltc, c);
+  float u_int = (quad - I) / max(quad + I, 1e-30f);
+  float u_axis = (quad - axis) / max(quad + axis, 1e-30f);
+  float w = saturate(1.0f - abs(u_int) * (1.0f / HV_LTC_CORRECTION_INTEGRAL_TOL)) *
+            saturate(1.0f - abs(u_axis) * (1.0f / HV_LTC_CORRECTION_AXIS_TOL));
+  return mix(vec3(1.0f), ratio, w);
 }
 #endif
 // The light's radiance toward V from its two terms: the term mask (HV_DIRECT_TERMS: a term left
@@ -341,16 +359,11 @@ vec3 evaluateSphereLightAt(GpuLight light, Surface s, ShadingPoint sp) {
   float I = ltcSphereIntegral(sp.ltc, Lc, r_eff);
   vec3 specular = sp.ltc_spec * (I * falloff * d2c / (PI * r_eff * r_eff));
 #if HV_LTC_POINT_CORRECTION
-  // The lobe over the LTC near the representative point (ltcCorrectionRatio), faded out as the
-  // light's solid angle grows past the lobe's (1 / the LTC's peak density): weight
-  // 1 / (1 + 4 t), t = solid angle x peak density (the weight measured best of exp(-t), exp(-3t),
-  // 1/(1+t), 1/(1+4t), 1-t, 1-t/3 on the sphere sweep: docs/lights.md).
-  vec3 Ls = safeNormalize(closestPointOnSphereToRay(Lc, radius, sp.R));
-  float sin2 = r_eff * r_eff / d2c;
-  vec3 c = ltcCorrectionRatio(s, sp, Ls, sin2);
+  // The lobe over the LTC at two points of the sphere's cone around its center (ltcCorrection).
   // Solid angle 2 pi (1 - cos sigma) = 2 pi sin^2 / (1 + cos), no cancellation for small spheres.
-  float t = 2.0f * PI * sin2 / (1.0f + sqrt(max(1.0f - sin2, 0.0f))) * sp.ltc.peak;
-  specular = specular * mix(vec3(1.0f), c, 1.0f / (1.0f + 4.0f * t));
+  float sin2 = r_eff * r_eff / d2c;
+  float omega = 2.0f * PI * sin2 / (1.0f + sqrt(max(1.0f - sin2, 0.0f)));
+  specular = specular * ltcCorrection(s, sp, L, vec3(0.0f), sin2, omega, I);
 #endif
 #else
   vec3 Ls = safeNormalize(closestPointOnSphereToRay(Lc, radius, sp.R));
@@ -418,8 +431,23 @@ vec3 evaluateTubeLightAt(GpuLight light, Surface s, ShadingPoint sp) {
 #endif
   vec3 diffuse = diffuseTerm(s, sp, Ldiff, irradiance);
 
-  // Specular: the point of the segment chosen for the reflection ray R (Karis eqs. 18, 19; for
-  // the LTC mode, the representative direction of its small-light correction).
+#if HV_TUBE_SPECULAR == HV_TUBE_SPECULAR_LTC
+  float I = ltcCapsuleIntegral(sp.ltc, L0, L1, r_eff);
+  vec3 specular = sp.ltc_spec * (emit * I);
+#if HV_LTC_POINT_CORRECTION
+  // As the sphere's (evaluateSphereLightAt), around the capsule's center, its two points also
+  // spread along the axis at +-1/sqrt(3) of the half-length (the two-point Gauss rule of a
+  // segment), with the capsule's solid angle (at most (pi r^2 + 2 r len) / d^2, d the closest
+  // segment point) and integral. len = 0 gives the sphere's correction exactly.
+  float sin2 = r_eff * r_eff / dp2c;
+  float omega = 2.0f * PI * sin2 / (1.0f + sqrt(max(1.0f - sin2, 0.0f))) +
+                2.0f * r_eff * len / dp2c;
+  float inv_lc = inversesqrt(max(dot(Lc, Lc), 1e-30f));
+  specular = specular * ltcCorrection(s, sp, Lc * inv_lc, (0.57735027f * 0.5f * inv_lc) * Ld,
+                                      sin2, omega, I);
+#endif
+#else
+  // Specular: the point of the segment chosen for the reflection ray R (Karis eqs. 18, 19).
   vec3 R = sp.R;
   float rl0 = dot(R, L0);
   float rld = dot(R, Ld);
@@ -437,21 +465,6 @@ vec3 evaluateTubeLightAt(GpuLight light, Surface s, ShadingPoint sp) {
 #endif
   vec3 Lt = L0 + saturate(t) * Ld;
   vec3 Ls = safeNormalize(closestPointOnSphereToRay(Lt, radius, R));
-#if HV_TUBE_SPECULAR == HV_TUBE_SPECULAR_LTC
-  float I = ltcCapsuleIntegral(sp.ltc, L0, L1, r_eff);
-  vec3 specular = sp.ltc_spec * (emit * I);
-#if HV_LTC_POINT_CORRECTION
-  // As the sphere's (evaluateSphereLightAt): the lobe over the LTC around the representative
-  // point, over a disk of the capsule's radius there, faded out as the capsule's solid angle (at
-  // most (pi r^2 + 2 r len) / d^2, d the closest segment point) grows past the lobe's. len = 0
-  // gives the sphere's correction exactly.
-  float sin2 = r_eff * r_eff / dp2c;
-  vec3 c = ltcCorrectionRatio(s, sp, Ls, sin2);
-  float omega = 2.0f * PI * sin2 / (1.0f + sqrt(max(1.0f - sin2, 0.0f))) +
-                2.0f * r_eff * len / dp2c;
-  specular = specular * mix(vec3(1.0f), c, 1.0f / (1.0f + 4.0f * omega * sp.ltc.peak));
-#endif
-#else
   float dt2 = dot(Lt, Lt);
   float norm = lineNormalization(s.alpha, len, dot(Lc, Lc)) * sphereNormalization(s.alpha, radius,
                                                                                    dt2);

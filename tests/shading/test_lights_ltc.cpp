@@ -122,13 +122,14 @@ glm::vec3 dirAt(float elevation_deg, float azimuth_deg) {
 }  // namespace
 
 // radius -> 0 gives the point light, in both terms: the LTC sphere of radius 1e-4 (its cone's
-// integral times its radiance, with the small-light correction at the representative point)
-// against the point light at the same position (the BRDF at the center direction), for roughness
-// 0.05-1, lights at 20-90 degrees of elevation and views near their mirror direction and away from
-// it. Tolerance 3e-3 relative (the correction's weight is 1 - O(r^2) and the cone's integral
-// equals density x solid angle to O(r^2)) + 1e-4 of the highlight's peak (the mirror view): in the
-// far tail of a glossy lobe, where the LTC's value is below a quarter of the lobe's, the
-// correction is clamped to 4 (lights.glsl) and the limit holds only to that absolute level.
+// integral times its radiance, with lights.glsl's ltcCorrection over the light's cone) against
+// the point light at the same position (the BRDF at the center direction), for roughness 0.05-1,
+// lights at 20-90 degrees of elevation and views near their mirror direction and away from it.
+// Tolerance 3e-3 relative (the correction's two points and its tests converge to the center as
+// O(r), and the cone's integral equals density x solid angle to O(r^2)) + 1e-4 of the highlight's
+// peak (the mirror view): in the far tail of a glossy lobe, where the LTC's value is below 1/16
+// of the lobe's, the correction's ratio is clamped to 16 and the limit holds only to that
+// absolute level.
 TEST(LtcLights, RadiusToZeroGivesThePointLight) {
   for (float rough : {0.05f, 0.2f, 0.5f, 1.0f}) {
     for (float metallic : {0.0f, 1.0f}) {
