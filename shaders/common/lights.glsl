@@ -363,7 +363,10 @@ vec3 evaluateSphereLightAt(GpuLight light, Surface s, ShadingPoint sp) {
   // Solid angle 2 pi (1 - cos sigma) = 2 pi sin^2 / (1 + cos), no cancellation for small spheres.
   float sin2 = r_eff * r_eff / d2c;
   float omega = 2.0f * PI * sin2 / (1.0f + sqrt(max(1.0f - sin2, 0.0f)));
-  specular = specular * ltcCorrection(s, sp, L, vec3(0.0f), sin2, omega, I);
+  // Inside the sphere the integral is exact (the whole hemisphere emits): no correction there
+  // (a select; LtcLights.InsideTheSphereTheWholeHemisphereEmits).
+  specular = specular * mix(ltcCorrection(s, sp, L, vec3(0.0f), sin2, omega, I), vec3(1.0f),
+                            bvec3(d2 <= r_eff * r_eff));
 #endif
 #else
   vec3 Ls = safeNormalize(closestPointOnSphereToRay(Lc, radius, sp.R));

@@ -156,6 +156,33 @@ TEST(LtcLights, RadiusToZeroGivesThePointLight) {
   }
 }
 
+// Inside a sphere light the whole hemisphere emits at the sphere's radiance L_e = I / (pi r^2)
+// (docs/lights.md), so the `ltc` specular is exactly the lobe's integral over the hemisphere
+// times L_e: ltc_spec L_e, whatever the roughness, view or position, with no light correction
+// (two points of the lobe cannot improve on an exact answer). Tolerance 1e-5 relative.
+TEST(LtcLights, InsideTheSphereTheWholeHemisphereEmits) {
+  const float r = 1.0f;
+  for (float rough : {0.05f, 0.3f, 0.7f, 1.0f}) {
+    const specular::Surface s =
+        specular::makeSurface({0, 0, 1}, glm::vec3(0.8f, 0.6f, 0.4f), 1.0f, rough, 1.0f);
+    for (glm::vec3 center : {glm::vec3(0.0f, 0.0f, 0.5f), glm::vec3(0.3f, -0.2f, 0.1f),
+                             glm::vec3(0.0f, 0.0f, -0.9f), glm::vec3(0.0f, 0.0f, 0.999f)}) {
+      const auto l = toVariant<specular::GpuLight>(lightAt(hv::LightType::Sphere, center, r));
+      for (float view_el : {5.0f, 40.0f, 90.0f}) {
+        const glm::vec3 V = dirAt(view_el, 30.0f);
+        const glm::vec3 got = specular::evaluateSphereLight(l, s, glm::vec3(0.0f), V);
+        const glm::vec3 want = specular::makeShadingPoint(s, glm::vec3(0.0f), V).ltc_spec *
+                               (2.0f / (kPi * r * r));  // intensity 2 (lightAt), color 1
+        for (int k = 0; k < 3; ++k) {
+          EXPECT_NEAR(got[k], want[k], 1e-5f * want[k])
+              << "roughness " << rough << " center " << center.x << "," << center.y << ","
+              << center.z << " view elevation " << view_el << " channel " << k;
+        }
+      }
+    }
+  }
+}
+
 // length -> 0 gives the sphere: the LTC capsule of length 1e-4 against the LTC sphere of the same
 // radius (specular), and its identity-LTC diffuse against the horizon-correct sphere diffuse
 // (exact for Lambert), including spheres crossing the horizon. Tolerance 2e-3 relative + 1e-6.
