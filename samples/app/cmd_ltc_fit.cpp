@@ -32,7 +32,9 @@ Options:
   --power P           the fit minimizes integral |D_ltc - lobe|^P (default 3)
   --cap-weight W      plus W x the relative squared error of the LTC's integrals over caps of
                       3, 14 and 29 degrees on the lobe, the norm then relative to its value at
-                      the start (default 0: the norm alone; docs/lights.md measures W = 100)
+                      the start (default 100; 0: the norm alone; docs/lights.md measures both)
+  --cap-max-nov X     the cap term only in the cells of N.V <= X (default 0.03: the last row,
+                      N.V = 0.02; 1: every cell)
   --cap-samples N     lobe samples per dimension for the caps' integrals (default 128)
   --threads N         threads (default: all cores)
   --cache DIR         cache folder (default out/cache; "" disables the cache)
@@ -65,6 +67,8 @@ Options parseArgs(const Args& args) {
       o.fit.error_power = numberInRange(a, optionValue(args, i), 1.0, 8.0);
     } else if (a == "--cap-weight") {
       o.fit.cap_weight = numberInRange(a, optionValue(args, i), 0.0, 1e6);
+    } else if (a == "--cap-max-nov") {
+      o.fit.cap_max_nov = numberInRange(a, optionValue(args, i), 0.0, 1.0);
     } else if (a == "--cap-samples") {
       o.fit.cap_samples = positiveInt(a, optionValue(args, i));
     } else if (a == "--threads") {

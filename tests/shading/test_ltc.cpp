@@ -187,9 +187,11 @@ TEST(LtcTable, CellsAreValidAndNormalized) {
 // The fit's error per cell (the L1 distance between the cell's LTC and its normalized lobe, which
 // bounds the relative error of any emitter's integral) is below a bound per region of N.V,
 // measured when the table was generated (`halfvec ltc-fit`, which minimizes the L3 norm; the L1
-// distance it reports): N.V >= 0.5: 0.164; N.V >= 0.2: 0.370; N.V >= 0.05: 0.668; grazing views
-// below, down to the last row's HV_LTC_MIN_NOV: 0.779 (an LTC cannot follow a lobe cut in half by
-// the horizon). Bound = measured + 10%.
+// distance it reports): N.V >= 0.5: 0.164; N.V >= 0.2: 0.370; N.V >= 0.05: 0.668; below, the last
+// row (N.V = HV_LTC_MIN_NOV): 1.745. There the lobe is a thin sheet along the horizon that no LTC
+// follows pointwise, and the row is fitted to the lobe's integrals over caps as well (the cap
+// term, ltc_fit.hpp), which trades pointwise distance for what lights see (0.779 with the norm
+// alone; docs/lights.md). Bound = measured + 10%.
 TEST(LtcTable, FitErrorBoundPerCell) {
   const std::span<const float> t = hv::ltcTableData();
   constexpr int n = HV_LTC_TABLE_SIZE;
@@ -207,5 +209,5 @@ TEST(LtcTable, FitErrorBoundPerCell) {
   EXPECT_LT(worst[0], 0.18);
   EXPECT_LT(worst[1], 0.41);
   EXPECT_LT(worst[2], 0.735);
-  EXPECT_LT(worst[3], 0.86);
+  EXPECT_LT(worst[3], 1.92);
 }

@@ -314,12 +314,17 @@ double capError(const std::vector<LobeCap>& caps, const LtcParams& p, float alph
 
 }  // namespace
 
+static bool capTermApplies(const LtcFitOptions& o, float NoV) {
+  return o.cap_weight > 0.0 && NoV <= o.cap_max_nov;
+}
+
 LtcCell fitLtcCell(float roughness, float NoV, const LtcParams& start, const LtcFitOptions& o) {
   const LtcLobeMoments m = integrateLtcLobe(roughness, NoV, o.moment_samples);
   const float dx = float(m.mean.x);
   const CellSamples s = makeSamples(roughness, NoV, m.norm, o.fit_samples);
-  const std::vector<LobeCap> caps =
-      o.cap_weight > 0.0 ? lobeCaps(roughness, NoV, m.norm, o.cap_samples) : std::vector<LobeCap>{};
+  const std::vector<LobeCap> caps = capTermApplies(o, NoV)
+                                        ? lobeCaps(roughness, NoV, m.norm, o.cap_samples)
+                                        : std::vector<LobeCap>{};
   const std::array<double, 4> x0 = {std::log(double(std::max(start.ax, 1e-3f))),
                                     std::log(double(std::max(start.ay, 1e-3f))), double(start.sk),
                                     0.0};
@@ -394,6 +399,7 @@ std::string ltcTableSource(const LtcTable& t, const LtcFitOptions& o, const std:
     s << " (relative to the start) + " << o.cap_weight
       << " x the relative squared\n// error of the integrals over caps of the lobe ("
       << o.cap_samples << "^2 lobe samples per cell)";
+    if (o.cap_max_nov < 1.0) s << " in the cells of N.V <= " << o.cap_max_nov;
   }
   s << ".\n";
   std::snprintf(buf, sizeof buf,
@@ -428,18 +434,21 @@ std::string ltcTableSource(const LtcTable& t, const LtcFitOptions& o, const std:
     << ", fit samples " << o.fit_samples << ", moment samples " << o.moment_samples
     << ", error power " << o.error_power;
   if (o.cap_weight > 0.0) {
-    s << ", cap weight " << o.cap_weight << ", cap samples " << o.cap_samples;
+    s << ", cap weight " << o.cap_weight << ", cap samples " << o.cap_samples << ", cap max N.V "
+      << o.cap_max_nov;
   }
   s << ", fit version " << kLtcFitVersion << ")\";\n}\n\n}  // namespace hv\n";
   return s.str();
 }
 
 std::string ltcCacheKey(const LtcFitOptions& o) {
-  char buf[160];
+  char buf[192];
   std::snprintf(buf, sizeof buf,
-                "halfvec-ltc-fit v%d size %d fit %d moments %d iterations %d power %g caps %g x %d",
+                "halfvec-ltc-fit v%d size %d fit %d moments %d iterations %d power %g caps %g x %d"
+                " to N.V %g",
                 kLtcFitVersion, o.size, o.fit_samples, o.moment_samples, o.max_iterations,
-                o.error_power, o.cap_weight, o.cap_weight > 0.0 ? o.cap_samples : 0);
+                o.error_power, o.cap_weight, o.cap_weight > 0.0 ? o.cap_samples : 0,
+                o.cap_weight > 0.0 ? o.cap_max_nov : 0.0);
   return buf;
 }
 

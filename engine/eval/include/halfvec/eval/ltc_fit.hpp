@@ -6,10 +6,12 @@
 // by 2x to 7x at roughness 0.045-0.1) are fitted by Nelder-Mead, minimizing
 // integral |D_ltc - f cos / n_f|^3 over the sphere (the L3 norm, as Heitz et al. 2016 section 4:
 // it weighs the lobe's peak, which small lights see, more than the L1 norm does; measured on the
-// sphere sweep, docs/lights.md); with cap_weight > 0 (not the committed table's fit), relative
-// to its value at the start plus cap_weight times the relative squared error of the LTC's
-// integrals over caps of 3, 14 and 29 degrees on the lobe (what sphere lights of those sizes see;
-// measured in docs/lights.md: more sphere configurations within 5%, worse near the horizon). Each
+// sphere sweep, docs/lights.md). In the cells of N.V <= cap_max_nov (the committed table: the
+// last row, N.V = 0.02) the norm is taken relative to its value at the start, plus cap_weight
+// times the relative squared error of the LTC's integrals over caps of 3, 14 and 29 degrees on
+// the lobe (what sphere lights of those sizes see). There the lobe is a thin sheet along the
+// horizon that no LTC follows pointwise, and lights see its integral; in every cell, the cap term
+// shaded small lights near the horizon worse (docs/lights.md measures both). Each
 // cell reports its L1 distance, which bounds the error of
 // any emitter's integral: for every region P of directions, |integral over P of
 // (D_ltc - f cos / n_f)| <= the distance, so a cell of distance e shades any light within e n_f
@@ -55,14 +57,15 @@ double ltcFitError(const LtcParams& p, float roughness, float NoV, double norm,
                    int samples_per_dim);
 
 struct LtcFitOptions {
-  int size = 64;             // cells per side (must equal HV_LTC_TABLE_SIZE to be used)
-  int fit_samples = 32;      // per dimension, per strategy, for the fit's error estimate
-  int moment_samples = 256;  // per dimension, for n_f, the Fresnel integral and the mean
-  int max_iterations = 400;  // Nelder-Mead iterations per cell
-  double error_power = 3.0;  // the fit minimizes integral |D_ltc - lobe|^error_power
-  double cap_weight = 0.0;   // + this x the caps' relative squared error (0: the norm alone)
-  int cap_samples = 128;     // per dimension, for the lobe's integral over each cap
-  int threads = 0;           // 0: all cores
+  int size = 64;              // cells per side (must equal HV_LTC_TABLE_SIZE to be used)
+  int fit_samples = 32;       // per dimension, per strategy, for the fit's error estimate
+  int moment_samples = 256;   // per dimension, for n_f, the Fresnel integral and the mean
+  int max_iterations = 400;   // Nelder-Mead iterations per cell
+  double error_power = 3.0;   // the fit minimizes integral |D_ltc - lobe|^error_power
+  double cap_weight = 100.0;  // + this x the caps' relative squared error (0: the norm alone)
+  int cap_samples = 128;      // per dimension, for the lobe's integral over each cap
+  double cap_max_nov = 0.03;  // the cap term only in the cells of N.V <= this (the last row)
+  int threads = 0;            // 0: all cores
   std::function<void(int done, int total)> progress;  // one call per finished row (may be empty)
 };
 
@@ -99,7 +102,7 @@ std::string ltcTableSource(const LtcTable& t, const LtcFitOptions& o, const std:
 
 // A cache file of a fitted table: binary, keyed by the options and kLtcFitVersion (a fit with
 // other options or another version of the fitting code does not match).
-inline constexpr int kLtcFitVersion = 3;
+inline constexpr int kLtcFitVersion = 4;
 std::string ltcCacheKey(const LtcFitOptions& o);
 bool loadLtcCache(const std::string& path, const LtcFitOptions& o, LtcTable& t);
 std::string ltcCacheBytes(const LtcTable& t, const LtcFitOptions& o);
