@@ -20,7 +20,7 @@
 //  HV_LTC_V_RATIO 1|0           the LTC lobe is fitted with height-correlated Smith V; with another
 //                               V term, 1 scales its magnitude by V / V_Smith at the mirror
 //                               direction (docs/lights.md, "Other BRDF choices")
-//  HV_LTC_POINT_CORRECTION 1|0  LTC spheres and tubes: corrects the LTC's integral by the ratio
+//  HV_LTC_LIGHT_CORRECTION 1|0  LTC spheres and tubes: corrects the LTC's integral by the ratio
 //                               lobe / LTC at two points of the light, where those points represent
 //                               it (ltcCorrection; measurement in docs/lights.md)
 //  HV_HAS_POINT_LIGHTS / HV_HAS_SPHERE_LIGHTS / HV_HAS_TUBE_LIGHTS 1|0: compile that light type
@@ -66,8 +66,8 @@
 #ifndef HV_LTC_V_RATIO
 #define HV_LTC_V_RATIO 1
 #endif
-#ifndef HV_LTC_POINT_CORRECTION
-#define HV_LTC_POINT_CORRECTION 1
+#ifndef HV_LTC_LIGHT_CORRECTION
+#define HV_LTC_LIGHT_CORRECTION 1
 #endif
 #ifndef HV_HAS_POINT_LIGHTS
 #define HV_HAS_POINT_LIGHTS 1
@@ -252,7 +252,13 @@ vec3 specularTerm(Surface s, ShadingPoint sp, vec3 Ls, float spec_irr, float spe
   return specularLobe(s, sp.NoV, NoL, NoH, dot(NxH, NxH), VoH, spec_norm) * (spec_irr * NoL);
 }
 
-#if HV_LTC_TABLE && HV_LTC_POINT_CORRECTION
+#if HV_LTC_TABLE && HV_LTC_LIGHT_CORRECTION
+// Solid angle of a sphere of sin^2(angular radius) = sin2: 2 pi (1 - cos sigma) = 2 pi sin^2 /
+// (1 + cos), no cancellation for small spheres.
+float sphereSolidAngle(float sin2) {
+  return 2.0f * PI * sin2 / (1.0f + sqrt(max(1.0f - sin2, 0.0f)));
+}
+
 // The LTC modes' light correction (docs/lights.md, "Light correction"). The LTC matches the lobe's
 // integral over the sphere, not its value in every direction: a light sees the lobe over its own
 // cone, where the ratio lobe / LTC is anywhere from 0.5 to 3 in the lobe's flanks and tails at
@@ -358,11 +364,10 @@ vec3 evaluateSphereLightAt(GpuLight light, Surface s, ShadingPoint sp) {
   float r_eff = max(radius, 1e-4f * sqrt(d2c));
   float I = ltcSphereIntegral(sp.ltc, Lc, r_eff);
   vec3 specular = sp.ltc_spec * (I * falloff * d2c / (PI * r_eff * r_eff));
-#if HV_LTC_POINT_CORRECTION
+#if HV_LTC_LIGHT_CORRECTION
   // The lobe over the LTC at two points of the sphere's cone around its center (ltcCorrection).
-  // Solid angle 2 pi (1 - cos sigma) = 2 pi sin^2 / (1 + cos), no cancellation for small spheres.
   float sin2 = r_eff * r_eff / d2c;
-  float omega = 2.0f * PI * sin2 / (1.0f + sqrt(max(1.0f - sin2, 0.0f)));
+  float omega = sphereSolidAngle(sin2);
   // Inside the sphere the integral is exact (the whole hemisphere emits): no correction there
   // (a select; LtcLights.InsideTheSphereTheWholeHemisphereEmits).
   specular = specular * mix(ltcCorrection(s, sp, L, vec3(0.0f), sin2, omega, I), vec3(1.0f),
@@ -437,14 +442,13 @@ vec3 evaluateTubeLightAt(GpuLight light, Surface s, ShadingPoint sp) {
 #if HV_TUBE_SPECULAR == HV_TUBE_SPECULAR_LTC
   float I = ltcCapsuleIntegral(sp.ltc, L0, L1, r_eff);
   vec3 specular = sp.ltc_spec * (emit * I);
-#if HV_LTC_POINT_CORRECTION
+#if HV_LTC_LIGHT_CORRECTION
   // As the sphere's (evaluateSphereLightAt), around the capsule's center, its two points also
   // spread along the axis at +-1/sqrt(3) of the half-length (the two-point Gauss rule of a
   // segment), with the capsule's solid angle (at most (pi r^2 + 2 r len) / d^2, d the closest
   // segment point) and integral. len = 0 gives the sphere's correction exactly.
   float sin2 = r_eff * r_eff / dp2c;
-  float omega = 2.0f * PI * sin2 / (1.0f + sqrt(max(1.0f - sin2, 0.0f))) +
-                2.0f * r_eff * len / dp2c;
+  float omega = sphereSolidAngle(sin2) + 2.0f * r_eff * len / dp2c;
   float inv_lc = inversesqrt(max(dot(Lc, Lc), 1e-30f));
   specular = specular * ltcCorrection(s, sp, Lc * inv_lc, (0.57735027f * 0.5f * inv_lc) * Ld,
                                       sin2, omega, I);

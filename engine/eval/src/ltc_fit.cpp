@@ -314,15 +314,11 @@ double capError(const std::vector<LobeCap>& caps, const LtcParams& p, float alph
 
 }  // namespace
 
-static bool capTermApplies(const LtcFitOptions& o, float NoV) {
-  return o.cap_weight > 0.0 && NoV <= o.cap_max_nov;
-}
-
 LtcCell fitLtcCell(float roughness, float NoV, const LtcParams& start, const LtcFitOptions& o) {
   const LtcLobeMoments m = integrateLtcLobe(roughness, NoV, o.moment_samples);
   const float dx = float(m.mean.x);
   const CellSamples s = makeSamples(roughness, NoV, m.norm, o.fit_samples);
-  const std::vector<LobeCap> caps = capTermApplies(o, NoV)
+  const std::vector<LobeCap> caps = o.cap_weight > 0.0 && NoV <= o.cap_max_nov
                                         ? lobeCaps(roughness, NoV, m.norm, o.cap_samples)
                                         : std::vector<LobeCap>{};
   const std::array<double, 4> x0 = {std::log(double(std::max(start.ax, 1e-3f))),
