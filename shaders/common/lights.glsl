@@ -265,8 +265,8 @@ float sphereSolidAngle(float sin2) {
 // grazing views and high roughness (1.4-1.6 for a sphere of r/d 0.25 overhead, seen at N.V 0.36,
 // roughness 0.5). Where both vary smoothly over the cone, the ratio of their sums at a few of its
 // points is the ratio of their integrals, and the LTC's exact integral I times it is the lobe's.
-// The points: two, at +-k tan(sigma) (e1 + e2) / sqrt(2) around the cone's axis c (e1, e2 from
-// tangentFrame(c), sin2 = sin^2(sigma)); k = 0.6 measured best of 0.4-0.7. Whether two points
+// The points: two, at +-k tan(sigma) (e1 - e2) / sqrt(2) around the cone's axis c (e1 across the
+// plane of c and N, e2 = c x e1; sin2 = sin^2(sigma)); k = 0.6 measured best of 0.4-0.7. Whether two points
 // represent the light is tested on the LTC itself, whose integral is known: their quadrature
 // omega (D(x1) + D(x2)) / 2 against I, and against omega D(c). Each disagreement u = (a - b) /
 // (a + b) lowers the correction's weight linearly, from 1 at u = 0 to 0 at |u| = 0.2 (against I)
@@ -285,7 +285,14 @@ vec3 ltcCorrection(Surface s, ShadingPoint sp, vec3 c, vec3 along, float sin2, f
   vec3 e1;
   vec3 e2;
   tangentFrame(c, e1, e2);
-  vec3 off = (HV_LTC_CORRECTION_K * 0.70710678f * sqrt(s2 / (1.0f - s2))) * (e1 + e2) + along;
+  // e1 across the plane of c and N, e2 in it: a frame that turns with the scene, so the shading
+  // does not depend on the world's axes. c along N (a light straight overhead) takes
+  // tangentFrame's.
+  vec3 a1 = cross(c, s.N);
+  float l2 = dot(a1, a1);
+  e1 = l2 > 1e-8f ? a1 * inversesqrt(l2) : e1;
+  e2 = cross(c, e1);
+  vec3 off = (HV_LTC_CORRECTION_K * 0.70710678f * sqrt(s2 / (1.0f - s2))) * (e1 - e2) + along;
   vec3 L1 = normalize(c + off);
   vec3 L2 = normalize(c - off);
   vec3 f = specularTerm(s, sp, L1, 1.0f, 1.0f) + specularTerm(s, sp, L2, 1.0f, 1.0f);

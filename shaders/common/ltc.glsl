@@ -267,10 +267,14 @@ vec3 capCentroidOffset(vec3 c, vec3 a, float t) {
 // the shading point (outside the capsule), radius r.
 vec3 ltcCapsuleFormFactor(Ltc l, vec3 p1, vec3 p2, float r) {
   vec3 w = capsuleHalfWidth(p1, p2, r);
-  vec3 F = quadFormFactor(ltcToCosine(l, p1 + w), ltcToCosine(l, p2 + w), ltcToCosine(l, p2 - w),
-                          ltcToCosine(l, p1 - w));
-  vec3 mid = ltcToCosine(l, p1 + p2);
-  F = F * (2.0f * step(0.0f, dot(F, mid)) - 1.0f);  // the side seen from the origin
+  // Wound counter-clockwise as seen from the origin, in world space and so in cosine space (a
+  // linear map of positive determinant keeps the orientation): with w along p1 x (p2 - p1), the
+  // triple product of p1 - w, p2 - w, p2 + w is 2 (p1 x p2).w >= 0. A test of F against the
+  // capsule's direction in cosine space picked the side instead, and failed where the map's
+  // stretch shows the rectangle nearly edge-on (grazing views: the sign flipped with the scene's
+  // orientation, docs/lights.md).
+  vec3 F = quadFormFactor(ltcToCosine(l, p1 - w), ltcToCosine(l, p2 - w), ltcToCosine(l, p2 + w),
+                          ltcToCosine(l, p1 + w));
   vec3 F1 = ltcSphereFormFactor(l, p1, r);
   vec3 F2 = ltcSphereFormFactor(l, p2, r);
   vec3 a = p2 - p1;
@@ -283,9 +287,12 @@ vec3 ltcCapsuleFormFactor(Ltc l, vec3 p1, vec3 p2, float r) {
   float f1 = capFraction(ltcDensity(l, safeNormalize(c1 - o1)), ltcDensity(l, safeNormalize(c1 + o1)));
   float f2 = capFraction(ltcDensity(l, safeNormalize(c2 - o2)), ltcDensity(l, safeNormalize(c2 + o2)));
   F = F + F1 * f1 + F2 * f2;
-  // Seen end-on, the nearer cap alone is larger: the union is at least either end sphere.
-  vec3 Fnear = mix(F1, F2, bvec3(d2 < d1));
-  return mix(F, Fnear, bvec3(dot(F, F) < dot(Fnear, Fnear)));
+  // The capsule holds both end spheres, so its integral is at least either one's: seen end-on
+  // (the rectangle vanishes, the near cap hides the rest) and where one cap holds the lobe. The
+  // larger cap, not the nearer one: seen broadside both are equally far, and rounding picked one
+  // (a cap in the lobe or one in its tail: up to 32% between orientations of the same scene).
+  vec3 Fcap = mix(F1, F2, bvec3(dot(F2, F2) > dot(F1, F1)));
+  return mix(F, Fcap, bvec3(dot(F, F) < dot(Fcap, Fcap)));
 }
 
 // Integral of the LTC over the capsule, clipped at the horizon in cosine space.
@@ -298,8 +305,7 @@ float ltcCapsuleIntegral(Ltc l, vec3 p1, vec3 p2, float r) {
 // rectangle's Lambert's formula directly.
 float capsuleCosineIntegral(vec3 N, vec3 p1, vec3 p2, float r) {
   vec3 w = capsuleHalfWidth(p1, p2, r);
-  vec3 F = quadFormFactor(p1 + w, p2 + w, p2 - w, p1 - w);
-  F = F * (2.0f * step(0.0f, dot(F, p1 + p2)) - 1.0f);
+  vec3 F = quadFormFactor(p1 - w, p2 - w, p2 + w, p1 + w);  // wound as ltcCapsuleFormFactor's
   vec3 a = p2 - p1;
   float d1 = dot(p1, p1);
   float d2 = dot(p2, p2);
@@ -313,8 +319,10 @@ float capsuleCosineIntegral(vec3 N, vec3 p1, vec3 p2, float r) {
   float f1 = capFraction(max(dot(N, safeNormalize(c1 - o1)), 0.0f), max(dot(N, safeNormalize(c1 + o1)), 0.0f));
   float f2 = capFraction(max(dot(N, safeNormalize(c2 - o2)), 0.0f), max(dot(N, safeNormalize(c2 + o2)), 0.0f));
   F = F + F1 * f1 + F2 * f2;
-  vec3 Fnear = mix(F1, F2, bvec3(d2 < d1));
-  F = mix(F, Fnear, bvec3(dot(F, F) < dot(Fnear, Fnear)));
+  // At least either end sphere (ltcCapsuleFormFactor): the one that lights N more, so that two
+  // caps equally far apart (broadside) are not told apart by rounding.
+  vec3 Fcap = mix(F1, F2, bvec3(dot(F2, N) > dot(F1, N)));
+  F = mix(F, Fcap, bvec3(dot(F, F) < dot(Fcap, Fcap)));
   // horizonClippedIntegral in the frame whose z is N.
   float f2n = dot(F, F);
   float inv_f = inversesqrt(max(f2n, 1e-30f));
