@@ -35,6 +35,8 @@ Options:
                       the start (default 100; 0: the norm alone; docs/lights.md measures both)
   --cap-max-nov X     the cap term only in the cells of N.V <= X (default 0.03: the last row,
                       N.V = 0.02; 1: every cell)
+  --cap-glossy R,NOV  also in the cells of roughness <= R and N.V <= NOV (default 0.28,0.15:
+                      the grazing views of glossy lobes; 0,0: none)
   --cap-samples N     lobe samples per dimension for the caps' integrals (default 128)
   --threads N         threads (default: all cores)
   --cache DIR         cache folder (default out/cache; "" disables the cache)
@@ -69,6 +71,16 @@ Options parseArgs(const Args& args) {
       o.fit.cap_weight = numberInRange(a, optionValue(args, i), 0.0, 1e6);
     } else if (a == "--cap-max-nov") {
       o.fit.cap_max_nov = numberInRange(a, optionValue(args, i), 0.0, 1.0);
+    } else if (a == "--cap-glossy") {
+      const std::string v = optionValue(args, i);
+      double r = 0.0, nov = 0.0;
+      char tail = 0;
+      if (std::sscanf(v.c_str(), "%lf,%lf%c", &r, &nov, &tail) != 2 || !(r >= 0.0 && r <= 1.0) ||
+          !(nov >= 0.0 && nov <= 1.0)) {
+        throw UsageError{"--cap-glossy expects R,NOV with both in [0, 1], got '" + v + "'"};
+      }
+      o.fit.cap_glossy_roughness = r;
+      o.fit.cap_glossy_nov = nov;
     } else if (a == "--cap-samples") {
       o.fit.cap_samples = positiveInt(a, optionValue(args, i));
     } else if (a == "--threads") {

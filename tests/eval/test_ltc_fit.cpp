@@ -26,9 +26,10 @@ TEST(LtcFit, RefitReproducesTheTable) {
   auto cell = [&](int i, int j) {
     return t.data() + (size_t(j) * n + size_t(i)) * kLtcFloatsPerCell;
   };
-  // The last cell is in the last row, the one fitted with the cap term.
+  // The last two cells are fitted with the cap term: the last row, and a glossy cell at grazing
+  // views (roughness 0.21, N.V 0.11; LtcFitOptions::cap_glossy_roughness, cap_glossy_nov).
   for (auto [i, j] : {std::pair{40, 10}, std::pair{12, 30}, std::pair{3, 50}, std::pair{55, 62},
-                      std::pair{30, 63}}) {
+                      std::pair{30, 63}, std::pair{11, 60}}) {
     const float* next = cell(i + 1, j);
     const glm::vec2 rn = glsl::ltcCellParameters(i, j);
     // The table stores the axis as its tilt from the mirror direction; the fit works with d_x.

@@ -318,7 +318,9 @@ LtcCell fitLtcCell(float roughness, float NoV, const LtcParams& start, const Ltc
   const LtcLobeMoments m = integrateLtcLobe(roughness, NoV, o.moment_samples);
   const float dx = float(m.mean.x);
   const CellSamples s = makeSamples(roughness, NoV, m.norm, o.fit_samples);
-  const std::vector<LobeCap> caps = o.cap_weight > 0.0 && NoV <= o.cap_max_nov
+  const bool cap_cell =
+      NoV <= o.cap_max_nov || (roughness <= o.cap_glossy_roughness && NoV <= o.cap_glossy_nov);
+  const std::vector<LobeCap> caps = o.cap_weight > 0.0 && cap_cell
                                         ? lobeCaps(roughness, NoV, m.norm, o.cap_samples)
                                         : std::vector<LobeCap>{};
   const std::array<double, 4> x0 = {std::log(double(std::max(start.ax, 1e-3f))),
@@ -396,6 +398,9 @@ std::string ltcTableSource(const LtcTable& t, const LtcFitOptions& o, const std:
       << " x the relative squared\n// error of the integrals over caps of the lobe ("
       << o.cap_samples << "^2 lobe samples per cell)";
     if (o.cap_max_nov < 1.0) s << " in the cells of N.V <= " << o.cap_max_nov;
+    if (o.cap_glossy_nov > o.cap_max_nov && o.cap_max_nov < 1.0) {
+      s << "\n// and of roughness <= " << o.cap_glossy_roughness << ", N.V <= " << o.cap_glossy_nov;
+    }
   }
   s << ".\n";
   std::snprintf(buf, sizeof buf,
@@ -431,20 +436,23 @@ std::string ltcTableSource(const LtcTable& t, const LtcFitOptions& o, const std:
     << ", error power " << o.error_power;
   if (o.cap_weight > 0.0) {
     s << ", cap weight " << o.cap_weight << ", cap samples " << o.cap_samples << ", cap max N.V "
-      << o.cap_max_nov;
+      << o.cap_max_nov << ", glossy to roughness " << o.cap_glossy_roughness << " N.V "
+      << o.cap_glossy_nov;
   }
   s << ", fit version " << kLtcFitVersion << ")\";\n}\n\n}  // namespace hv\n";
   return s.str();
 }
 
 std::string ltcCacheKey(const LtcFitOptions& o) {
-  char buf[192];
+  char buf[256];
   std::snprintf(buf, sizeof buf,
                 "halfvec-ltc-fit v%d size %d fit %d moments %d iterations %d power %g caps %g x %d"
-                " to N.V %g",
+                " to N.V %g, glossy to roughness %g N.V %g",
                 kLtcFitVersion, o.size, o.fit_samples, o.moment_samples, o.max_iterations,
                 o.error_power, o.cap_weight, o.cap_weight > 0.0 ? o.cap_samples : 0,
-                o.cap_weight > 0.0 ? o.cap_max_nov : 0.0);
+                o.cap_weight > 0.0 ? o.cap_max_nov : 0.0,
+                o.cap_weight > 0.0 ? o.cap_glossy_roughness : 0.0,
+                o.cap_weight > 0.0 ? o.cap_glossy_nov : 0.0);
   return buf;
 }
 

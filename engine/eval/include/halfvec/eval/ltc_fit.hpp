@@ -65,7 +65,10 @@ struct LtcFitOptions {
   double cap_weight = 100.0;  // + this x the caps' relative squared error (0: the norm alone)
   int cap_samples = 128;      // per dimension, for the lobe's integral over each cap
   double cap_max_nov = 0.03;  // the cap term only in the cells of N.V <= this (the last row)
-  int threads = 0;            // 0: all cores
+  // and in the glossy cells of roughness <= cap_glossy_roughness up to N.V cap_glossy_nov (0: none)
+  double cap_glossy_roughness = 0.28;
+  double cap_glossy_nov = 0.15;
+  int threads = 0;                                    // 0: all cores
   std::function<void(int done, int total)> progress;  // one call per finished row (may be empty)
 };
 
@@ -102,7 +105,7 @@ std::string ltcTableSource(const LtcTable& t, const LtcFitOptions& o, const std:
 
 // A cache file of a fitted table: binary, keyed by the options and kLtcFitVersion (a fit with
 // other options or another version of the fitting code does not match).
-inline constexpr int kLtcFitVersion = 4;
+inline constexpr int kLtcFitVersion = 5;
 std::string ltcCacheKey(const LtcFitOptions& o);
 bool loadLtcCache(const std::string& path, const LtcFitOptions& o, LtcTable& t);
 std::string ltcCacheBytes(const LtcTable& t, const LtcFitOptions& o);
