@@ -121,7 +121,7 @@ const std::vector<LightMethod>& tubeSpecularMethods();
 struct SphereSweepGrid {
   std::vector<float> roughness{0.05f, 0.1f, 0.2f, 0.35f, 0.5f, 0.75f, 1.0f};
   std::vector<float> radius{0.01f, 0.05f, 0.1f, 0.25f, 0.5f, 0.98f};  // distance to center = 1
-  std::vector<float> elevation_deg{90.0f, 45.0f, 15.0f, 5.0f, 0.0f, -5.0f};
+  std::vector<float> elevation_deg{90.0f, 45.0f, 30.0f, 15.0f, 5.0f, 0.0f, -5.0f};
   int samples = 2048;
   uint64_t seed = 1;
   int threads = 0;
