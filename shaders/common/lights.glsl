@@ -307,8 +307,9 @@ vec3 ltcCorrection(Surface s, ShadingPoint sp, vec3 c, vec3 along, float sin2, f
   float u_int = (quad - I) / max(quad + I, 1e-30f);
   float u_axis = (quad - axis) / max(quad + axis, 1e-30f);
   float w = saturate(1.0f - abs(u_int) * (1.0f / HV_LTC_CORRECTION_INTEGRAL_TOL)) *
-            saturate(1.0f - abs(u_axis) / mix(HV_LTC_CORRECTION_AXIS_TOL,
-                                              HV_LTC_CORRECTION_AXIS_TOL_POINTS, step(0.0f, u_axis)));
+            saturate(1.0f - abs(u_axis) * mix(1.0f / HV_LTC_CORRECTION_AXIS_TOL,
+                                              1.0f / HV_LTC_CORRECTION_AXIS_TOL_POINTS,
+                                              step(0.0f, u_axis)));
   return mix(vec3(1.0f), ratio, w);
 }
 #endif

@@ -68,10 +68,11 @@ TEST(LtcFit, MagnitudeIsTheLobesAlbedo) {
 }
 
 // The fit's cap term (LtcFitOptions::cap_weight, `ltc-fit --cap-weight`; the committed table
-// uses it in its last row only, cap_max_nov, docs/lights.md): it lowers the LTC's error over the
-// caps it measures (sphere lights of 3-29 degrees on the lobe), at the cost of the pointwise norm.
-// Cell: roughness 0.5, N.V 0.36, where the committed LTC is 40% too bright on the lobe's flank
-// (docs/lights.md). The default options leave that cell to the norm alone (N.V > cap_max_nov).
+// uses it in its last row and its glossy grazing cells, docs/lights.md): it lowers the LTC's error
+// over the caps it measures (sphere lights of 3-29 degrees on the lobe), at the cost of the
+// pointwise norm. Cell: roughness 0.5, N.V 0.36, where the committed LTC is 40% too bright on the
+// lobe's flank (docs/lights.md). The default options leave that cell to the norm alone (N.V >
+// cap_max_nov).
 TEST(LtcFit, CapTermLowersTheCapError) {
   LtcFitOptions plain;
   plain.cap_weight = 0.0;

@@ -7,7 +7,8 @@
 // integral |D_ltc - f cos / n_f|^3 over the sphere (the L3 norm, as Heitz et al. 2016 section 4:
 // it weighs the lobe's peak, which small lights see, more than the L1 norm does; measured on the
 // sphere sweep, docs/lights.md). In the cells of N.V <= cap_max_nov (the committed table: the
-// last row, N.V = 0.02) the norm is taken relative to its value at the start, plus cap_weight
+// last row, N.V = 0.02) and the glossy cells at grazing views (roughness <= cap_glossy_roughness,
+// N.V <= cap_glossy_nov) the norm is taken relative to its value at the start, plus cap_weight
 // times the relative squared error of the LTC's integrals over caps of 3, 14 and 29 degrees on
 // the lobe (what sphere lights of those sizes see). There the lobe is a thin sheet along the
 // horizon that no LTC follows pointwise, and lights see its integral; in every cell, the cap term
