@@ -11,27 +11,8 @@
 #define HV_BRDF_GLSL
 
 #include "math.glsl"
-
-// ---- Define table (Filament style; values match the order of the hv:: enums in scene.hpp) ----
-#define HV_D_GGX 0
-#define HV_D_BECKMANN 1
-#define HV_D_BLINN_PHONG 2
-
-#define HV_V_SCHLICK_GGX 0
-#define HV_V_SMITH_GGX_CORRELATED 1
-#define HV_V_SMITH_GGX_CORRELATED_FAST 2
-#define HV_V_SMITH_GGX_SEPARABLE 3
-#define HV_V_SMITH_BECKMANN_SEPARABLE 4
-#define HV_V_COOK_TORRANCE 5
-#define HV_V_IMPLICIT 6
-
-#define HV_F_SCHLICK 0
-#define HV_F_SCHLICK_SG 1
-#define HV_F_EXACT 2
-#define HV_F_SCHLICK_F90_OCCLUSION 3
-
-#define HV_FD_LAMBERT 0
-#define HV_FD_BURLEY 1
+// ---- Define table (Filament style): the values are in setting_values.glsl ----
+#include "setting_values.glsl"
 
 // Defaults = Karis 2013: GGX, Schlick-GGX, Schlick Fresnel, Lambert, Disney roughness remap.
 #ifndef HV_BRDF_D

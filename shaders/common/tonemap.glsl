@@ -3,14 +3,13 @@
 #define HV_TONEMAP_GLSL
 
 #include "math.glsl"
+#include "setting_values.glsl"
 
 #ifndef HV_TONEMAP
-// 0 Reinhard per channel, 1 Reinhard on luminance, 2 none (clamp), 3 Khronos PBR Neutral,
-// 4 ACES (Narkowicz's fit); hv::ToneMap in C++ (scene.hpp), same values.
-#define HV_TONEMAP 0
+#define HV_TONEMAP HV_TONEMAP_REINHARD
 #endif
 #ifndef HV_GAMMA
-#define HV_GAMMA 0  // 0 gamma 2.2, 1 exact sRGB (IEC 61966-2-1)
+#define HV_GAMMA HV_GAMMA_22
 #endif
 
 // Reinhard et al. 2002, "Photographic Tone Reproduction for Digital Images", eq. 3: L/(1+L).
@@ -58,17 +57,17 @@ float srgbEncode(float x) {
 
 vec3 outputTransform(vec3 c) {
   c = max(c, vec3(0.0f));
-#if HV_TONEMAP == 0
+#if HV_TONEMAP == HV_TONEMAP_REINHARD
   c = reinhard(c);
-#elif HV_TONEMAP == 1
+#elif HV_TONEMAP == HV_TONEMAP_REINHARD_LUMINANCE
   c = reinhardLuminance(c);
-#elif HV_TONEMAP == 3
+#elif HV_TONEMAP == HV_TONEMAP_PBR_NEUTRAL
   c = pbrNeutral(c);
-#elif HV_TONEMAP == 4
+#elif HV_TONEMAP == HV_TONEMAP_ACES
   c = acesFitted(c);
 #endif
   c = saturate(c);
-#if HV_GAMMA == 0
+#if HV_GAMMA == HV_GAMMA_22
   return pow(c, vec3(1.0f / 2.2f));
 #else
   return vec3(srgbEncode(c.x), srgbEncode(c.y), srgbEncode(c.z));

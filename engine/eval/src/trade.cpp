@@ -12,6 +12,7 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <type_traits>
 
 #include <nlohmann/json.hpp>
 
@@ -175,59 +176,49 @@ TradePlan tradePlan(const Scene& scene, int max_brute_force_lights) {
   const bool lights = !scene.lights.empty();
   std::vector<TradeConfig> c;
   c.push_back({"scene", "scene", b, pf, {}});
-  enumRows(c, "brdf.d", b, pf, &RenderSettings::d, "brdf");
-  enumRows(c, "brdf.v", b, pf, &RenderSettings::v, "brdf");
-  enumRows(c, "brdf.f", b, pf, &RenderSettings::f, "brdf");
-  enumRows(c, "brdf.diffuse", b, pf, &RenderSettings::diffuse, "brdf");
-  if (lights) {
-    boolRow(c, "brdf.remap_roughness", b, pf, &RenderSettings::remap_roughness, "brdf");
-    boolRow(c, "falloff_plus_one", b, pf, &RenderSettings::falloff_plus_one, "lights");
-  } else {
-    plan.skipped.push_back("brdf.remap_roughness, falloff_plus_one: no lights");
-  }
-  if (sphere) {
-    enumRows(c, "sphere_diffuse", b, pf, &RenderSettings::sphere_diffuse, "lights");
-    boolRow(c, "sphere_normalization", b, pf, &RenderSettings::sphere_normalization, "lights");
-    enumRows(c, "sphere_specular", b, pf, &RenderSettings::sphere_specular, "lights");
-  } else {
-    plan.skipped.push_back(
-        "sphere_diffuse, sphere_normalization, sphere_specular: no sphere lights");
-  }
-  if (tube) {
-    enumRows(c, "tube_specular", b, pf, &RenderSettings::tube_specular, "lights");
-    boolRow(c, "tube_normalization", b, pf, &RenderSettings::tube_normalization, "lights");
-    enumRows(c, "tube_diffuse", b, pf, &RenderSettings::tube_diffuse, "lights");
-  } else {
-    plan.skipped.push_back("tube_specular, tube_normalization, tube_diffuse: no tube lights");
-  }
-  if (!lights) {
-    plan.skipped.push_back("culling: no lights");
-  } else if (b.culling == Culling::Tiled && int(scene.lights.size()) > max_brute_force_lights) {
-    plan.skipped.push_back("culling=brute_force: " + std::to_string(scene.lights.size()) +
-                           " lights (more than " + std::to_string(max_brute_force_lights) +
-                           "; brute force shades every light at every pixel)");
-  } else {
-    enumRows(c, "culling", b, pf, &RenderSettings::culling, "culling");
-  }
-  if (env) {
-    enumRows(c, "env_brdf", b, pf, &RenderSettings::env_brdf, "environment");
-    enumRows(c, "irradiance", b, pf, &RenderSettings::irradiance, "environment");
-    if (scene.environment.kind == EnvironmentKind::Uniform) {
-      plan.skipped.push_back(
-          "environment.prefilter_samples: a uniform environment prefilters exactly with any count");
-    } else {
-      for (int p : {std::max(pf / 4, 1), std::min(pf * 4, 65536)}) {
-        if (p == pf) continue;
-        c.push_back(
-            {"environment.prefilter_samples=" + std::to_string(p), "environment", b, p, {}});
+  // One row per other value of each approximation option of the settings table
+  // (render_settings.hpp), where the scene has what makes it change code.
+  const std::pair<SettingFeature, const char*> absent[] = {
+      {SettingFeature::Lights, lights ? nullptr : "no lights"},
+      {SettingFeature::SphereLights, sphere ? nullptr : "no sphere lights"},
+      {SettingFeature::TubeLights, tube ? nullptr : "no tube lights"},
+      {SettingFeature::AmbientIbl, env ? nullptr : "no environment"}};
+  std::vector<std::string> skipped_keys(std::size(absent));
+  forEachSetting([&](const auto& row) {
+    using T = typename std::decay_t<decltype(row)>::Type;
+    if (!row.info.trade) return;
+    for (size_t i = 0; i < std::size(absent); ++i) {
+      if (absent[i].first != row.info.feature || !absent[i].second) continue;
+      skipped_keys[i] += (skipped_keys[i].empty() ? "" : ", ") + std::string(row.key);
+      return;
+    }
+    if constexpr (std::is_same_v<T, Culling>) {
+      if (b.culling == Culling::Tiled && int(scene.lights.size()) > max_brute_force_lights) {
+        plan.skipped.push_back("culling=brute_force: " + std::to_string(scene.lights.size()) +
+                               " lights (more than " + std::to_string(max_brute_force_lights) +
+                               "; brute force shades every light at every pixel)");
+        return;
       }
     }
-    boolRow(c, "energy_compensation", b, pf, &RenderSettings::energy_compensation, "environment");
-    boolRow(c, "specular_occlusion", b, pf, &RenderSettings::specular_occlusion, "environment");
-  } else {
+    if constexpr (std::is_same_v<T, bool>) {
+      boolRow(c, row.key, b, pf, row.member, row.info.trade_group);
+    } else if constexpr (std::is_enum_v<T>) {
+      enumRows(c, row.key, b, pf, row.member, row.info.trade_group);
+    }
+  });
+  for (size_t i = 0; i < std::size(absent); ++i) {
+    if (!skipped_keys[i].empty()) plan.skipped.push_back(skipped_keys[i] + ": " + absent[i].second);
+  }
+  if (!env) {
+    plan.skipped.push_back("environment.prefilter_samples: no environment");
+  } else if (scene.environment.kind == EnvironmentKind::Uniform) {
     plan.skipped.push_back(
-        "env_brdf, irradiance, environment.prefilter_samples, energy_compensation, "
-        "specular_occlusion: no environment");
+        "environment.prefilter_samples: a uniform environment prefilters exactly with any count");
+  } else {
+    for (int p : {std::max(pf / 4, 1), std::min(pf * 4, 65536)}) {
+      if (p == pf) continue;
+      c.push_back({"environment.prefilter_samples=" + std::to_string(p), "environment", b, p, {}});
+    }
   }
   for (std::string_view p : settingsPresetNames()) {
     TradeConfig t{"preset=" + str(p), "preset", b, pf, {}};
@@ -748,7 +739,7 @@ from the tables below:
 |---|---|---|
 | `fast` | Karis 2013 defaults, `env_brdf: analytic` | the analytic fit removes a texture fetch; its relative RMSE is up to 8% above the table's (default), within 1% elsewhere (`env_brdf=analytic` rows) |
 | `balanced` | Karis 2013 defaults, `irradiance: cubemap` | the irradiance cube map's error is equal to or lower than SH9's on every sample scene (`irradiance=cubemap` rows), for one more fetch |
-| `accurate` | `balanced` + `falloff_plus_one: false`, `sphere_diffuse: horizon_correct`, `sphere_specular`, `tube_specular`, `tube_diffuse: ltc` | the inverse-square law is the emitter's true falloff: the largest single gain where lights are close to surfaces (`falloff_plus_one=false`, many_lights); the horizon-correct sphere diffuse is exact for a Lambertian lobe (docs/lights.md), equal or better in every table, at no measurable cost. The `ltc` sphere and tube methods: on the accuracy sweeps (docs/accuracy.md) their median / worst error with the default V is 0.9% / 10.6% for sphere specular (representative point: 30% / 1690%), 2.6% / 8.8% for tube specular (41% / 96%), 1.9% / 4.2% for tube diffuse (8.6% / 20%) (`sphere_specular=ltc`, `tube_specular=ltc`, `tube_diffuse=ltc` rows for the scenes). The eq. 18 tube point is not taken: it measured slightly worse than eq. 19 (`tube_specular=smallest_angle_eq18` rows) |
+| `accurate` | `balanced` + `falloff_plus_one: false`, `sphere_diffuse: horizon_correct`, `sphere_specular`, `tube_specular`, `tube_diffuse: ltc` | the inverse-square law is the emitter's true falloff: the largest single gain where lights are close to surfaces (`falloff_plus_one=false`, many_lights); the horizon-correct sphere diffuse is exact for a Lambertian lobe (docs/lights.md), equal or better in every table, at no measurable cost. The `ltc` sphere and tube methods have the lowest median and worst error of each light method on the accuracy sweeps (the "Summary" table of docs/accuracy.md, regenerated by `halfvec accuracy`; `sphere_specular=ltc`, `tube_specular=ltc`, `tube_diffuse=ltc` rows for the scenes). The eq. 18 tube point is not taken: it measured slightly worse than eq. 19 (`tube_specular=smallest_angle_eq18` rows) |
 
 All presets keep `sphere_normalization` and `tube_normalization` on: turning sphere
 normalization off gives by far the largest error on every scene with sphere lights except

@@ -136,11 +136,7 @@ void Renderer::refreshVariants() {
   light_defines_ = toDefineSet(light);
   std::map<std::string, std::pair<std::string, std::string>> reasons;
   for (const KeyDefine& k : light) reasons[k.name] = {k.value, k.why};
-  const RenderSettings& s = scene_->settings;
-  reasons["HV_TONEMAP"] = {std::to_string(int(s.tone_map)),
-                           "settings.tone_map = " + std::string(toString(s.tone_map))};
-  reasons["HV_GAMMA"] = {std::to_string(int(s.gamma)),
-                         "settings.gamma = " + std::string(toString(s.gamma))};
+  for (const KeyDefine& k : toneMapDefines(key_, *scene_)) reasons[k.name] = {k.value, k.why};
   programs_.setDefineReasons(std::move(reasons));
   // Draws grouped by program, then by material (fewer program and texture switches).
   const auto& draws = gpu_->draws();

@@ -16,11 +16,13 @@ void runTonemapPass(const PassContext& ctx, const TonemapPassInput& in,
   GLuint prog;
   const bool tone_mapped = in.view == DebugView::None || termView(in.view);
   if (tone_mapped) {
+    gl::DefineSet defines;  // the tone map's rows of the settings table
+    for (auto& [name, value] : settingDefines(s, SettingPass::ToneMap))
+      defines.push_back({name, value});
     prog = ctx.programs.get({"tonemap",
                              {{GL_VERTEX_SHADER, "passes/fullscreen.vert"},
                               {GL_FRAGMENT_SHADER, "passes/tonemap.frag"}},
-                             {{"HV_TONEMAP", std::to_string(static_cast<int>(s.tone_map))},
-                              {"HV_GAMMA", std::to_string(static_cast<int>(s.gamma))}}});
+                             defines});
     glBindTextureUnit(HV_UNIT_HDR, in.hdr);
     glBindSampler(HV_UNIT_HDR, ctx.nearest);
   } else {

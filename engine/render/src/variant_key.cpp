@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <type_traits>
 
 #include "halfvec/scene/enums.hpp"
 #include "halfvec/shading/brdf.hpp"
@@ -65,38 +66,116 @@ bool remapMeaningful(VisibilityTerm v) {
   return glsl::remapAppliesTo(true, static_cast<int>(v));
 }
 
+namespace {
+
+// The rules of the settings table's feature and supersede columns (render_settings.hpp).
+bool featurePresent(SettingFeature f, const VariantKey& k) {
+  switch (f) {
+    case SettingFeature::Frame:
+      return true;
+    case SettingFeature::Lights:
+      return k.hasLights();
+    case SettingFeature::SphereLights:
+      return k.sphere_lights;
+    case SettingFeature::TubeLights:
+      return k.tube_lights;
+    case SettingFeature::AmbientIbl:
+      return k.ambientIbl();
+  }
+  return true;
+}
+
+// Why a setting of an absent feature changes no code (the manifest's reason).
+std::string featureAbsentReason(SettingFeature f, const VariantKey& k) {
+  switch (f) {
+    case SettingFeature::Frame:
+      return "";
+    case SettingFeature::Lights:
+      return "no lights";
+    case SettingFeature::SphereLights:
+      return "no sphere lights";
+    case SettingFeature::TubeLights:
+      return "no tube lights";
+    case SettingFeature::AmbientIbl:
+      return k.hasEnvironment() ? "no default_lit material" : "no environment";
+  }
+  return "";
+}
+
+// validateKey's complaint about a key that holds a non-default setting of an absent feature.
+const char* featureInvalid(SettingFeature f) {
+  switch (f) {
+    case SettingFeature::Frame:
+      return "";
+    case SettingFeature::Lights:
+      return "BRDF or light options without lights";
+    case SettingFeature::SphereLights:
+      return "sphere-light options without sphere lights";
+    case SettingFeature::TubeLights:
+      return "tube-light options without tube lights";
+    case SettingFeature::AmbientIbl:
+      return "ambient IBL options without ambient IBL (no environment or no lit material)";
+  }
+  return "";
+}
+
+bool superseded(Supersede r, const RenderSettings& s) {
+  switch (r) {
+    case Supersede::None:
+      return false;
+    case Supersede::RemapInapplicable:
+      return !remapMeaningful(s.v);
+    case Supersede::SphereLtc:
+      return s.sphere_specular == SphereSpecular::Ltc;
+    case Supersede::TubeLtc:
+      return s.tube_specular == TubeSpecular::Ltc;
+  }
+  return false;
+}
+
+const char* supersedeReason(Supersede r) {
+  switch (r) {
+    case Supersede::None:
+      return "";
+    case Supersede::RemapInapplicable:
+      return "the remap applies to Schlick-GGX only (Karis eq. 4)";
+    case Supersede::SphereLtc:
+      return "the LTC sphere specular has none";
+    case Supersede::TubeLtc:
+      return "the LTC tube specular has none";
+  }
+  return "";
+}
+
+const char* supersedeInvalid(Supersede r) {
+  switch (r) {
+    case Supersede::None:
+      return "";
+    case Supersede::RemapInapplicable:
+      return "roughness remap with a visibility term other than Schlick-GGX";
+    case Supersede::SphereLtc:
+      return "sphere normalization with the LTC sphere specular";
+    case Supersede::TubeLtc:
+      return "tube normalization with the LTC tube specular";
+  }
+  return "";
+}
+
+}  // namespace
+
 RenderSettings canonicalSettings(const RenderSettings& s, const VariantKey& key) {
   const RenderSettings d;  // defaults
   RenderSettings c = s;
-  if (!key.hasLights()) {
-    c.d = d.d;
-    c.v = d.v;
-    c.f = d.f;
-    c.diffuse = d.diffuse;
-    c.remap_roughness = d.remap_roughness;
-    c.falloff_plus_one = d.falloff_plus_one;
-    c.culling = d.culling;
-  }
-  if (!remapMeaningful(c.v)) c.remap_roughness = false;
-  if (!key.sphere_lights) {
-    c.sphere_diffuse = d.sphere_diffuse;
-    c.sphere_normalization = d.sphere_normalization;
-    c.sphere_specular = d.sphere_specular;
-  }
-  if (!key.tube_lights) {
-    c.tube_specular = d.tube_specular;
-    c.tube_normalization = d.tube_normalization;
-    c.tube_diffuse = d.tube_diffuse;
-  }
-  // The LTC modes replace the representative point and its normalization: they change no code.
-  if (c.sphere_specular == SphereSpecular::Ltc) c.sphere_normalization = d.sphere_normalization;
-  if (c.tube_specular == TubeSpecular::Ltc) c.tube_normalization = d.tube_normalization;
-  if (!key.ambientIbl()) {
-    c.env_brdf = d.env_brdf;
-    c.energy_compensation = d.energy_compensation;
-    c.irradiance = d.irradiance;
-    c.specular_occlusion = d.specular_occlusion;
-  }
+  // First the features, then what supersedes a setting (its rule reads the reset values).
+  forEachSetting([&](const auto& row) {
+    if (!featurePresent(row.info.feature, key)) c.*row.member = d.*row.member;
+  });
+  forEachSetting([&](const auto& row) {
+    using T = typename std::decay_t<decltype(row)>::Type;
+    if constexpr (std::is_same_v<T, bool>) {
+      if (superseded(row.info.superseded_by, c)) c.*row.member = row.info.superseded_value;
+    }
+  });
   return c;
 }
 
@@ -161,35 +240,23 @@ std::vector<std::string> validateKey(const VariantKey& k) {
   if (!k.hasEnvironment() && s.irradiance == Irradiance::Cubemap) {
     bad.push_back("irradiance cubemap without an environment");
   }
-  if (!k.ambientIbl() &&
-      (s.env_brdf != d.env_brdf || s.energy_compensation != d.energy_compensation ||
-       s.specular_occlusion != d.specular_occlusion || s.irradiance != d.irradiance)) {
-    bad.push_back("ambient IBL options without ambient IBL (no environment or no lit material)");
+  for (SettingFeature f : {SettingFeature::Lights, SettingFeature::SphereLights,
+                           SettingFeature::TubeLights, SettingFeature::AmbientIbl}) {
+    if (featurePresent(f, k)) continue;
+    bool changed = false;
+    forEachSetting([&](const auto& row) {
+      changed = changed || (row.info.feature == f && s.*row.member != d.*row.member);
+    });
+    if (changed) bad.push_back(featureInvalid(f));
   }
-  if (s.remap_roughness && !remapMeaningful(s.v)) {
-    bad.push_back("roughness remap with a visibility term other than Schlick-GGX");
-  }
-  if (!k.sphere_lights &&
-      (s.sphere_diffuse != d.sphere_diffuse || s.sphere_normalization != d.sphere_normalization ||
-       s.sphere_specular != d.sphere_specular)) {
-    bad.push_back("sphere-light options without sphere lights");
-  }
-  if (!k.tube_lights &&
-      (s.tube_specular != d.tube_specular || s.tube_normalization != d.tube_normalization ||
-       s.tube_diffuse != d.tube_diffuse)) {
-    bad.push_back("tube-light options without tube lights");
-  }
-  if (s.sphere_specular == SphereSpecular::Ltc &&
-      s.sphere_normalization != d.sphere_normalization) {
-    bad.push_back("sphere normalization with the LTC sphere specular");
-  }
-  if (s.tube_specular == TubeSpecular::Ltc && s.tube_normalization != d.tube_normalization) {
-    bad.push_back("tube normalization with the LTC tube specular");
-  }
-  if (!k.hasLights() && (s.d != d.d || s.v != d.v || s.f != d.f || s.diffuse != d.diffuse ||
-                         s.falloff_plus_one != d.falloff_plus_one || s.culling != d.culling)) {
-    bad.push_back("BRDF or light options without lights");
-  }
+  forEachSetting([&](const auto& row) {
+    using T = typename std::decay_t<decltype(row)>::Type;
+    if constexpr (std::is_same_v<T, bool>) {
+      if (superseded(row.info.superseded_by, s) && s.*row.member != row.info.superseded_value) {
+        bad.push_back(supersedeInvalid(row.info.superseded_by));
+      }
+    }
+  });
   for (size_t i = 0; i < k.material_variants.size(); ++i) {
     const MaterialFeatures& f = k.material_variants[i];
     const std::string where = "material variant " + std::to_string(i) + ": ";
@@ -271,6 +338,41 @@ std::string ltcLobeNote(const RenderSettings& s, bool ltc) {
   return note;
 }
 
+template <class T>
+std::string valueText(const T& v) {
+  if constexpr (std::is_same_v<T, bool>) {
+    return v ? "true" : "false";
+  } else if constexpr (std::is_enum_v<T>) {
+    return std::string(toString(v));
+  } else {
+    return std::to_string(v);
+  }
+}
+
+// The defines `pass` gets from the settings table, each with its setting or why the key reset it.
+std::vector<KeyDefine> settingKeyDefines(const VariantKey& k, const Scene& scene,
+                                         SettingPass pass) {
+  const RenderSettings& s = k.settings;
+  const RenderSettings& in = scene.settings;
+  const auto values = settingDefines(s, pass);  // in row order, as below
+  std::vector<KeyDefine> out;
+  forEachSetting([&](const auto& row) {
+    using T = typename std::decay_t<decltype(row)>::Type;
+    if (row.info.pass != pass || !row.info.define) return;
+    const bool present = featurePresent(row.info.feature, k);
+    const std::string reason = present ? supersedeReason(row.info.superseded_by)
+                                       : featureAbsentReason(row.info.feature, k);
+    std::string why = settingWhy(row.key, valueText(s.*row.member), in.*row.member != s.*row.member,
+                                 reason.c_str());
+    if constexpr (std::is_enum_v<T>) {
+      if (present && toString(s.*row.member) == "ltc") why += ltcLobeNote(s, true);
+    }
+    const auto& [name, value] = values.at(out.size());
+    out.push_back({name, value, why});
+  });
+  return out;
+}
+
 }  // namespace
 
 std::vector<KeyDefine> gbufferDefines(const VariantKey& k, size_t variant, const Scene& scene) {
@@ -303,50 +405,11 @@ std::vector<KeyDefine> gbufferDefines(const VariantKey& k, size_t variant, const
 
 std::vector<KeyDefine> lightDefines(const VariantKey& k, const Scene& scene) {
   const RenderSettings& s = k.settings;
-  const RenderSettings& in = scene.settings;
-  const bool no_lights = !k.hasLights();
-  const char* nl = "no lights";
-  std::vector<KeyDefine> out;
-  // The values come from brdfDefines (the one map from settings to defines); the reasons here.
-  std::map<std::string, std::string> why = {
-      {"HV_BRDF_D", settingWhy("brdf.d", toString(s.d), no_lights && in.d != s.d, nl)},
-      {"HV_BRDF_V", settingWhy("brdf.v", toString(s.v), no_lights && in.v != s.v, nl)},
-      {"HV_BRDF_F", settingWhy("brdf.f", toString(s.f), no_lights && in.f != s.f, nl)},
-      {"HV_BRDF_FD",
-       settingWhy("brdf.diffuse", toString(s.diffuse), no_lights && in.diffuse != s.diffuse, nl)},
-      {"HV_REMAP_ROUGHNESS",
-       settingWhy("brdf.remap_roughness", s.remap_roughness ? "true" : "false",
-                  in.remap_roughness != s.remap_roughness,
-                  no_lights ? nl : "the remap applies to Schlick-GGX only (Karis eq. 4)")},
-      {"HV_FALLOFF_PLUS_ONE", settingWhy("falloff_plus_one", s.falloff_plus_one ? "true" : "false",
-                                         in.falloff_plus_one != s.falloff_plus_one, nl)},
-      {"HV_SPHERE_DIFFUSE", settingWhy("sphere_diffuse", toString(s.sphere_diffuse),
-                                       in.sphere_diffuse != s.sphere_diffuse, "no sphere lights")},
-      {"HV_SPHERE_NORMALIZATION",
-       settingWhy("sphere_normalization", s.sphere_normalization ? "true" : "false",
-                  in.sphere_normalization != s.sphere_normalization,
-                  in.sphere_specular == SphereSpecular::Ltc ? "the LTC sphere specular has none"
-                                                            : "no sphere lights")},
-      {"HV_SPHERE_SPECULAR",
-       settingWhy("sphere_specular", toString(s.sphere_specular),
-                  in.sphere_specular != s.sphere_specular, "no sphere lights") +
-           ltcLobeNote(s, k.sphere_lights && s.sphere_specular == SphereSpecular::Ltc)},
-      {"HV_TUBE_SPECULAR",
-       settingWhy("tube_specular", toString(s.tube_specular), in.tube_specular != s.tube_specular,
-                  "no tube lights") +
-           ltcLobeNote(s, k.tube_lights && s.tube_specular == TubeSpecular::Ltc)},
-      {"HV_TUBE_NORMALIZATION",
-       settingWhy("tube_normalization", s.tube_normalization ? "true" : "false",
-                  in.tube_normalization != s.tube_normalization,
-                  in.tube_specular == TubeSpecular::Ltc ? "the LTC tube specular has none"
-                                                        : "no tube lights")},
-      {"HV_TUBE_DIFFUSE", settingWhy("tube_diffuse", toString(s.tube_diffuse),
-                                     in.tube_diffuse != s.tube_diffuse, "no tube lights")},
-      {"HV_DIRECT_TERMS", s.direct_terms == 3 ? "diffuse and specular (all terms)"
-                                              : "term mask " + std::to_string(int(s.direct_terms)) +
-                                                    " (render --aov, per-term debug view)"},
-  };
-  for (auto& [name, value] : brdfDefines(s)) out.push_back({name, value, why[name]});
+  std::vector<KeyDefine> out = settingKeyDefines(k, scene, SettingPass::Light);
+  out.push_back({"HV_DIRECT_TERMS", std::to_string(int(s.direct_terms)),
+                 s.direct_terms == 3 ? "diffuse and specular (all terms)"
+                                     : "term mask " + std::to_string(int(s.direct_terms)) +
+                                           " (render --aov, per-term debug view)"});
   const struct {
     const char* define;
     bool on;
@@ -362,16 +425,12 @@ std::vector<KeyDefine> lightDefines(const VariantKey& k, const Scene& scene) {
     if (k.uber) w = "uber build (" + w + ")";
     out.push_back({t.define, flag(t.on), w});
   }
-  out.push_back({"HV_CULLING_BRUTE_FORCE", s.culling == Culling::BruteForce ? "1" : "0",
-                 settingWhy("culling", toString(s.culling), in.culling != s.culling, nl)});
   return out;
 }
 
 std::vector<KeyDefine> ambientDefines(const VariantKey& k, const Scene& scene) {
   const RenderSettings& s = k.settings;
-  const RenderSettings& in = scene.settings;
   const std::string env_name(toString(k.environment));
-  const char* no_ibl = k.hasEnvironment() ? "no default_lit material" : "no environment";
   std::vector<KeyDefine> out;
   out.push_back({"HV_ENVIRONMENT", flag(k.hasEnvironment() || k.uber),
                  k.uber ? "uber build (environment " + env_name + ")"
@@ -385,22 +444,16 @@ std::vector<KeyDefine> ambientDefines(const VariantKey& k, const Scene& scene) {
                  k.uber          ? "uber build"
                  : k.default_lit ? "default_lit materials present"
                                  : "no default_lit material: no image-based lighting code"});
-  out.push_back({"HV_ENV_BRDF_ANALYTIC", flag(s.env_brdf == EnvBrdf::Analytic),
-                 settingWhy("env_brdf", toString(s.env_brdf), in.env_brdf != s.env_brdf, no_ibl)});
-  out.push_back({"HV_ENERGY_COMPENSATION", flag(s.energy_compensation),
-                 settingWhy("energy_compensation", s.energy_compensation ? "true" : "false",
-                            in.energy_compensation != s.energy_compensation, no_ibl)});
-  out.push_back(
-      {"HV_IRRADIANCE_CUBEMAP", flag(s.irradiance == Irradiance::Cubemap),
-       settingWhy("irradiance", toString(s.irradiance), in.irradiance != s.irradiance, no_ibl)});
-  out.push_back({"HV_SPECULAR_OCCLUSION", flag(s.specular_occlusion),
-                 settingWhy("specular_occlusion", s.specular_occlusion ? "true" : "false",
-                            in.specular_occlusion != s.specular_occlusion, no_ibl)});
+  for (KeyDefine& d : settingKeyDefines(k, scene, SettingPass::Ambient)) out.push_back(d);
   out.push_back({"HV_AMBIENT_TERMS", std::to_string(int(s.ambient_terms)),
                  s.ambient_terms == 3 ? "diffuse and specular (all terms)"
                                       : "term mask " + std::to_string(int(s.ambient_terms)) +
                                             " (render --aov, per-term debug view)"});
   return out;
+}
+
+std::vector<KeyDefine> toneMapDefines(const VariantKey& k, const Scene& scene) {
+  return settingKeyDefines(k, scene, SettingPass::ToneMap);
 }
 
 }  // namespace hv::render

@@ -8,9 +8,11 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <list>
 #include <numbers>
 #include <optional>
 #include <sstream>
+#include <type_traits>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -470,64 +472,75 @@ Environment parseEnvironment(const Ctx& ctx, const json& j,
   return e;
 }
 
+// "brdf" of "brdf.d"; empty for a top-level key.
+std::string_view settingGroup(std::string_view key) {
+  const size_t dot = key.find('.');
+  return dot == std::string_view::npos ? std::string_view() : key.substr(0, dot);
+}
+// "d" of "brdf.d".
+std::string_view settingLeaf(std::string_view key) {
+  const size_t dot = key.find('.');
+  return dot == std::string_view::npos ? key : key.substr(dot + 1);
+}
+
+// One setting's value, parsed as its row's type says.
+template <class T>
+T parseSetting(const Obj& o, const char* key, T def, const SettingInfo& info) {
+  if constexpr (std::is_same_v<T, bool>) {
+    return o.boolean(key, def);
+  } else if constexpr (std::is_same_v<T, int>) {
+    return o.integer(key, def, int(info.lo), int(info.hi));
+  } else if constexpr (std::is_same_v<T, float>) {
+    return o.num(key, def, Range{info.lo, info.hi, info.lo_open});
+  } else {
+    return o.enumeration(key, def);
+  }
+}
+
+// The settings table (render_settings.hpp) read row by row: its keys are the only ones allowed,
+// a preset first so that the explicit settings override it.
 RenderSettings parseSettings(const Ctx& ctx, const json& j) {
-  Obj o(ctx, j, "/settings",
-        {"preset",
-         "width",
-         "height",
-         "exposure",
-         "tone_map",
-         "gamma",
-         "dither",
-         "brdf",
-         "falloff_plus_one",
-         "sphere_diffuse",
-         "sphere_normalization",
-         "sphere_specular",
-         "tube_specular",
-         "tube_normalization",
-         "tube_diffuse",
-         "culling",
-         "env_brdf",
-         "energy_compensation",
-         "irradiance",
-         "specular_occlusion",
-         "uber"});
+  std::vector<std::string_view> top = {"preset"};
+  std::vector<std::pair<std::string_view, std::vector<std::string_view>>> groups;
+  forEachSetting([&](const auto& row) {
+    const std::string_view group = settingGroup(row.key);
+    const std::string_view first = group.empty() ? std::string_view(row.key) : group;
+    if (std::find(top.begin(), top.end(), first) == top.end()) top.push_back(first);
+    if (group.empty()) return;
+    auto g =
+        std::find_if(groups.begin(), groups.end(), [&](const auto& e) { return e.first == group; });
+    if (g == groups.end()) g = groups.insert(groups.end(), {group, {}});
+    g->second.push_back(settingLeaf(row.key));
+  });
+  Obj o(ctx, j, "/settings", top);
   RenderSettings s;
-  if (o.has("preset")) {  // first, so that the explicit settings below override it
+  if (o.has("preset")) {
     const std::string name = o.string("preset", "");
     if (!applySettingsPreset(name, s)) {
       o.fail("preset", "unknown preset \"" + name + "\"" + didYouMean(name, settingsPresetNames()) +
                            " (expected one of: " + joinNames(settingsPresetNames()) + ")");
     }
   }
-  s.width = o.integer("width", s.width, 1, 16384);
-  s.height = o.integer("height", s.height, 1, 16384);
-  s.exposure = o.num("exposure", s.exposure, kPositive);
-  s.tone_map = o.enumeration("tone_map", s.tone_map);
-  s.gamma = o.enumeration("gamma", s.gamma);
-  s.dither = o.boolean("dither", s.dither);
-  if (o.has("brdf")) {
-    Obj b(ctx, o["brdf"], o.at("brdf"), {"d", "v", "f", "diffuse", "remap_roughness"});
-    s.d = b.enumeration("d", s.d);
-    s.v = b.enumeration("v", s.v);
-    s.f = b.enumeration("f", s.f);
-    s.diffuse = b.enumeration("diffuse", s.diffuse);
-    s.remap_roughness = b.boolean("remap_roughness", s.remap_roughness);
-  }
-  s.falloff_plus_one = o.boolean("falloff_plus_one", s.falloff_plus_one);
-  s.sphere_diffuse = o.enumeration("sphere_diffuse", s.sphere_diffuse);
-  s.sphere_normalization = o.boolean("sphere_normalization", s.sphere_normalization);
-  s.sphere_specular = o.enumeration("sphere_specular", s.sphere_specular);
-  s.tube_specular = o.enumeration("tube_specular", s.tube_specular);
-  s.tube_normalization = o.boolean("tube_normalization", s.tube_normalization);
-  s.tube_diffuse = o.enumeration("tube_diffuse", s.tube_diffuse);
-  s.culling = o.enumeration("culling", s.culling);
-  s.env_brdf = o.enumeration("env_brdf", s.env_brdf);
-  s.energy_compensation = o.boolean("energy_compensation", s.energy_compensation);
-  s.irradiance = o.enumeration("irradiance", s.irradiance);
-  s.specular_occlusion = o.boolean("specular_occlusion", s.specular_occlusion);
-  s.uber = o.boolean("uber", s.uber);
+  std::list<std::pair<std::string_view, Obj>> nested;  // made when their first row is read
+  forEachSetting([&](const auto& row) {
+    const std::string_view group = settingGroup(row.key);
+    const Obj* where = &o;
+    if (!group.empty()) {
+      const std::string g(group);
+      if (!o.has(g.c_str())) return;
+      auto it = std::find_if(nested.begin(), nested.end(),
+                             [&](const auto& e) { return e.first == group; });
+      if (it == nested.end()) {
+        const auto& keys = std::find_if(groups.begin(), groups.end(), [&](const auto& e) {
+                             return e.first == group;
+                           })->second;
+        it = nested.emplace(nested.end(), group, Obj(ctx, o[g.c_str()], o.at(g), keys));
+      }
+      where = &it->second;
+    }
+    const std::string leaf(settingLeaf(row.key));
+    s.*row.member = parseSetting(*where, leaf.c_str(), s.*row.member, row.info);
+  });
   return s;
 }
 

@@ -430,36 +430,18 @@ void environmentEdits(const nlohmann::json& file, const Environment& a, const En
           b.prefilter_samples);
 }
 
+// Every row of the settings table (render_settings.hpp) that the edit changed, at its JSON path.
 void settingsEdits(const RenderSettings& a, const RenderSettings& b, Collector& c) {
-  const std::string s = "/settings/";
-#define HV_SETTING(KEY, MEMBER) c.field(s + KEY, a.MEMBER, b.MEMBER, ojson(b.MEMBER))
-#define HV_ENUM_SETTING(KEY, MEMBER) c.field(s + KEY, a.MEMBER, b.MEMBER, name(b.MEMBER))
-  HV_SETTING("width", width);
-  HV_SETTING("height", height);
-  HV_SETTING("exposure", exposure);
-  HV_ENUM_SETTING("tone_map", tone_map);
-  HV_ENUM_SETTING("gamma", gamma);
-  HV_SETTING("dither", dither);
-  HV_ENUM_SETTING("brdf/d", d);
-  HV_ENUM_SETTING("brdf/v", v);
-  HV_ENUM_SETTING("brdf/f", f);
-  HV_ENUM_SETTING("brdf/diffuse", diffuse);
-  HV_SETTING("brdf/remap_roughness", remap_roughness);
-  HV_SETTING("falloff_plus_one", falloff_plus_one);
-  HV_ENUM_SETTING("sphere_diffuse", sphere_diffuse);
-  HV_SETTING("sphere_normalization", sphere_normalization);
-  HV_ENUM_SETTING("sphere_specular", sphere_specular);
-  HV_ENUM_SETTING("tube_specular", tube_specular);
-  HV_SETTING("tube_normalization", tube_normalization);
-  HV_ENUM_SETTING("tube_diffuse", tube_diffuse);
-  HV_ENUM_SETTING("culling", culling);
-  HV_ENUM_SETTING("env_brdf", env_brdf);
-  HV_SETTING("energy_compensation", energy_compensation);
-  HV_ENUM_SETTING("irradiance", irradiance);
-  HV_SETTING("specular_occlusion", specular_occlusion);
-  HV_SETTING("uber", uber);
-#undef HV_SETTING
-#undef HV_ENUM_SETTING
+  forEachSetting([&](const auto& row) {
+    using T = typename std::decay_t<decltype(row)>::Type;
+    std::string path = std::string("/settings/") + row.key;
+    std::replace(path.begin(), path.end(), '.', '/');
+    if constexpr (std::is_enum_v<T>) {
+      c.field(path, a.*row.member, b.*row.member, name(b.*row.member));
+    } else {
+      c.field(path, a.*row.member, b.*row.member, ojson(b.*row.member));
+    }
+  });
 }
 
 void cameraEdits(const Camera& a, const Camera& b, Collector& c) {

@@ -83,26 +83,11 @@ float evalFd(const BrdfConfig& c, float roughness, float NoV, float NoL, float L
 }
 
 std::vector<std::pair<std::string, std::string>> brdfDefines(const RenderSettings& s) {
-  auto num = [](auto e) { return std::to_string(static_cast<int>(e)); };
-  auto flag = [](bool b) { return std::string(b ? "1" : "0"); };
-  // The define values are the enum values: brdf.glsl's HV_D_* / HV_V_* / HV_F_* / HV_FD_* follow
-  // the enum order of scene.hpp (checked by tests/shading/test_brdf.cpp), likewise
-  // HV_SPHERE_DIFFUSE, HV_SPHERE_SPECULAR, HV_TUBE_SPECULAR and HV_TUBE_DIFFUSE in lights.glsl.
-  return {
-      {"HV_BRDF_D", num(s.d)},
-      {"HV_BRDF_V", num(s.v)},
-      {"HV_BRDF_F", num(s.f)},
-      {"HV_BRDF_FD", num(s.diffuse)},
-      {"HV_REMAP_ROUGHNESS", flag(s.remap_roughness)},
-      {"HV_FALLOFF_PLUS_ONE", flag(s.falloff_plus_one)},
-      {"HV_SPHERE_DIFFUSE", num(s.sphere_diffuse)},
-      {"HV_SPHERE_NORMALIZATION", flag(s.sphere_normalization)},
-      {"HV_SPHERE_SPECULAR", num(s.sphere_specular)},
-      {"HV_TUBE_SPECULAR", num(s.tube_specular)},
-      {"HV_TUBE_NORMALIZATION", flag(s.tube_normalization)},
-      {"HV_TUBE_DIFFUSE", num(s.tube_diffuse)},
-      {"HV_DIRECT_TERMS", std::to_string(int(s.direct_terms))},
-  };
+  // The light pass's rows of the settings table (render_settings.hpp), whose enum values are
+  // setting_values.glsl's, and the term mask.
+  auto out = settingDefines(s, SettingPass::Light);
+  out.emplace_back("HV_DIRECT_TERMS", std::to_string(int(s.direct_terms)));
+  return out;
 }
 
 }  // namespace hv

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <random>
 #include <stdexcept>
+#include <type_traits>
 
 #include "halfvec/scene/enums.hpp"
 #include "halfvec/scene/scene_writer.hpp"
@@ -290,40 +291,21 @@ HV_LIGHT_SETTER(setRange, float v, l->range = std::isfinite(v) ? std::max(v, 0.0
 
 // ---------------------------------------------------------------------------------------------
 
-namespace {
-template <class E, E RenderSettings::*M>
-RenderSettingsModel::EnumField enumField(const char* label, bool needs_set_scene = false) {
-  return {label, enumNames<E>(), [](const RenderSettings& s) { return int(s.*M); },
-          [](RenderSettings& s, int v) { s.*M = E(v); }, needs_set_scene};
-}
-}  // namespace
-
+// The controls are the settings table's rows that have a label (render_settings.hpp), in its order.
 RenderSettingsModel::RenderSettingsModel() {
-  using S = RenderSettings;
-  enums_ = {
-      enumField<DistributionTerm, &S::d>("distribution (D)"),
-      enumField<VisibilityTerm, &S::v>("visibility (V)"),
-      enumField<FresnelTerm, &S::f>("fresnel (F)"),
-      enumField<DiffuseTerm, &S::diffuse>("diffuse"),
-      enumField<SphereDiffuse, &S::sphere_diffuse>("sphere diffuse"),
-      enumField<SphereSpecular, &S::sphere_specular>("sphere specular"),
-      enumField<TubeSpecular, &S::tube_specular>("tube specular"),
-      enumField<TubeDiffuse, &S::tube_diffuse>("tube diffuse"),
-      enumField<Culling, &S::culling>("culling"),
-      enumField<EnvBrdf, &S::env_brdf>("env BRDF"),
-      enumField<Irradiance, &S::irradiance>("irradiance", true),
-      enumField<ToneMap, &S::tone_map>("tone map"),
-      enumField<Gamma, &S::gamma>("gamma"),
-  };
-  bools_ = {
-      {"remap roughness (analytic)", &S::remap_roughness},
-      {"falloff 1/(d^2+1)", &S::falloff_plus_one},
-      {"sphere normalization", &S::sphere_normalization},
-      {"tube normalization", &S::tube_normalization},
-      {"energy compensation", &S::energy_compensation},
-      {"specular occlusion", &S::specular_occlusion},
-      {"dither", &S::dither},
-  };
+  forEachSetting([&](const auto& row) {
+    using T = typename std::decay_t<decltype(row)>::Type;
+    if (!row.info.label) return;
+    const auto member = row.member;
+    if constexpr (std::is_same_v<T, bool>) {
+      bools_.push_back({row.info.label, member});
+    } else if constexpr (std::is_enum_v<T>) {
+      enums_.push_back({row.info.label, enumNames<T>(),
+                        [member](const RenderSettings& s) { return int(s.*member); },
+                        [member](RenderSettings& s, int v) { s.*member = T(v); },
+                        row.info.needs_set_scene});
+    }
+  });
 }
 
 bool RenderSettingsModel::setEnum(size_t field, int value) {

@@ -100,5 +100,7 @@ std::vector<KeyDefine> gbufferDefines(const VariantKey& key, size_t variant, con
 std::vector<KeyDefine> lightDefines(const VariantKey& key, const Scene& scene);
 // Ambient pass: environment presence, shading models, the IBL options.
 std::vector<KeyDefine> ambientDefines(const VariantKey& key, const Scene& scene);
+// Tone map pass: the output transform's settings.
+std::vector<KeyDefine> toneMapDefines(const VariantKey& key, const Scene& scene);
 
 }  // namespace hv::render

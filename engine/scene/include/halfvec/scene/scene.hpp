@@ -10,6 +10,8 @@
 
 #include <glm/glm.hpp>
 
+#include "halfvec/scene/render_settings.hpp"
+
 namespace hv {
 
 struct Camera {
@@ -123,63 +125,6 @@ struct Environment {
   float rotation_deg = 0.0f;  // about +Y
   int cube_size = 256;
   int prefilter_samples = 256;
-};
-
-// Term choices; defaults are Karis 2013's choice. Each maps to a define (docs/brdf.md).
-enum class DistributionTerm : uint8_t { GGX, Beckmann, BlinnPhong };
-enum class VisibilityTerm : uint8_t {
-  SchlickGGX,              // k = alpha/2 (Karis 2013 eq. 4; remap_roughness for analytic lights)
-  SmithGGXCorrelated,      // Heitz 2014 exact height-correlated
-  SmithGGXCorrelatedFast,  // Hammon 2017 / UE4 Vis_SmithJointApprox
-  SmithGGXSeparable,       // Walter 2007 exact separable G1 for GGX
-  SmithBeckmannSeparable,  // Walter 2007 rational approximation
-  CookTorrance,
-  Implicit
-};
-enum class FresnelTerm : uint8_t { SchlickPow5, SchlickSG, Exact, SchlickF90Occlusion };
-enum class DiffuseTerm : uint8_t { Lambert, Burley };
-enum class SphereDiffuse : uint8_t { KarisPoint, HorizonCorrect };
-enum class SphereSpecular : uint8_t { RepresentativePoint, Ltc };
-enum class TubeSpecular : uint8_t { ClosestPointEq19, SmallestAngleEq18, Ltc };
-enum class TubeDiffuse : uint8_t { KarisEq16, Ltc };
-enum class Culling : uint8_t { Tiled, BruteForce };
-// HV_TONEMAP in shaders/common/tonemap.glsl (same values).
-enum class ToneMap : uint8_t { Reinhard, ReinhardLuminance, None, PbrNeutral, Aces };
-enum class Gamma : uint8_t { Gamma22, SRGB };
-enum class EnvBrdf : uint8_t { Table, Analytic };
-enum class Irradiance : uint8_t { SH9, Cubemap };
-
-struct RenderSettings {
-  int width = 960;
-  int height = 540;
-  float exposure = 1.0f;
-  ToneMap tone_map = ToneMap::Reinhard;
-  Gamma gamma = Gamma::Gamma22;
-  bool dither = true;
-  DistributionTerm d = DistributionTerm::GGX;
-  VisibilityTerm v = VisibilityTerm::SchlickGGX;
-  FresnelTerm f = FresnelTerm::SchlickPow5;
-  DiffuseTerm diffuse = DiffuseTerm::Lambert;
-  bool remap_roughness = true;   // Disney (roughness+1)/2 for analytic lights (Karis eq. 4)
-  bool falloff_plus_one = true;  // UE4's 1/(d^2+1); false = physical 1/d^2 (accuracy mode)
-  SphereDiffuse sphere_diffuse = SphereDiffuse::KarisPoint;
-  bool sphere_normalization = true;  // (alpha/alpha')^2, Karis eqs. 10 and 14
-  // Karis's representative point, or the fitted LTC over the sphere (docs/lights.md).
-  SphereSpecular sphere_specular = SphereSpecular::RepresentativePoint;
-  TubeSpecular tube_specular = TubeSpecular::ClosestPointEq19;
-  bool tube_normalization = true;                     // alpha/alpha', Karis eq. 20
-  TubeDiffuse tube_diffuse = TubeDiffuse::KarisEq16;  // or the capsule's exact-shape irradiance
-  Culling culling = Culling::Tiled;
-  EnvBrdf env_brdf = EnvBrdf::Table;
-  bool energy_compensation = false;
-  Irradiance irradiance = Irradiance::SH9;
-  bool specular_occlusion = false;
-  bool uber = false;  // compile every feature in, chosen at run time (docs/variants.md)
-  bool operator==(const RenderSettings&) const = default;
-  // Term masks (not scene-file fields; `halfvec render --aov` sets them): bit 1 diffuse, bit 2
-  // specular of direct light (HV_DIRECT_TERMS) and of ambient light (HV_AMBIENT_TERMS).
-  uint8_t direct_terms = 3;
-  uint8_t ambient_terms = 3;
 };
 
 struct Scene {

@@ -1,7 +1,8 @@
 // Run-time choice of BRDF terms for C++ (tests, the CPU reference renderer). The GLSL picks terms
 // at compile time through the define table of shaders/common/brdf.glsl; here BrdfConfig picks at
 // run time and every eval* switches over the very same hv::glsl term functions (no term math is
-// written twice). brdfDefines() is the one place RenderSettings become shader defines.
+// written twice). The settings table (halfvec/scene/render_settings.hpp) maps RenderSettings to
+// shader defines; brdfDefines() gives the light pass's.
 #pragma once
 
 #include <string>

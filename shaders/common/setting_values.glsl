@@ -1,0 +1,66 @@
+// The values of every enumerated render setting that reaches a shader as a define, written once
+// for both languages: the shaders compare HV_BRDF_D and the other defines against these names,
+// and the C++ enums of halfvec/scene/render_settings.hpp take their values from them, so a
+// scene setting and the code it selects cannot drift apart. The settings themselves (key,
+// default, define, feature) are the rows of HV_RENDER_SETTINGS in that header. Two-valued
+// settings whose define is a flag (culling, env_brdf, irradiance) need no names here: their
+// define is 1 for the second value.
+#ifndef HV_SETTING_VALUES_GLSL
+#define HV_SETTING_VALUES_GLSL
+
+// brdf.d (HV_BRDF_D): the microfacet distribution (Karis 2013, "Specular D").
+#define HV_D_GGX 0
+#define HV_D_BECKMANN 1
+#define HV_D_BLINN_PHONG 2
+
+// brdf.v (HV_BRDF_V): the visibility term G / (4 NoL NoV) (Karis 2013, "Specular G").
+#define HV_V_SCHLICK_GGX 0
+#define HV_V_SMITH_GGX_CORRELATED 1
+#define HV_V_SMITH_GGX_CORRELATED_FAST 2
+#define HV_V_SMITH_GGX_SEPARABLE 3
+#define HV_V_SMITH_BECKMANN_SEPARABLE 4
+#define HV_V_COOK_TORRANCE 5
+#define HV_V_IMPLICIT 6
+
+// brdf.f (HV_BRDF_F): Fresnel (Karis 2013, "Specular F").
+#define HV_F_SCHLICK 0
+#define HV_F_SCHLICK_SG 1
+#define HV_F_EXACT 2
+#define HV_F_SCHLICK_F90_OCCLUSION 3
+
+// brdf.diffuse (HV_BRDF_FD).
+#define HV_FD_LAMBERT 0
+#define HV_FD_BURLEY 1
+
+// sphere_diffuse (HV_SPHERE_DIFFUSE): Karis's point approximation or the horizon-correct sphere
+// irradiance (Lagarde & de Rousiers 2014, section 4.7).
+#define HV_SPHERE_DIFFUSE_KARIS_POINT 0
+#define HV_SPHERE_DIFFUSE_HORIZON 1
+
+// sphere_specular (HV_SPHERE_SPECULAR): representative point (Karis eqs. 10, 11, 14) or LTC.
+#define HV_SPHERE_SPECULAR_REPRESENTATIVE_POINT 0
+#define HV_SPHERE_SPECULAR_LTC 1
+
+// tube_specular (HV_TUBE_SPECULAR): closest point to the reflection ray (Karis eq. 19),
+// smallest angle (eq. 18), LTC over the capsule.
+#define HV_TUBE_SPECULAR_CLOSEST_POINT 0
+#define HV_TUBE_SPECULAR_SMALLEST_ANGLE 1
+#define HV_TUBE_SPECULAR_LTC 2
+
+// tube_diffuse (HV_TUBE_DIFFUSE): Karis eq. 16 or the capsule's irradiance (identity LTC).
+#define HV_TUBE_DIFFUSE_KARIS_EQ16 0
+#define HV_TUBE_DIFFUSE_LTC 1
+
+// tone_map (HV_TONEMAP): Reinhard per channel (Reinhard et al. 2002, eq. 3), on luminance, none
+// (clamp), Khronos PBR Neutral, ACES (Narkowicz's fit).
+#define HV_TONEMAP_REINHARD 0
+#define HV_TONEMAP_REINHARD_LUMINANCE 1
+#define HV_TONEMAP_NONE 2
+#define HV_TONEMAP_PBR_NEUTRAL 3
+#define HV_TONEMAP_ACES 4
+
+// gamma (HV_GAMMA): gamma 2.2 or exact sRGB (IEC 61966-2-1).
+#define HV_GAMMA_22 0
+#define HV_GAMMA_SRGB 1
+
+#endif  // HV_SETTING_VALUES_GLSL
