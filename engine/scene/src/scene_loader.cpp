@@ -20,6 +20,7 @@
 #include "halfvec/core/suggest.hpp"
 #include "halfvec/scene/enums.hpp"
 #include "halfvec/scene/gltf_loader.hpp"
+#include "halfvec/scene/light_generator.hpp"
 #include "halfvec/scene/presets.hpp"
 #include "halfvec/scene/primitives.hpp"
 
@@ -339,27 +340,6 @@ Light parseLight(const Ctx& ctx, const json& j, const std::string& ptr) {
   return l;
 }
 
-// splitmix64: a tiny, platform-independent generator, so light_generators expand to the same
-// lights everywhere (std distributions are implementation-defined).
-struct Rng {
-  uint64_t s;
-  uint64_t next() {
-    uint64_t z = (s += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  float uniform() { return float(next() >> 40) * (1.0f / 16777216.0f); }  // [0, 1)
-  float in(glm::vec2 r) { return r.x + (r.y - r.x) * uniform(); }
-};
-
-glm::vec3 hueToRgb(float h) {  // fully saturated HSV hue in [0, 1) -> linear RGB, value 1
-  const float r = std::abs(h * 6.0f - 3.0f) - 1.0f;
-  const float g = 2.0f - std::abs(h * 6.0f - 2.0f);
-  const float b = 2.0f - std::abs(h * 6.0f - 4.0f);
-  return glm::clamp(glm::vec3(r, g, b), 0.0f, 1.0f);
-}
-
 void expandGenerator(const Ctx& ctx, const json& j, const std::string& ptr,
                      std::vector<Light>& out) {
   Obj o(ctx, j, ptr,
@@ -402,39 +382,22 @@ void expandGenerator(const Ctx& ctx, const json& j, const std::string& ptr,
   if (o.has("color") && mode != "fixed") o.fail("color", "only used with color_mode \"fixed\"");
   const glm::vec3 fixed = o.vec3("color", glm::vec3(1.0f), kNonNeg);
   const float saturation = o.num("saturation", 0.7f, kUnit);
-  Rng rng{uint64_t(seed) * 0x2545F4914F6CDD1Dull + 1};
-  const float wsum = weights[0] + weights[1] + weights[2];
-  for (int i = 0; i < count; ++i) {
-    Light l;
-    const float pick = rng.uniform() * wsum;
-    l.type = pick < weights[0]                ? LightType::Point
-             : pick < weights[0] + weights[1] ? LightType::Sphere
-                                              : LightType::Tube;
-    l.position =
-        glm::vec3(rng.in({vmin.x, vmax.x}), rng.in({vmin.y, vmax.y}), rng.in({vmin.z, vmax.z}));
-    l.intensity = rng.in(intensity);
-    l.range = rng.in(range);
-    const float r = rng.in(radius);
-    const float len = rng.in(length);
-    const float z = rng.uniform() * 2.0f - 1.0f,
-                phi = rng.uniform() * 2.0f * std::numbers::pi_v<float>;
-    const float s = std::sqrt(std::max(0.0f, 1.0f - z * z));
-    const glm::vec3 axis(s * std::cos(phi), z, s * std::sin(phi));
-    const float hue = rng.uniform();
-    if (l.type != LightType::Point) l.radius = r;
-    if (l.type == LightType::Tube) {
-      l.length = len;
-      l.axis = axis;
-    }
-    if (mode == "white") {
-      l.color = glm::vec3(1.0f);
-    } else if (mode == "fixed") {
-      l.color = fixed;
-    } else {
-      l.color = glm::mix(glm::vec3(1.0f), hueToRgb(hue), saturation);
-    }
-    out.push_back(l);
-  }
+  LightGeneratorParams p;
+  p.count = count;
+  p.seed = uint64_t(seed);
+  p.weights = {weights[0], weights[1], weights[2]};
+  p.volume_min = vmin;
+  p.volume_max = vmax;
+  p.intensity = intensity;
+  p.radius = radius;
+  p.length = length;
+  p.range = range;
+  p.color_mode = mode == "white"   ? LightColorMode::White
+                 : mode == "fixed" ? LightColorMode::Fixed
+                                   : LightColorMode::RandomHue;
+  p.color = fixed;
+  p.saturation = saturation;
+  generateLights(p, out);
 }
 
 Environment parseEnvironment(const Ctx& ctx, const json& j,

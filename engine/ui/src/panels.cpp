@@ -5,11 +5,11 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
-#include <random>
 #include <stdexcept>
 #include <type_traits>
 
 #include "halfvec/scene/enums.hpp"
+#include "halfvec/scene/light_generator.hpp"
 #include "halfvec/scene/scene_writer.hpp"
 
 namespace hv::ui {
@@ -164,49 +164,26 @@ int MaterialPanelModel::saveMaterials(const std::string& path) const {
 
 // ---------------------------------------------------------------------------------------------
 
+// The scene files' generator (halfvec/scene/light_generator.hpp) with the panel's single radius,
+// length and range, and its saturation.
 std::vector<Light> generateLights(const LightGenerator& gen) {
   std::vector<Light> out;
   if (gen.count <= 0) return out;
-  std::mt19937 rng(gen.seed);
-  // Own uniform mapping: std::uniform_real_distribution is not specified bit-exactly across
-  // standard libraries, and the generator must be reproducible.
-  auto uni = [&](float a, float b) {
-    const float t = float(rng() >> 8) * (1.0f / 16777216.0f);
-    return a + (b - a) * t;
-  };
-  const float wp = std::max(gen.point_weight, 0.0f), ws = std::max(gen.sphere_weight, 0.0f),
-              wt = std::max(gen.tube_weight, 0.0f);
-  const float total = wp + ws + wt > 0.0f ? wp + ws + wt : 1.0f;
-  const glm::vec3 lo = glm::min(gen.box_min, gen.box_max), hi = glm::max(gen.box_min, gen.box_max);
+  LightGeneratorParams p;
+  p.count = gen.count;
+  p.seed = gen.seed;
+  p.weights = glm::max(glm::vec3(gen.point_weight, gen.sphere_weight, gen.tube_weight), 0.0f);
+  if (p.weights.x + p.weights.y + p.weights.z <= 0.0f) p.weights = {1.0f, 0.0f, 0.0f};
+  p.volume_min = glm::min(gen.box_min, gen.box_max);
+  p.volume_max = glm::max(gen.box_min, gen.box_max);
+  const float imin = std::max(gen.intensity_min, 0.0f);
+  p.intensity = {imin, std::max(gen.intensity_max, imin)};
+  p.range = glm::vec2(std::max(gen.range, 0.01f));
+  p.radius = glm::vec2(std::max(gen.radius, 0.0f));
+  p.length = glm::vec2(std::max(gen.length, 0.0f));
+  p.saturation = 0.6f;
   out.reserve(size_t(gen.count));
-  for (int i = 0; i < gen.count; ++i) {
-    Light l;
-    const float pick = uni(0.0f, total);
-    l.type = (wp + ws + wt <= 0.0f || pick < wp) ? LightType::Point
-             : pick < wp + ws                    ? LightType::Sphere
-                                                 : LightType::Tube;
-    l.position = {uni(lo.x, hi.x), uni(lo.y, hi.y), uni(lo.z, hi.z)};
-    // Saturated hue: HSV with s = 0.6, v = 1.
-    const float h = uni(0.0f, 6.0f);
-    const float x = 1.0f - std::abs(std::fmod(h, 2.0f) - 1.0f);
-    glm::vec3 c = h < 1   ? glm::vec3(1, x, 0)
-                  : h < 2 ? glm::vec3(x, 1, 0)
-                  : h < 3 ? glm::vec3(0, 1, x)
-                  : h < 4 ? glm::vec3(0, x, 1)
-                  : h < 5 ? glm::vec3(x, 0, 1)
-                          : glm::vec3(1, 0, x);
-    l.color = glm::mix(glm::vec3(1.0f), c, 0.6f);
-    l.intensity = uni(std::max(gen.intensity_min, 0.0f),
-                      std::max(gen.intensity_max, std::max(gen.intensity_min, 0.0f)));
-    l.range = std::max(gen.range, 0.01f);
-    if (l.type != LightType::Point) l.radius = std::max(gen.radius, 0.0f);
-    if (l.type == LightType::Tube) {
-      l.length = std::max(gen.length, 0.0f);
-      const float phi = uni(0.0f, 6.2831853f);
-      l.axis = {std::cos(phi), 0.0f, std::sin(phi)};
-    }
-    out.push_back(l);
-  }
+  hv::generateLights(p, out);
   return out;
 }
 
