@@ -1,4 +1,4 @@
-// `halfvec bench`: light-pass scaling tables (issue "Light pass", section Performance).
+// `halfvec bench`: light-pass scaling tables and the performance targets of docs/performance.md.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -42,7 +42,7 @@ Light-pass benchmark on a 40 m x 40 m floor seen from above at an angle, lights 
 the median light_cull and light pass GPU ms over N frames and light-pixel evaluations per
 second (evaluations = sum over lit pixels of the lights in the pixel's tile list), then tiled vs
 brute force at 1,024 lights, then (c) the 1,024-light row per light type, (d) where the light
-pass's time goes at 1,024 lights (see --breakdown), then the issue's three targets with the measured value and
+pass's time goes at 1,024 lights (see --breakdown), then the three targets of docs/performance.md with the measured value and
 met/MISSED (the 256 -> 16384 growth re-measured with the two scenes' frames interleaved, so load
 from other processes hits both alike, and judged on the median of the per-round ratios). Light counts: 64, 256, 1024, 4096, 16384 (--quick: 64, 256, 1024, 16384 for (a),
 64, 1024, 16384 for (b)), up to --max-lights. --lights N: only the row of table (a) at N lights
@@ -275,7 +275,8 @@ std::vector<std::pair<int, Result>> scalingTables(const BenchArgs& b) {
   return table_a;
 }
 
-// Tiled vs brute force at 1,024 lights, then the issue's targets checked on the numbers above.
+// Tiled vs brute force at 1,024 lights, then docs/performance.md's targets checked on the numbers
+// above.
 void benchTargets(const BenchArgs& b, const std::vector<std::pair<int, Result>>& table_a,
                   double shading_only_rate) {
   const int w = b.w, h = b.h, frames = b.frames, types = b.types, max_lights = b.max_lights;
@@ -292,7 +293,7 @@ void benchTargets(const BenchArgs& b, const std::vector<std::pair<int, Result>>&
   const double speedup = tiled_total > 0 ? brute.light_ms / tiled_total : 0.0;
   std::printf("speedup (brute light ms / tiled cull+light ms): %.1fx\n", speedup);
 
-  // The issue's three performance targets, checked on the numbers above.
+  // docs/performance.md's three performance targets, checked on the numbers above.
   std::printf("\ntargets (docs/performance.md)\n");
   std::printf("%-52s %10s %10s  %s\n", "check", "target", "measured", "result");
   auto check = [](const char* what, const char* target, double measured, bool met) {

@@ -1,6 +1,6 @@
 // Screen-space extent of a light's bounding sphere for tiled culling, shared by the GPU culling
 // (shaders/passes/light_cull.comp) and the renderer, which sizes the tile index list from the
-// same rectangles on the CPU (engine/render/src/light_pass.cpp) instead of reading the GPU's count
+// same rectangles on the CPU (engine/render/src/light_cull_pass.cpp) instead of reading the GPU's count
 // back mid-frame. Compiled as C++ too (halfvec/shading/glsl.hpp rules).
 #ifndef HV_CULL_GLSL
 #define HV_CULL_GLSL

@@ -1,5 +1,5 @@
 // Material records as the G-buffer pass reads them (binding HV_BINDING_MATERIALS).
-// C++ mirror: halfvec/render/gpu_scene.hpp (GpuMaterial).
+// C++ mirror: halfvec/render/frame_data.hpp (GpuMaterial).
 #ifndef HV_MATERIAL_GLSL
 #define HV_MATERIAL_GLSL
 
