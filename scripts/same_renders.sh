@@ -9,16 +9,19 @@
 # REV itself is not reproducible (revisions before the per-tile culling summed tile lists in a
 # run-dependent order), the tree's image may differ from REV's by no more than REV's two runs
 # differ from each other (reported as REV-NONDETERMINISTIC, not a failure).
-# Usage: bash scripts/same_renders.sh [REV] [--size WxH]
+# Usage: bash scripts/same_renders.sh [REV] [--size WxH] [--base-exe PATH]
+# --base-exe: a halfvec binary already built from REV (skips building REV; for a series of steps).
 # Behaviour-preserving refactors are checked with it (docs/architecture.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 rev=HEAD
 size=320x180
+base_exe=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --size) size="$2"; shift 2 ;;
-    -h|--help) sed -n '2,13p' "$0"; exit 0 ;;
+    --base-exe) base_exe="$(cd "$(dirname "$2")" && pwd)/$(basename "$2")"; shift 2 ;;
+    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
     *) rev="$1"; shift ;;
   esac
 done
@@ -30,11 +33,16 @@ trap cleanup EXIT
 launcher=()
 if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 
-echo "[same_renders] building $rev in a temporary worktree" >&2
-git worktree add --detach "$work/base" "$rev" >/dev/null 2>&1
-cmake -S "$work/base" -B "$work/base/build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DHV_BUILD_TESTS=OFF \
-  "${launcher[@]}" >/dev/null
-cmake --build "$work/base/build" --target halfvec >/dev/null
+if [ -n "$base_exe" ]; then
+  echo "[same_renders] $rev: $base_exe" >&2
+  mkdir -p "$work/base/build" && ln -s "$base_exe" "$work/base/build/halfvec"
+else
+  echo "[same_renders] building $rev in a temporary worktree" >&2
+  git worktree add --detach "$work/base" "$rev" >/dev/null 2>&1
+  cmake -S "$work/base" -B "$work/base/build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DHV_BUILD_TESTS=OFF \
+    "${launcher[@]}" >/dev/null
+  cmake --build "$work/base/build" --target halfvec >/dev/null
+fi
 echo "[same_renders] building the working tree" >&2
 bash scripts/build.sh >/dev/null
 
