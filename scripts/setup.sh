@@ -4,7 +4,7 @@
 set -euo pipefail
 pkgs=(build-essential cmake ninja-build pkg-config
       libglfw3-dev libglm-dev libtinygltf-dev libimgui-dev libstb-dev nlohmann-json3-dev
-      libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libgtest-dev libbenchmark-dev
+      libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libgtest-dev libbenchmark-dev libembree-dev
       glslang-tools xvfb x11-apps)
 # The fuzzers only (scripts/fuzz.sh sets HV_FUZZ_SETUP=1): clang with libFuzzer and its sanitizer
 # runtimes, python3 for the seeds. Not needed by the default build (scripts/sanitize.sh uses GCC's

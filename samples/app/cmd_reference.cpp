@@ -2,6 +2,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 
 #include "app/commands.hpp"
 #include "halfvec/core/output_files.hpp"
@@ -17,8 +18,9 @@ namespace {
 constexpr const char* kHelp = R"(Usage: halfvec reference SCENE.json [options]
 
 Renders the scene's G-buffer on the GPU, reads it back, and computes the exact lighting integral
-per pixel by Monte Carlo (same BRDF terms as the engine, no shadows or interreflection; see
-docs/reference.md). Prints its own standard error.
+per pixel by Monte Carlo (same BRDF terms as the engine; shadows and environment occlusion traced
+against the scene's triangles unless --visibility off; no interreflection; see
+docs/reference.md). Prints its own standard error and the visibility rays traced.
 
 Options:
   --size WxH           output size (default: the scene's)
@@ -26,7 +28,11 @@ Options:
   --target-error E     stop a pixel once its relative standard error is below E
   --hdr FILE.pfm       the reference radiance (compare with `halfvec render --hdr`)
   --out FILE.png       tone-mapped with the engine's output transform (no dither)
-  --aov DIR            direct_diffuse, direct_specular, ambient_diffuse, ambient_specular .pfm
+  --aov DIR            direct_diffuse, direct_specular, ambient_diffuse, ambient_specular and
+                       ambient_occlusion .pfm
+  --visibility on|off  trace shadow and environment visibility rays (default on); off: the
+                       shading integral alone, nothing occludes (as the accuracy sweeps)
+  --ao-distance D      ambient occlusion counts occluders within D (default: any distance)
   --set PATH=VALUE     scene override, as for render
   --threads N          worker threads (default: all cores)
 )";
@@ -38,6 +44,7 @@ int cmdReference(const Args& args) {
   int w = 0, h = 0;
   ReferenceOptions opt;
   opt.progress = true;
+  opt.visibility = true;  // a scene's reference: shadows and environment occlusion
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&] { return optionValue(args, i); };
@@ -52,6 +59,14 @@ int cmdReference(const Args& args) {
       opt.target_rel_error = std::stof(value());
     } else if (a == "--threads") {
       opt.threads = intInRange(a, value(), 0, 4096);
+    } else if (a == "--visibility") {
+      const std::string v = value();
+      if (v != "on" && v != "off")
+        throw UsageError{"--visibility expects on or off, got '" + v + "'"};
+      opt.visibility = v == "on";
+    } else if (a == "--ao-distance") {
+      opt.ao_distance =
+          float(numberInRange(a, value(), 1e-6, std::numeric_limits<double>::infinity()));
     } else if (a == "--hdr") {
       hdr = value();
     } else if (a == "--out") {
@@ -79,6 +94,7 @@ int cmdReference(const Args& args) {
       aov_tmp.push_back(
           files.add(std::filesystem::path(aov) / (std::string(toString(which)) + ".pfm")));
     }
+    aov_tmp.push_back(files.add(std::filesystem::path(aov) / "ambient_occlusion.pfm"));
   }
   if (!w) {
     w = scene.settings.width;
@@ -94,6 +110,13 @@ int cmdReference(const Args& args) {
               static_cast<unsigned long long>(r.stats.total_samples), r.stats.seconds);
   std::printf("Monte Carlo relative standard error: mean %.4f, max %.4f\n", r.stats.mean_rel_error,
               r.stats.max_rel_error);
+  if (opt.visibility) {
+    std::printf("visibility: %llu rays against %zu triangles, %.3g rays per second of the run\n",
+                static_cast<unsigned long long>(r.stats.rays), r.stats.triangles,
+                r.stats.seconds > 0.0 ? double(r.stats.rays) / r.stats.seconds : 0.0);
+  } else {
+    std::printf("visibility: off (nothing occludes)\n");
+  }
   if (!hdr.empty()) writePfm(hdr_tmp.string(), r.image);
   if (!out.empty()) {
     // The engine's own output transform (shaders/common/tonemap.glsl, default Reinhard + 2.2).
@@ -105,9 +128,10 @@ int cmdReference(const Args& args) {
     }
     writePng(out_tmp.string(), ldr);
   }
-  for (int k = 0; k < int(aov_tmp.size()); ++k) {
+  for (int k = 0; k < kReferenceAovCount && k < int(aov_tmp.size()); ++k) {
     writePfm(aov_tmp[size_t(k)].string(), r[static_cast<ReferenceAov>(k)]);
   }
+  if (!aov_tmp.empty()) writePfm(aov_tmp.back().string(), r.ao);
   files.commit();
   return 0;
 }

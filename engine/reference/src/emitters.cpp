@@ -40,6 +40,15 @@ glm::vec3 emitterRadiance(const Light& light, const RenderSettings& settings, fl
   return light.color * (light.intensity / emitting * window(d2, light.range) * plus_one);
 }
 
+// Distance along the unit L from P to the sphere (center P + Lc, |Lc|^2 = d2, radius^2 r2): the
+// front hit from outside (a direction of the subtended cone; rounding just outside it gives the
+// tangent point), the exit from inside.
+float sphereDistance(const glm::vec3& Lc, float d2, float r2, const glm::vec3& L) {
+  const float b = glm::dot(L, Lc);
+  const float h = std::sqrt(std::max(b * b - (d2 - r2), 0.0f));
+  return d2 <= r2 ? b + h : std::max(b - h, 0.0f);
+}
+
 LightSample sampleSphere(const Light& light, const RenderSettings& settings, const glm::vec3& P,
                          glm::vec2 u) {
   LightSample ls;
@@ -68,6 +77,7 @@ LightSample sampleSphere(const Light& light, const RenderSettings& settings, con
   ls.L = glm::normalize(T * (sin_t * std::cos(phi)) + B * (sin_t * std::sin(phi)) + axis * cos_t);
   ls.pdf = 1.0f / (2.0f * kPi * one_minus_cos);
   ls.radiance = emitterRadiance(light, settings, d2);
+  ls.distance = sphereDistance(Lc, d2, r2, ls.L);
   return ls;
 }
 
@@ -102,7 +112,8 @@ LightSample sampleTube(const Light& light, const RenderSettings& settings, const
   const glm::vec3 d = x - P;
   const float dist2 = glm::dot(d, d);
   if (dist2 <= 0.0f) return ls;
-  ls.L = d / std::sqrt(dist2);
+  ls.distance = std::sqrt(dist2);
+  ls.L = d / ls.distance;
   const float cos_e = -glm::dot(n, ls.L);
   if (cos_e <= 0.0f) return ls;  // back face: hidden behind the capsule's front
   ls.pdf = dist2 / (area * cos_e);
@@ -248,6 +259,7 @@ LightSample evalLight(const Light& light, const RenderSettings& settings, const 
       ls.pdf = 1.0f / (2.0f * kPi * (sin2 / (1.0f + cos_max)));
     }
     ls.radiance = emitterRadiance(light, settings, d2);
+    ls.distance = sphereDistance(Lc, d2, r2, L);
     return ls;
   }
   if (light.type != LightType::Tube) return ls;
@@ -289,6 +301,7 @@ LightSample evalLight(const Light& light, const RenderSettings& settings, const 
   const float lenf = float(len);
   const float area = 2.0f * kPi * r * lenf + 4.0f * kPi * r * r;
   ls.pdf = float(t * t) / (area * cos_e);
+  ls.distance = float(t);
   ls.radiance = emitterRadiance(light, settings, windowDistance2(light, P));
   return ls;
 }

@@ -18,6 +18,7 @@
 #include "halfvec/reference/moments.hpp"
 #include "halfvec/reference/env_sampling.hpp"
 #include "halfvec/reference/lobes.hpp"
+#include "halfvec/reference/visibility.hpp"
 #include "halfvec/shading/brdf.hpp"
 #include "halfvec/shading/shading.hpp"
 
@@ -95,7 +96,14 @@ struct Context {
   glm::vec3 sun_dir{0.0f, 1.0f, 0.0f};
   float sun_cos = 1.0f, sun_pdf = 0.0f;
   std::vector<const Light*> point_lights, area_lights;
+  // ReferenceOptions::visibility: the scene's triangles (null without visibility).
+  std::unique_ptr<reference_detail::SceneVisibility> vis;
 };
+
+// The ambient occlusion's random numbers come from a stream of their own (pixel streams are the
+// pixel indices, far below 2^63), so the light and environment samples draw the same numbers
+// with and without visibility.
+constexpr uint64_t kAoStream = uint64_t(1) << 63u;
 
 using reference_detail::brdfLobes;
 using reference_detail::Lobes;
@@ -106,6 +114,8 @@ struct PixelOut {
   glm::dvec3 se;
   double rel_error = 0.0;
   int samples = 0;
+  double ao = 1.0, ao_se = 0.0;
+  uint64_t rays = 0;
 };
 
 PixelOut shadePixel(const Context& ctx, size_t index, int x, int y) {
@@ -123,6 +133,13 @@ PixelOut shadePixel(const Context& ctx, size_t index, int x, int y) {
   glm::vec3 N = glm::normalize(gb.normal[index]);
   glsl::Surface s = glsl::makeSurface(N, gb.base_color[index], gb.metallic[index],
                                       gb.roughness[index], gb.cavity[index]);
+  // Visibility rays leave from just above the surface (visibility.hpp: rayOrigin says why).
+  const reference_detail::SceneVisibility* vis = ctx.vis.get();
+  const glm::vec3 O = vis ? reference_detail::rayOrigin(P, N, ctx.scene->camera.position) : P;
+  auto occluded = [&](const glm::vec3& L, float tfar) {
+    ++out.rays;
+    return vis->occluded(O, L, tfar);
+  };
 
   // ---- Point lights: exact, as the light pass (cavity on all direct light). ----
   for (const Light* l : ctx.point_lights) {
@@ -131,6 +148,8 @@ PixelOut shadePixel(const Context& ctx, size_t index, int x, int y) {
     glm::vec3 L = glsl::safeNormalize(Lc);
     float NoL = glsl::saturate(glm::dot(N, L));
     float scale = reference_detail::falloff(settings, d2, 0.0f, l->range) * NoL * s.cavity;
+    // One ray to the light's position: a point light's shadow is hard.
+    if (vis && scale > 0.0f && occluded(L, glm::length(l->position - O))) continue;
     Lobes f = brdfLobes(ctx.brdf, s, V, L, true);
     glm::vec3 radiant = l->color * l->intensity;
     out.aov[kDD] += glm::dvec3(radiant * f.diffuse * scale);
@@ -138,7 +157,8 @@ PixelOut shadePixel(const Context& ctx, size_t index, int x, int y) {
   }
 
   // ---- Monte Carlo part: area lights and the environment. ----
-  const bool stochastic = ctx.has_env || !ctx.area_lights.empty();
+  // With visibility the ambient occlusion is a Monte Carlo estimate of its own.
+  const bool stochastic = ctx.has_env || !ctx.area_lights.empty() || vis;
   if (!stochastic) return out;
 
   Rng rng(opt.seed, index);
@@ -161,6 +181,8 @@ PixelOut shadePixel(const Context& ctx, size_t index, int x, int y) {
   Moments m[kReferenceAovCount];
   Moments total_m;  // of the per-sample sum of the AOVs
   ScalarMoments lum;
+  ScalarMoments ao_m;
+  Rng ao_rng(opt.seed, kAoStream | uint64_t(index));
   const glm::dvec3 exact = out.aov[kDD] + out.aov[kDS];
   const double exact_lum = luminance(exact);
   int n = 0;
@@ -195,6 +217,9 @@ PixelOut shadePixel(const Context& ctx, size_t index, int x, int y) {
           float NoL = glsl::saturate(glm::dot(N, ls.L));
           float p = ls.pdf + p_vndf;
           if (NoL <= 0.0f || !(p > 0.0f) || !std::isfinite(p)) return;  // below the horizon
+          // The ray stops at the sampled emitter point: what lies behind the light does not
+          // shadow it (and emitters are not triangles: the light itself never occludes).
+          if (vis && occluded(ls.L, ls.distance)) return;
           Lobes f = brdfLobes(ctx.brdf, s, V, ls.L, true);
           glm::vec3 w = ls.radiance * (NoL * s.cavity / p);
           xs[kDD] += glm::dvec3(f.diffuse * w);
@@ -249,11 +274,20 @@ PixelOut shadePixel(const Context& ctx, size_t index, int x, int y) {
           float p_sun = ctx.has_sun && glm::dot(L, ctx.sun_dir) >= ctx.sun_cos ? ctx.sun_pdf : 0.0f;
           float p = p_cos + p_spec + p_env + p_sun;
           if (!(p > 0.0f) || !std::isfinite(p)) continue;
+          if (vis && occluded(L, std::numeric_limits<float>::infinity())) continue;
           Lobes f = brdfLobes(ctx.brdf, s, V, L, false);
           glm::vec3 w = ctx.env.radiance(L) * (lt.z / p);
           xs[kAD] += glm::dvec3(f.diffuse * w * s.cavity);
           xs[kAS] += glm::dvec3(f.specular * w * ambient_spec_scale);
         }
+      }
+      // Ambient occlusion: a cosine-distributed direction, whose estimator (1/pi) V NoL / pdf is
+      // the visibility V itself.
+      if (vis) {
+        const glm::vec3 lt =
+            glsl::sampleCosineHemisphere(glm::vec2(ao_rng.uniform(), ao_rng.uniform()));
+        const glm::vec3 L = glm::normalize(T * lt.x + B * lt.y + N * lt.z);
+        ao_m.add(occluded(L, opt.ao_distance) ? 0.0 : 1.0);
       }
       glm::dvec3 total(0.0);
       for (int a = 0; a < kReferenceAovCount; ++a) {
@@ -274,6 +308,10 @@ PixelOut shadePixel(const Context& ctx, size_t index, int x, int y) {
     out.aov_se[a] = m[a].stdError(n);
   }
   out.se = total_m.stdError(n);
+  if (vis) {
+    out.ao = n > 0 ? ao_m.sum / double(n) : 1.0;
+    out.ao_se = ao_m.stdError(n);
+  }
   double y_mean = exact_lum + lum.sum / double(std::max(n, 1));
   out.rel_error = y_mean > 0.0 ? lum.stdError(n) / y_mean : 0.0;
   return out;
@@ -316,6 +354,7 @@ ReferenceResult renderReference(const Scene& scene, const GBufferReadback& gb,
       ctx.has_sun = std::isfinite(ctx.sun_pdf);
     }
   }
+  if (opt.visibility) ctx.vis = std::make_unique<reference_detail::SceneVisibility>(scene);
   for (const Light& l : scene.lights) {
     if (l.type == LightType::Point)
       ctx.point_lights.push_back(&l);
@@ -330,13 +369,17 @@ ReferenceResult renderReference(const Scene& scene, const GBufferReadback& gb,
     r.aov[a] = makeImageRGBf(gb.width, gb.height);
     r.aov_std_error[a] = makeImageRGBf(gb.width, gb.height);
   }
+  r.ao = makeImageRGBf(gb.width, gb.height);
+  r.ao_std_error = makeImageRGBf(gb.width, gb.height);
   r.samples.assign(count, 0);
   std::vector<double> rel_error(count, -1.0);
+  std::atomic<uint64_t> rays{0};
 
   std::mutex progress_mutex;
   std::atomic<int> rows_done{0};
   int last_reported = -1;
   detail::parallelFor(gb.height, opt.threads, [&](int y) {
+    uint64_t row_rays = 0;
     for (int x = 0; x < gb.width; ++x) {
       const size_t i = size_t(y) * size_t(gb.width) + size_t(x);
       const auto model = static_cast<ShadingModel>(gb.model[i]);
@@ -359,9 +402,13 @@ ReferenceResult renderReference(const Scene& scene, const GBufferReadback& gb,
       }
       r.image.px[i] = glm::vec3(total);
       r.std_error.px[i] = glm::vec3(p.se);
+      r.ao.px[i] = glm::vec3(float(p.ao));
+      r.ao_std_error.px[i] = glm::vec3(float(p.ao_se));
       r.samples[i] = p.samples;
+      row_rays += p.rays;
       if (luminance(total) > 0.0) rel_error[i] = p.rel_error;
     }
+    rays += row_rays;
     const int done = ++rows_done;
     if (opt.progress) {
       std::lock_guard<std::mutex> lock(progress_mutex);
@@ -401,8 +448,15 @@ ReferenceResult renderReference(const Scene& scene, const GBufferReadback& gb,
     }
   }
   if (st.min_samples < 0) st.min_samples = 0;
+  st.visibility = opt.visibility;
+  st.rays = rays.load();
+  st.triangles = ctx.vis ? ctx.vis->triangles() : 0;
   st.mean_rel_error = rel_count ? rel_sum / double(rel_count) : 0.0;
   st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (opt.progress && ctx.vis) {
+    std::fprintf(stderr, "reference: visibility: %llu rays against %zu triangles\n",
+                 static_cast<unsigned long long>(st.rays), st.triangles);
+  }
   if (opt.progress) {
     std::fprintf(stderr,
                  "reference: %zu lit pixels, %llu samples (%d..%d per pixel), relative standard "

@@ -29,11 +29,13 @@ float falloff(const RenderSettings& settings, float d2, float radius, float rang
 
 // One direction toward an area light: unit L, the radiance arriving along it (emitter radiance
 // times the falloff scaling of docs/lights.md) and the solid-angle pdf of L; pdf = 0 means the
-// sample missed the visible emitter (it contributes 0 but still counts as a sample).
+// sample missed the visible emitter (it contributes 0 but still counts as a sample). distance:
+// from P along L to the emitter point the sample stands for (where a visibility ray stops).
 struct LightSample {
   glm::vec3 L{0.0f, 0.0f, 1.0f};
   glm::vec3 radiance{0.0f};
   float pdf = 0.0f;
+  float distance = 0.0f;
 };
 
 // Sphere: uniform in the cone the sphere subtends from P (pdf 1 / solid angle); inside the sphere,

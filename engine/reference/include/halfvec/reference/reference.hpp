@@ -1,12 +1,16 @@
 // CPU ground truth for the deferred renderer: per G-buffer pixel, the lighting integral the engine
 // approximates, computed exactly (point lights) or by Monte Carlo (sphere/tube lights, the
 // environment), with the engine's own BRDF (BrdfConfig::fromSettings, the shared hv::glsl terms)
-// and nothing the engine does not model (no shadows, no interreflection). Estimators, pdfs, MIS
-// and error reporting: docs/reference.md. No OpenGL: GBufferReadback is only a data type here.
+// and no interreflection. With ReferenceOptions::visibility, every light and environment sample
+// is traced against the scene's triangles (Embree): shadows and the occlusion of the
+// environment; without it, the light is visible wherever it is above the horizon, the model the
+// engine's shading approximates. Estimators, pdfs, MIS, visibility and error reporting:
+// docs/reference.md. No OpenGL: GBufferReadback is only a data type here.
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -41,6 +45,13 @@ struct ReferenceOptions {
   bool progress = false;  // progress lines on stderr
   uint64_t seed = 1;      // same seed, same image (independent of `threads`)
   SkyParams sky;          // parameters of EnvironmentKind::Sky (as for the bake)
+  // Visibility rays against the scene's triangles for every point light, every area-light
+  // sample (both MIS strategies) and every environment sample, and the ambient occlusion image.
+  // Off: nothing occludes (the shading integral alone; the images are those of the reference
+  // before visibility existed, bit for bit).
+  bool visibility = false;
+  // Ambient occlusion: occluders farther than this from the shading point do not count.
+  float ao_distance = std::numeric_limits<float>::infinity();
 };
 
 struct ReferenceStats {
@@ -53,6 +64,9 @@ struct ReferenceStats {
   double mean_rel_error = 0.0;
   double max_rel_error = 0.0;
   double seconds = 0.0;
+  bool visibility = false;  // ReferenceOptions::visibility of the run
+  uint64_t rays = 0;        // visibility rays traced (0 without visibility)
+  size_t triangles = 0;     // in the visibility scene (0 without visibility)
 };
 
 struct ReferenceResult {
@@ -60,6 +74,13 @@ struct ReferenceResult {
   ImageRGBf std_error;  // per-pixel, per-channel standard error of `image` (0 where exact)
   std::array<ImageRGBf, kReferenceAovCount> aov;            // indexed by ReferenceAov
   std::array<ImageRGBf, kReferenceAovCount> aov_std_error;  // likewise
+  // Ambient occlusion on lit pixels (the same value in the three channels): the cosine-weighted
+  // fraction of the hemisphere around the G-buffer normal that no triangle within
+  // ReferenceOptions::ao_distance hides, (1/pi) integral of V(l) NoL dl; one cosine-distributed
+  // ray per sample, from its own random stream. Not times the cavity (a material input). 1 on
+  // lit pixels without visibility, 0 elsewhere.
+  ImageRGBf ao;
+  ImageRGBf ao_std_error;
   std::vector<int> samples;  // samples per pixel (0 off lit pixels), row 0 = top
   ReferenceStats stats;
 
