@@ -65,10 +65,11 @@ std::string readText(const std::string& path) {
   return o.str();
 }
 
-// Scene content (the file's text and everything the reference reads), size, samples, seed and
-// the truth settings.
+// Scene content (the file's text and everything the reference reads), size, samples, seed, the
+// truth settings and the visibility mode (with visibility, the triangles and alpha inputs that
+// occlude, off screen too; without it the key is the one it was before visibility existed).
 uint64_t referenceKey(const Scene& scene, const GBufferReadback& gb, const RenderSettings& truth,
-                      int samples, uint64_t seed) {
+                      int samples, uint64_t seed, bool visibility) {
   Hasher k;
   k.text(kReferenceCacheVersion);
   k.text(readText(scene.source_path));
@@ -87,6 +88,19 @@ uint64_t referenceKey(const Scene& scene, const GBufferReadback& gb, const Rende
   k.pod(truth.remap_roughness), k.pod(truth.falloff_plus_one);
   k.pod(truth.energy_compensation), k.pod(truth.specular_occlusion);
   k.pod(samples), k.pod(seed);
+  if (visibility) {
+    k.text("visibility");
+    for (const Object& o : scene.objects) k.pod(o.transform), k.vec(o.meshes);
+    for (const Mesh& m : scene.meshes) {
+      for (const Vertex& v : m.vertices) k.pod(v.position), k.pod(v.uv0), k.pod(v.uv1);
+      k.vec(m.indices), k.pod(m.material);
+    }
+    for (const Material& m : scene.materials) {
+      k.pod(m.alpha_mode), k.pod(m.alpha_cutoff), k.pod(m.base_alpha);
+      k.pod(m.base_color_tex.image), k.pod(m.base_color_tex.texcoord);
+    }
+    for (const ImageData& i : scene.images) k.pod(i.width), k.pod(i.height), k.vec(i.rgba);
+  }
   return k.h;
 }
 
@@ -294,7 +308,7 @@ std::pair<ImageRGBf, ImageRGBf> tradeReference(const Scene& scene, const GBuffer
   const int w = rep.width, h = rep.height;
   Scene truth_scene = scene;
   truth_scene.settings = rep.truth;
-  const uint64_t key = referenceKey(scene, gb, rep.truth, rep.samples, opt.seed);
+  const uint64_t key = referenceKey(scene, gb, rep.truth, rep.samples, opt.seed, opt.visibility);
   const fs::path cache =
       opt.cache_dir.empty() ? fs::path(defaultCacheDir()) : fs::path(opt.cache_dir);
   char name[64];
@@ -324,6 +338,7 @@ std::pair<ImageRGBf, ImageRGBf> tradeReference(const Scene& scene, const GBuffer
   ro.samples = rep.samples;
   ro.threads = opt.threads;
   ro.seed = opt.seed;
+  ro.visibility = opt.visibility;
   const ReferenceResult rr = renderReference(truth_scene, gb, ro);
   rep.reference = rr.stats;
   say("reference: " + fmtNum(rr.stats.seconds, "%.1f") + " s");
@@ -336,6 +351,7 @@ std::pair<ImageRGBf, ImageRGBf> tradeReference(const Scene& scene, const GBuffer
                                 {"width", w},
                                 {"height", h},
                                 {"samples", rep.samples},
+                                {"visibility", opt.visibility},
                                 {"lit_pixels", rr.stats.lit_pixels},
                                 {"total_samples", rr.stats.total_samples},
                                 {"mean_rel_error", rr.stats.mean_rel_error},

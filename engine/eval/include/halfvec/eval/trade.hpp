@@ -98,6 +98,9 @@ struct TradeOptions {
   int max_brute_force_lights = 64;
   int threads = 0;  // reference threads (0: all cores)
   uint64_t seed = 1;
+  // The reference's visibility rays (ReferenceOptions::visibility; part of the cache key). Off:
+  // the shading-only truth the report has measured against so far.
+  bool visibility = false;
   std::function<void(const std::string&)> progress;  // one line per step (may be empty)
 };
 
