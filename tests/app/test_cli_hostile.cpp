@@ -98,7 +98,8 @@ TEST(CliHostile, NumberOptionsAreParsedStrictly) {
       {"compare", "a.pfm", "b.pfm", "--max-abs"},
       {"compare", "a.pfm", "b.pfm", "--heatmap-max"},
       {"trade", "--max-error"},
-      {"trade", "--max-ms"}};
+      {"trade", "--max-ms"},
+      {"reference", scene(), "--ao-distance"}};
   for (const auto& c : others) {
     for (const char* bad : {"abc", "", "2x", "nan", " 3", "-1"}) {
       std::vector<std::string> args = c;
@@ -112,6 +113,14 @@ TEST(CliHostile, NumberOptionsAreParsedStrictly) {
   std::string err;
   EXPECT_EQ(run({"trade", "--max-ms", "0", "--zzzz-not-an-option"}, &err), 2);
   EXPECT_NE(err.find("--max-ms expects a number in"), std::string::npos) << err;
+  // reference's --visibility takes on or off, nothing else.
+  for (const char* bad : {"yes", "", "ON", "1"}) {
+    err.clear();
+    EXPECT_EQ(run({"reference", scene(), "--visibility", bad, "--zzzz-not-an-option"}, &err), 2);
+    EXPECT_NE(err.find("--visibility expects on or off, got '" + std::string(bad) + "'"),
+              std::string::npos)
+        << err;
+  }
 }
 
 TEST(CliHostile, UnwritableOutputFailsBeforeRenderingAndLeavesNothing) {
