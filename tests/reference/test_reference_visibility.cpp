@@ -10,14 +10,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <string>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "halfvec/reference/reference.hpp"
 #include "halfvec/reference/visibility.hpp"
+#include "halfvec/scene/gltf_loader.hpp"
 #include "halfvec/scene/primitives.hpp"
 #include "halfvec/shading/shading.hpp"
+#include "shared_assets.hpp"
 
 namespace {
 
@@ -449,10 +453,14 @@ TEST(ReferenceVisibility, RaysStopAtTheEmitter) {
 struct Halves {
   double left = 0.0, right = 0.0, outside = 0.0;
 };
-Halves squareShadow(const hv::Material& m, bool flip, const std::vector<hv::ImageData>& images) {
+// yaw_deg turns the square about +Y (by 90: its v axis, +Z, along world +X).
+Halves squareShadow(const hv::Material& m, bool flip, const std::vector<hv::ImageData>& images,
+                    float yaw_deg = 0.0f) {
   hv::Scene s = floorScene({0.0f, 6.0f, 0.0f}, {0.0f, 0.0f, 0.0f});
   s.images = images;
   hv::addMeshObject(s, hv::makePlane(2.0f, 2.0f), m, {0.0f, 1.0f, 0.0f});
+  s.objects.back().transform =
+      glm::rotate(s.objects.back().transform, glm::radians(yaw_deg), glm::vec3(0.0f, 1.0f, 0.0f));
   if (flip) {  // normal -Y: half a turn about +X
     s.objects.back().transform =
         glm::rotate(s.objects.back().transform, kPi, glm::vec3(1.0f, 0.0f, 0.0f));
@@ -508,6 +516,15 @@ TEST(ReferenceVisibility, AlphaMaskedAndBackFacingOccluders) {
   const Halves b = squareShadow(masked, false, {img});
   EXPECT_EQ(b.left, 1.0);
   EXPECT_EQ(b.right, 0.0);
+  // Rows: a 1 x 2 texture whose bottom row has alpha 0; row 0 is the top of the image and v = 0
+  // (glTF), at the square's -Z edge, which the quarter turn puts at -X.
+  hv::ImageData rows = img;
+  rows.width = 1;
+  rows.height = 2;
+  masked.base_color_tex.sampler.mag = hv::Filter::Nearest;
+  const Halves v = squareShadow(masked, false, {rows}, 90.0f);
+  EXPECT_EQ(v.left, 1.0);
+  EXPECT_EQ(v.right, 0.0);
   // Base alpha below the cutoff, no texture: nothing occludes. The same alpha as a blended
   // material occludes (the engine draws blended surfaces opaque).
   hv::Material faint = grey();
@@ -517,6 +534,51 @@ TEST(ReferenceVisibility, AlphaMaskedAndBackFacingOccluders) {
   EXPECT_EQ(f.left + f.right, 0.0);
   faint.alpha_mode = hv::AlphaMode::Blend;
   EXPECT_EQ(squareShadow(faint, false, {}).left, 1.0);
+}
+
+// glTF-Asset-Generator's Material_AlphaMask planes (a 1 x 1 quad in z = 0 whose UVs cover its
+// base-color texture): the fraction of a 200 x 200 grid of rays through the quad that it stops
+// is the fraction of texels whose alpha is at least the cutoff (within 0.02: bilinear filtering
+// moves the cut between texels); cutoff 1.1 (model 03) stops none, cutoff 0 (model 04) all.
+TEST(ReferenceVisibility, GltfAlphaMaskCutoffs) {
+  const auto dir = hv::test::assetsDir() / "gltf-asset-generator/Positive/Material_AlphaMask";
+  if (hv::test::assetsDir().empty() || !std::filesystem::exists(dir))
+    GTEST_SKIP() << "shared assets not found (" << dir << ")";
+  for (int model : {0, 1, 2, 3, 4}) {
+    hv::Scene s;
+    hv::loadGltf((dir / ("Material_AlphaMask_0" + std::to_string(model) + ".gltf")).string(),
+                 glm::mat4(1.0f), s);
+    ASSERT_EQ(s.materials.size(), 1u);
+    const hv::Material& m = s.materials[0];
+    ASSERT_EQ(m.alpha_mode, hv::AlphaMode::Mask);
+    ASSERT_TRUE(m.base_color_tex.valid());
+    const hv::ImageData& img = s.images[size_t(m.base_color_tex.image)];
+    size_t opaque = 0;
+    for (size_t i = 3; i < img.rgba.size(); i += 4)
+      opaque += m.base_alpha * (float(img.rgba[i]) / 255.0f) >= m.alpha_cutoff;
+    const double expected = double(opaque) / double(size_t(img.width) * size_t(img.height));
+    const hv::reference_detail::SceneVisibility vis(s);
+    EXPECT_EQ(vis.maskedTriangles(), 2u);
+    const int n = 200;
+    size_t stopped = 0;
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) {
+        const glm::vec3 o(-0.5f + (x + 0.5f) / n, -0.5f + (y + 0.5f) / n, 1.0f);
+        stopped += vis.occluded(o, glm::vec3(0.0f, 0.0f, -1.0f));
+      }
+    const double fraction = double(stopped) / double(n * n);
+    EXPECT_NEAR(fraction, expected, 0.02) << "model " << model << ", cutoff " << m.alpha_cutoff;
+    if (model == 3) {
+      EXPECT_EQ(stopped, 0u);
+    }
+    if (model == 4) {
+      EXPECT_EQ(stopped, size_t(n * n));
+    }
+    std::printf(
+        "Material_AlphaMask_0%d: cutoff %.2f, %.4f of the rays stopped, %.4f of the texels "
+        "opaque\n",
+        model, m.alpha_cutoff, fraction, expected);
+  }
 }
 
 // SceneVisibility directly: a unit triangle's two faces, the segment's open end, and the counts.
