@@ -36,6 +36,37 @@ Options:
   --set PATH=VALUE     scene override, as for render
   --threads N          worker threads (default: all cores)
 )";
+
+// --visibility on|off.
+bool parseOnOff(const std::string& option, const std::string& v) {
+  if (v != "on" && v != "off") throw UsageError{option + " expects on or off, got '" + v + "'"};
+  return v == "on";
+}
+
+void printSummary(const ReferenceResult& r, int w, int h) {
+  std::printf("reference: %dx%d, %zu lit pixels, %llu samples, %.1f s\n", w, h, r.stats.lit_pixels,
+              static_cast<unsigned long long>(r.stats.total_samples), r.stats.seconds);
+  std::printf("Monte Carlo relative standard error: mean %.4f, max %.4f\n", r.stats.mean_rel_error,
+              r.stats.max_rel_error);
+  if (r.stats.visibility) {
+    std::printf("visibility: %llu rays against %zu triangles, %.3g rays per second of the run\n",
+                static_cast<unsigned long long>(r.stats.rays), r.stats.triangles,
+                r.stats.seconds > 0.0 ? double(r.stats.rays) / r.stats.seconds : 0.0);
+  } else {
+    std::printf("visibility: off (nothing occludes)\n");
+  }
+}
+
+// The engine's own output transform (shaders/common/tonemap.glsl, default Reinhard + 2.2).
+ImageRGBA8 toneMapped(const ImageRGBf& image, float exposure) {
+  ImageRGBA8 ldr = makeImageRGBA8(image.width, image.height);
+  for (size_t i = 0; i < image.px.size(); ++i) {
+    const glm::vec3 c = glsl::outputTransform(image.px[i] * exposure);
+    for (int k = 0; k < 3; ++k) ldr.px[4 * i + k] = uint8_t(std::lround(c[k] * 255.0f));
+    ldr.px[4 * i + 3] = 255;
+  }
+  return ldr;
+}
 }  // namespace
 
 int cmdReference(const Args& args) {
@@ -60,10 +91,7 @@ int cmdReference(const Args& args) {
     } else if (a == "--threads") {
       opt.threads = intInRange(a, value(), 0, 4096);
     } else if (a == "--visibility") {
-      const std::string v = value();
-      if (v != "on" && v != "off")
-        throw UsageError{"--visibility expects on or off, got '" + v + "'"};
-      opt.visibility = v == "on";
+      opt.visibility = parseOnOff(a, value());
     } else if (a == "--ao-distance") {
       opt.ao_distance =
           float(numberInRange(a, value(), 1e-6, std::numeric_limits<double>::infinity()));
@@ -106,28 +134,9 @@ int cmdReference(const Args& args) {
   renderer.render(w, h);
   const GBufferReadback g = renderer.readGBuffer();
   const ReferenceResult r = renderReference(scene, g, opt);
-  std::printf("reference: %dx%d, %zu lit pixels, %llu samples, %.1f s\n", w, h, r.stats.lit_pixels,
-              static_cast<unsigned long long>(r.stats.total_samples), r.stats.seconds);
-  std::printf("Monte Carlo relative standard error: mean %.4f, max %.4f\n", r.stats.mean_rel_error,
-              r.stats.max_rel_error);
-  if (opt.visibility) {
-    std::printf("visibility: %llu rays against %zu triangles, %.3g rays per second of the run\n",
-                static_cast<unsigned long long>(r.stats.rays), r.stats.triangles,
-                r.stats.seconds > 0.0 ? double(r.stats.rays) / r.stats.seconds : 0.0);
-  } else {
-    std::printf("visibility: off (nothing occludes)\n");
-  }
+  printSummary(r, w, h);
   if (!hdr.empty()) writePfm(hdr_tmp.string(), r.image);
-  if (!out.empty()) {
-    // The engine's own output transform (shaders/common/tonemap.glsl, default Reinhard + 2.2).
-    ImageRGBA8 ldr = makeImageRGBA8(r.image.width, r.image.height);
-    for (size_t i = 0; i < r.image.px.size(); ++i) {
-      const glm::vec3 c = glsl::outputTransform(r.image.px[i] * scene.settings.exposure);
-      for (int k = 0; k < 3; ++k) ldr.px[4 * i + k] = uint8_t(std::lround(c[k] * 255.0f));
-      ldr.px[4 * i + 3] = 255;
-    }
-    writePng(out_tmp.string(), ldr);
-  }
+  if (!out.empty()) writePng(out_tmp.string(), toneMapped(r.image, scene.settings.exposure));
   for (int k = 0; k < kReferenceAovCount && k < int(aov_tmp.size()); ++k) {
     writePfm(aov_tmp[size_t(k)].string(), r[static_cast<ReferenceAov>(k)]);
   }
