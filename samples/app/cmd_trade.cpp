@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "app/commands.hpp"
+#include "app/trade_report.hpp"
 #include "halfvec/core/output_files.hpp"
 #include "halfvec/eval/trade.hpp"
 #include "halfvec/image/image.hpp"
@@ -108,7 +109,7 @@ void writeDoc(const std::string& file, const std::string& command, const std::st
   std::snprintf(intro, sizeof intro, kDocIntro, command.c_str(), eval::kNoiseFactor,
                 double(opt.heatmap_max));
   o << "# Speed/accuracy trade report\n\n" << intro << "\nRenderer: " << renderer << ".\n\n";
-  o << "## Presets\n\n" << eval::presetRationale() << "\n";
+  o << "## Presets\n\n" << presetRationale() << "\n";
   o << "Measured (scene's settings: total GPU ms / relative RMSE against the exact reference; "
        "presets and exact: frame time x the scene's settings' with its 95% interval, \"same\" "
        "where it includes 1 / relative RMSE):\n\n";
@@ -143,7 +144,7 @@ void writeDoc(const std::string& file, const std::string& command, const std::st
   for (const SceneRun& run : runs) {
     std::string prefix = fs::relative(fs::absolute(run.dir), doc_dir).generic_string();
     if (!prefix.empty() && prefix.back() != '/') prefix += "/";
-    o << eval::tradeMarkdown(run.report, prefix, 2) << "\n";
+    o << tradeMarkdown(run.report, prefix, 2) << "\n";
   }
   if (fs::absolute(file).has_parent_path()) fs::create_directories(doc_dir);
   writeFileAtomic(file, o.str());
@@ -263,9 +264,9 @@ int cmdTrade(const Args& args) {
                  scenes[k].c_str(), elapsed, left.c_str());
     run.report = eval::runTrade(loaded[k], o);
     if (run.dir.empty()) {
-      std::fputs(eval::tradeMarkdown(run.report, "", 1).c_str(), stdout);
+      std::fputs(tradeMarkdown(run.report, "", 1).c_str(), stdout);
     } else {
-      eval::writeTradeReport(run.report, run.dir);
+      writeTradeReport(run.report, run.dir);
       std::printf("%s: %s/trade.md, trade.csv, plot.png\n", scenes[k].c_str(), run.dir.c_str());
     }
     runs.push_back(std::move(run));

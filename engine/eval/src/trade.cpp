@@ -1,6 +1,7 @@
+// The trade report's run: the reference (cached by its inputs), every configuration of the plan
+// rendered and timed in interleaved rounds, the error of each against the reference, heat maps.
+// The plan is trade_plan.cpp's; the report formats are the command's (samples/app/trade_report).
 #include "halfvec/eval/trade.hpp"
-
-#include "halfvec/core/output_files.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -9,19 +10,15 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <limits>
 #include <map>
 #include <sstream>
-#include <type_traits>
 
 #include <nlohmann/json.hpp>
 
+#include "halfvec/core/output_files.hpp"
 #include "halfvec/eval/bench.hpp"
 #include "halfvec/ibl/ibl.hpp"
-#include "halfvec/image/plot.hpp"
 #include "halfvec/render/renderer.hpp"
-#include "halfvec/scene/enums.hpp"
-#include "halfvec/scene/presets.hpp"
 
 namespace hv::eval {
 
@@ -31,10 +28,6 @@ namespace {
 
 // Bump whenever engine/reference changes what it computes for the same inputs.
 constexpr const char* kReferenceCacheVersion = "trade-reference-v4";
-
-std::string str(std::string_view s) {
-  return std::string(s);
-}
 
 // ---- FNV-1a over the inputs of the reference --------------------------------------------------
 struct Hasher {
@@ -136,166 +129,14 @@ std::string slug(const std::string& name) {
   return s;
 }
 
+// Progress lines only (printf prints inf and nan as such).
 std::string fmtNum(double v, const char* f = "%.4g") {
-  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  if (std::isnan(v)) return "nan";
   char buf[64];
   std::snprintf(buf, sizeof buf, f, v);
   return buf;
 }
 
-// ---- settings as names ------------------------------------------------------------------------
-template <class E>
-void enumRows(std::vector<TradeConfig>& out, const char* key, const RenderSettings& base, int pf,
-              E RenderSettings::*field, const char* group) {
-  for (size_t i = 0; i < enumNames<E>().size(); ++i) {
-    const auto v = static_cast<E>(i);
-    if (v == base.*field) continue;
-    TradeConfig c{std::string(key) + "=" + str(toString(v)), group, base, pf, {}};
-    c.settings.*field = v;
-    out.push_back(c);
-  }
-}
-
-void boolRow(std::vector<TradeConfig>& out, const char* key, const RenderSettings& base, int pf,
-             bool RenderSettings::*field, const char* group) {
-  TradeConfig c{std::string(key) + "=" + (base.*field ? "false" : "true"), group, base, pf, {}};
-  c.settings.*field = !(base.*field);
-  out.push_back(c);
-}
-
 }  // namespace
-
-RenderSettings truthSettings(const RenderSettings& s) {
-  RenderSettings t = s;
-  if (s.d == DistributionTerm::GGX) t.v = VisibilityTerm::SmithGGXCorrelated;  // Heitz 2014 eq. 99
-  if (s.d == DistributionTerm::Beckmann) t.v = VisibilityTerm::SmithBeckmannSeparable;
-  if (s.f == FresnelTerm::SchlickSG)
-    t.f = FresnelTerm::SchlickPow5;  // SG fits Schlick (Karis eq. 5)
-  t.remap_roughness = false;
-  t.falloff_plus_one = false;
-  return t;
-}
-
-TradePlan tradePlan(const Scene& scene, int max_brute_force_lights) {
-  TradePlan plan;
-  const RenderSettings& b = scene.settings;
-  const int pf = scene.environment.prefilter_samples;
-  const bool env = scene.environment.kind != EnvironmentKind::None;
-  bool sphere = false, tube = false;
-  for (const Light& l : scene.lights) {
-    sphere |= l.type == LightType::Sphere;
-    tube |= l.type == LightType::Tube;
-  }
-  const bool lights = !scene.lights.empty();
-  std::vector<TradeConfig> c;
-  c.push_back({"scene", "scene", b, pf, {}});
-  // One row per other value of each approximation option of the settings table
-  // (render_settings.hpp), where the scene has what makes it change code.
-  const std::pair<SettingFeature, const char*> absent[] = {
-      {SettingFeature::Lights, lights ? nullptr : "no lights"},
-      {SettingFeature::SphereLights, sphere ? nullptr : "no sphere lights"},
-      {SettingFeature::TubeLights, tube ? nullptr : "no tube lights"},
-      {SettingFeature::AmbientIbl, env ? nullptr : "no environment"}};
-  std::vector<std::string> skipped_keys(std::size(absent));
-  forEachSetting([&](const auto& row) {
-    using T = typename std::decay_t<decltype(row)>::Type;
-    if (!row.info.trade) return;
-    for (size_t i = 0; i < std::size(absent); ++i) {
-      if (absent[i].first != row.info.feature || !absent[i].second) continue;
-      skipped_keys[i] += (skipped_keys[i].empty() ? "" : ", ") + std::string(row.key);
-      return;
-    }
-    if constexpr (std::is_same_v<T, Culling>) {
-      if (b.culling == Culling::Tiled && int(scene.lights.size()) > max_brute_force_lights) {
-        plan.skipped.push_back("culling=brute_force: " + std::to_string(scene.lights.size()) +
-                               " lights (more than " + std::to_string(max_brute_force_lights) +
-                               "; brute force shades every light at every pixel)");
-        return;
-      }
-    }
-    if constexpr (std::is_same_v<T, bool>) {
-      boolRow(c, row.key, b, pf, row.member, row.info.trade_group);
-    } else if constexpr (std::is_enum_v<T>) {
-      enumRows(c, row.key, b, pf, row.member, row.info.trade_group);
-    }
-  });
-  for (size_t i = 0; i < std::size(absent); ++i) {
-    if (!skipped_keys[i].empty()) plan.skipped.push_back(skipped_keys[i] + ": " + absent[i].second);
-  }
-  if (!env) {
-    plan.skipped.push_back("environment.prefilter_samples: no environment");
-  } else if (scene.environment.kind == EnvironmentKind::Uniform) {
-    plan.skipped.push_back(
-        "environment.prefilter_samples: a uniform environment prefilters exactly with any count");
-  } else {
-    for (int p : {std::max(pf / 4, 1), std::min(pf * 4, 65536)}) {
-      if (p == pf) continue;
-      c.push_back({"environment.prefilter_samples=" + std::to_string(p), "environment", b, p, {}});
-    }
-  }
-  for (std::string_view p : settingsPresetNames()) {
-    TradeConfig t{"preset=" + str(p), "preset", b, pf, {}};
-    applySettingsPreset(p, t.settings);
-    c.push_back(t);
-  }
-  // The exact configuration: the reference's BRDF and the most accurate methods of the engine.
-  TradeConfig exact{"exact", "exact", truthSettings(b), pf, {}};
-  exact.settings.sphere_diffuse = SphereDiffuse::HorizonCorrect;
-  exact.settings.sphere_normalization = true;
-  exact.settings.sphere_specular = SphereSpecular::Ltc;  // docs/accuracy.md: the closest methods
-  exact.settings.tube_specular = TubeSpecular::Ltc;
-  exact.settings.tube_normalization = true;
-  exact.settings.tube_diffuse = TubeDiffuse::Ltc;
-  exact.settings.env_brdf = EnvBrdf::Table;
-  exact.settings.irradiance = Irradiance::Cubemap;
-  c.push_back(exact);
-
-  for (TradeConfig& t : c) {
-    auto same = std::find_if(plan.configs.begin(), plan.configs.end(), [&](const TradeConfig& o) {
-      return o.prefilter_samples == t.prefilter_samples && o.settings == t.settings;
-    });
-    if (same != plan.configs.end()) {
-      same->aliases.push_back(t.name);
-    } else {
-      plan.configs.push_back(t);
-    }
-  }
-  return plan;
-}
-
-void markPareto(std::vector<TradeRow>& rows) {
-  for (TradeRow& r : rows) {
-    const double t = r.total_ms, e = r.error.rel_rmse;
-    r.pareto = std::isfinite(e) && r.nonfinite == 0;
-    for (const TradeRow& o : rows) {
-      if (&o == &r || !std::isfinite(o.error.rel_rmse) || o.nonfinite) continue;
-      const double ot = o.total_ms, oe = o.error.rel_rmse;
-      if (ot <= t && oe <= e && (ot < t || oe < e)) {
-        r.pareto = false;
-        break;
-      }
-    }
-  }
-}
-
-void pickConfigurations(TradeReport& r) {
-  r.cheapest_within_error = r.most_accurate_within_ms = -1;
-  for (size_t i = 0; i < r.rows.size(); ++i) {
-    const TradeRow& row = r.rows[i];
-    if (row.nonfinite || !std::isfinite(row.error.rel_rmse)) continue;
-    if (row.error.rel_rmse <= r.max_error &&
-        (r.cheapest_within_error < 0 ||
-         row.total_ms < r.rows[size_t(r.cheapest_within_error)].total_ms)) {
-      r.cheapest_within_error = int(i);
-    }
-    if (row.total_ms <= r.max_ms &&
-        (r.most_accurate_within_ms < 0 ||
-         row.error.rel_rmse < r.rows[size_t(r.most_accurate_within_ms)].error.rel_rmse)) {
-      r.most_accurate_within_ms = int(i);
-    }
-  }
-}
 
 namespace {
 using Say = std::function<void(const std::string&)>;
@@ -487,13 +328,6 @@ MedianInterval costRatio(const ConfigTimes& row, const ConfigTimes& scene,
 }
 }  // namespace
 
-std::vector<std::string> costPasses(const std::string& group) {
-  if (group == "brdf" || group == "lights") return {"light"};
-  if (group == "culling") return {"light_cull", "light"};
-  if (group == "environment") return {"ambient"};
-  return {};
-}
-
 TradeReport runTrade(const Scene& scene, const TradeOptions& opt) {
   const Say say = [&](const std::string& s) {
     if (opt.progress) opt.progress(s);
@@ -566,231 +400,6 @@ TradeReport runTrade(const Scene& scene, const TradeOptions& opt) {
   rep.max_ms = opt.max_ms > 0.0 ? opt.max_ms : rep.rows.front().total_ms;
   pickConfigurations(rep);
   return rep;
-}
-
-// ---- Output ---------------------------------------------------------------------------------
-
-namespace {
-std::vector<std::string> passNames(const TradeReport& r) {
-  std::vector<std::string> names;
-  for (const TradeRow& row : r.rows)
-    for (const auto& [p, ms] : row.pass_ms)
-      if (std::find(names.begin(), names.end(), p) == names.end()) names.push_back(p);
-  return names;
-}
-
-double passMs(const TradeRow& row, const std::string& pass) {
-  for (const auto& [p, ms] : row.pass_ms)
-    if (p == pass) return ms;
-  return 0.0;
-}
-
-std::string label(const TradeConfig& c) {
-  std::string s = c.name;
-  for (const std::string& a : c.aliases) s += " = " + a;
-  return s;
-}
-
-std::string csvField(const std::string& s) {
-  if (s.find_first_of(",\"") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
-}
-
-std::string sceneName(const TradeReport& r) {
-  return fs::path(r.scene_path).stem().string();
-}
-}  // namespace
-
-std::string tradeCsv(const TradeReport& r) {
-  std::ostringstream o;
-  const auto passes = passNames(r);
-  o << "scene,configuration,aliases,group";
-  for (const auto& p : passes) o << "," << p << "_ms";
-  o << ",total_ms,rel_rmse,bias_rel_rmse,p99_rel,max_abs,rmse,within_noise,pareto,"
-       "nonfinite_pixels,cost_ratio,cost_lo,cost_hi,same_cost,cost_passes,pass_cost_ratio,"
-       "pass_cost_lo,pass_cost_hi,pass_same_cost\n";
-  for (const TradeRow& row : r.rows) {
-    std::string aliases;
-    for (const auto& a : row.config.aliases) aliases += (aliases.empty() ? "" : ";") + a;
-    o << csvField(sceneName(r)) << "," << csvField(row.config.name) << "," << csvField(aliases)
-      << "," << row.config.group;
-    for (const auto& p : passes) o << "," << fmtNum(passMs(row, p), "%.4f");
-    o << "," << fmtNum(row.total_ms, "%.4f") << "," << fmtNum(row.error.rel_rmse, "%.6g") << ","
-      << fmtNum(row.bias_rel_rmse, "%.6g") << "," << fmtNum(row.error.p99_rel, "%.6g") << ","
-      << fmtNum(row.error.max_abs, "%.6g") << "," << fmtNum(row.error.rmse, "%.6g") << ","
-      << (row.within_noise ? 1 : 0) << "," << (row.pareto ? 1 : 0) << "," << row.nonfinite << ","
-      << fmtNum(row.cost_ratio, "%.4f") << "," << fmtNum(row.cost_lo, "%.4f") << ","
-      << fmtNum(row.cost_hi, "%.4f") << "," << (row.same_cost ? 1 : 0) << ",";
-    std::string cost_passes;
-    for (const auto& p : row.cost_passes) cost_passes += (cost_passes.empty() ? "" : ";") + p;
-    o << csvField(cost_passes) << "," << fmtNum(row.pass_cost_ratio, "%.4f") << ","
-      << fmtNum(row.pass_cost_lo, "%.4f") << "," << fmtNum(row.pass_cost_hi, "%.4f") << ","
-      << (row.pass_same_cost ? 1 : 0) << "\n";
-  }
-  return o.str();
-}
-
-std::string tradeMarkdown(const TradeReport& r, const std::string& prefix, int level) {
-  std::ostringstream o;
-  const std::string h(size_t(std::max(level, 1)), '#');
-  o << h << " " << sceneName(r) << " (`" << r.scene_path << "`)\n\n";
-  o << r.width << "x" << r.height << ", GPU ms = median of " << r.frames * r.rounds << " frames ("
-    << r.rounds << " rounds over all configurations of " << r.frames
-    << " frames after a warm-up frame); x scene: the median over those frames of the row's frame "
-       "time / the scene row's of the same round and frame, with its 95% interval (\"same cost\" "
-       "where it includes 1); its passes x scene: the same for the passes the option changes (the "
-       "light pass for BRDF and light options, light culling and the light pass for culling, the "
-       "ambient pass for environment options; \"frame\" for presets and exact), free of the "
-       "other passes' noise. Reference: "
-    << r.samples << " samples per pixel over " << (r.lit_pixels + r.unconverged_pixels)
-    << " lit pixels"
-    << (r.reference_cached ? " (read from the cache; computed in " : " (computed in ")
-    << fmtNum(r.reference.seconds, "%.1f")
-    << " s); its mean relative standard error of luminance is "
-    << fmtNum(r.reference.mean_rel_error, "%.3g") << ", as a relative RMSE the noise is "
-    << fmtNum(r.noise_rel_rmse, "%.3g") << " (rows marked `~` are within "
-    << fmtNum(kNoiseFactor, "%g") << "x of it). Compared: " << r.lit_pixels
-    << " pixels; left out: " << r.unconverged_pixels
-    << " where the reference has not converged (relative standard error > "
-    << fmtNum(kMaxReferenceRelError, "%g") << ").\n\n";
-  const auto passes = passNames(r);
-  o << "| configuration |";
-  for (const auto& p : passes) o << " " << p << " ms |";
-  o << " total ms | x scene (95%) | its passes x scene (95%) | rel. RMSE | bias | p99 rel. | max "
-       "abs | |\n|---|";
-  for (size_t i = 0; i < passes.size(); ++i) o << "---:|";
-  o << "---:|---:|---:|---:|---:|---:|---:|---|\n";
-  for (size_t i = 0; i < r.rows.size(); ++i) {
-    const TradeRow& row = r.rows[i];
-    std::string name = "`" + row.config.name + "`";
-    for (const auto& a : row.config.aliases) name += " = `" + a + "`";
-    o << "| " << name << " |";
-    for (const auto& p : passes) o << " " << fmtNum(passMs(row, p), "%.3f") << " |";
-    std::string flags;
-    if (row.pareto) flags += "front ";
-    if (row.within_noise) flags += "~ ";
-    if (int(i) == r.cheapest_within_error) flags += "cheapest ";
-    if (int(i) == r.most_accurate_within_ms) flags += "most-accurate ";
-    if (row.nonfinite) flags += "NaN/Inf:" + std::to_string(row.nonfinite) + " ";
-    if (!row.heatmap.empty()) flags += "[heat map](" + prefix + row.heatmap + ")";
-    const std::string cost =
-        i == 0 ? std::string("1")
-               : fmtNum(row.cost_ratio, "%.2f") + " (" + fmtNum(row.cost_lo, "%.2f") + "-" +
-                     fmtNum(row.cost_hi, "%.2f") + ")" + (row.same_cost ? " same cost" : "");
-    std::string pass_cost = "frame";
-    if (i == 0) {
-      pass_cost = "1";
-    } else if (!row.cost_passes.empty()) {
-      pass_cost.clear();
-      for (const std::string& p : row.cost_passes) pass_cost += (pass_cost.empty() ? "" : "+") + p;
-      pass_cost += " " + fmtNum(row.pass_cost_ratio, "%.2f") + " (" +
-                   fmtNum(row.pass_cost_lo, "%.2f") + "-" + fmtNum(row.pass_cost_hi, "%.2f") + ")" +
-                   (row.pass_same_cost ? " same cost" : "");
-    }
-    o << " " << fmtNum(row.total_ms, "%.3f") << " | " << cost << " | " << pass_cost << " | "
-      << fmtNum(row.error.rel_rmse, "%.4f") << " | " << fmtNum(row.bias_rel_rmse, "%.4f") << " | "
-      << fmtNum(row.error.p99_rel, "%.4f") << " | " << fmtNum(row.error.max_abs, "%.3g") << " | "
-      << flags << " |\n";
-  }
-  o << "\n";
-  if (r.cheapest_within_error >= 0) {
-    const TradeRow& c = r.rows[size_t(r.cheapest_within_error)];
-    o << "- Cheapest within rel. RMSE <= " << fmtNum(r.max_error, "%g") << ": `" << label(c.config)
-      << "` (" << fmtNum(c.total_ms, "%.3f") << " ms, " << fmtNum(c.error.rel_rmse, "%.4f")
-      << ").\n";
-  } else {
-    o << "- No configuration is within rel. RMSE <= " << fmtNum(r.max_error, "%g") << ".\n";
-  }
-  if (r.most_accurate_within_ms >= 0) {
-    const TradeRow& c = r.rows[size_t(r.most_accurate_within_ms)];
-    o << "- Most accurate within " << fmtNum(r.max_ms, "%.3f") << " ms: `" << label(c.config)
-      << "` (" << fmtNum(c.total_ms, "%.3f") << " ms, " << fmtNum(c.error.rel_rmse, "%.4f")
-      << ").\n";
-  } else {
-    o << "- No configuration renders within " << fmtNum(r.max_ms, "%.3f") << " ms.\n";
-  }
-  for (const std::string& s : r.skipped) o << "- Not applicable: " << s << ".\n";
-  o << "\n![error vs time, " << sceneName(r) << "](" << prefix << "plot.png)\n";
-  return o.str();
-}
-
-ImageRGBA8 tradePlot(const TradeReport& r) {
-  ScatterPlot p;
-  p.title = sceneName(r) + ": error vs GPU time (" + std::to_string(r.width) + "x" +
-            std::to_string(r.height) + ")";
-  p.x_label = "total GPU ms per frame (median)";
-  p.y_label = "relative RMSE vs reference (log)";
-  p.log_y = true;
-  std::vector<size_t> front;
-  for (size_t i = 0; i < r.rows.size(); ++i) {
-    const TradeRow& row = r.rows[i];
-    PlotPoint pt;
-    pt.x = row.total_ms;
-    pt.y = row.error.rel_rmse;
-    pt.label = row.config.name;
-    for (const std::string& a : row.config.aliases)
-      if (a.rfind("preset=", 0) == 0 || a == "exact") pt.label += " = " + a;
-    pt.marked = row.pareto;
-    pt.labeled = row.pareto || row.config.group == "preset" || row.config.group == "scene" ||
-                 pt.label != row.config.name;
-    p.points.push_back(pt);
-    if (row.pareto) front.push_back(i);
-  }
-  std::sort(front.begin(), front.end(),
-            [&](size_t a, size_t b) { return r.rows[a].total_ms < r.rows[b].total_ms; });
-  p.front = front;
-  return drawScatterPlot(p);
-}
-
-std::string presetRationale() {
-  return R"(The presets (engine/scene/src/presets.cpp; `"settings": {"preset": "fast"}`, explicit keys
-override) set only approximation options: the V term and roughness remap, the falloff, the sphere
-and tube methods, the environment BRDF and the irradiance. They never change the material model
-(D, F, diffuse term, energy compensation, specular occlusion) or the culling. They were chosen
-from the tables below:
-
-| preset | sets | why (rows of the tables below) |
-|---|---|---|
-| `fast` | Karis 2013 defaults, `env_brdf: analytic` | the analytic fit removes a texture fetch; its relative RMSE is up to 8% above the table's (default), within 1% elsewhere (`env_brdf=analytic` rows) |
-| `balanced` | Karis 2013 defaults, `irradiance: cubemap` | the irradiance cube map's error is equal to or lower than SH9's on every sample scene (`irradiance=cubemap` rows), for one more fetch |
-| `accurate` | `balanced` + `falloff_plus_one: false`, `sphere_diffuse: horizon_correct`, `sphere_specular`, `tube_specular`, `tube_diffuse: ltc` | the inverse-square law is the emitter's true falloff: the largest single gain where lights are close to surfaces (`falloff_plus_one=false`, many_lights); the horizon-correct sphere diffuse is exact for a Lambertian lobe (docs/lights.md), equal or better in every table, at no measurable cost. The `ltc` sphere and tube methods have the lowest median and worst error of each light method on the accuracy sweeps (the "Summary" table of docs/accuracy.md, regenerated by `halfvec accuracy`; `sphere_specular=ltc`, `tube_specular=ltc`, `tube_diffuse=ltc` rows for the scenes). The eq. 18 tube point is not taken: it measured slightly worse than eq. 19 (`tube_specular=smallest_angle_eq18` rows) |
-
-All presets keep `sphere_normalization` and `tube_normalization` on: turning sphere
-normalization off gives by far the largest error on every scene with sphere lights except
-many_lights (where it is neutral); turning tube normalization off changes the sample scenes'
-error by about 1% either way, but on the accuracy sweeps (docs/accuracy.md) it makes thin tubes'
-highlights up to 120x too bright. `accurate` keeps Schlick's V with the Disney remap rather than
-the exact configuration's height-correlated V without remap. With the scene's own settings (and `fast` and
-`balanced`), the relative RMSE on the sample scenes is dominated by highlight pixels where the
-representative-point sphere and tube specular is several times brighter than the reference (the
-chrome spheres of default, the roughness-0.05 spheres of sphere_grid, the glossy floor of
-area_lights). `accurate`'s `ltc` methods remove most of that: its relative RMSE is below the
-scene's settings' on every sample scene (the "Measured" table). gltf barely moves: its error is
-carried by a few pixels of the helmet's smooth metal with a large absolute difference (the max abs
-column). With the representative point, rows whose terms darken glossy highlights can score a
-lower error by offsetting the overestimate, which is no reason to choose them.
-
-Times: the "x scene" column is each row's frame time over the scene row's, frame by frame within
-a round, with its 95% interval over one run's frames; "same cost" marks rows whose interval
-includes 1. "its passes x scene" is the same ratio over only the passes the option changes (the
-light pass for BRDF and light options, culling and the light pass for culling, the ambient pass
-for environment options), so that the rest of the frame's noise does not hide it. On llvmpipe
-these verdicts are not stable from run to run for differences below about 1.3x, more so when the
-machine is busy: read a ratio whose interval is wide as unmeasured. The `ltc` light modes are the
-one large cost; `halfvec bench --methods` measures their light pass alone, per light type, from
-interleaved frames (docs/lights.md).
-)";
-}
-
-void writeTradeReport(const TradeReport& r, const std::string& dir) {
-  fs::create_directories(dir);
-  OutputFiles files;  // the report's three files appear together, whole, or not at all
-  files.write(fs::path(dir) / "trade.md", tradeMarkdown(r, "", 1));
-  files.write(fs::path(dir) / "trade.csv", tradeCsv(r));
-  writePng(files.add(fs::path(dir) / "plot.png").string(), tradePlot(r));
-  files.commit();
 }
 
 }  // namespace hv::eval

@@ -132,16 +132,6 @@ void markPareto(std::vector<TradeRow>& rows);
 // Sets the picks from report.max_error / report.max_ms (ties: the first row).
 void pickConfigurations(TradeReport& report);
 
-std::string tradeCsv(const TradeReport& report);
-// The report as markdown; images are linked as image_prefix + "plot.png" etc.;
-// heading_level: '#' count of its title.
-std::string tradeMarkdown(const TradeReport& report, const std::string& image_prefix,
-                          int heading_level = 1);
-ImageRGBA8 tradePlot(const TradeReport& report);
-// Why the presets (engine/scene/src/presets.cpp) set what they set: markdown, for docs/trade.md.
-std::string presetRationale();
-
-// Writes trade.md, trade.csv and plot.png into `dir` (created if needed).
-void writeTradeReport(const TradeReport& report, const std::string& dir);
+// The report formats (markdown, CSV, plot) are the command's: samples/app/trade_report.hpp.
 
 }  // namespace hv::eval

@@ -1,0 +1,181 @@
+// The trade report's plan: which configurations to run for a scene (one row per other value of
+// each approximation option of the settings table, the presets, the exact configuration), the
+// truth settings the reference uses, and the Pareto front over the measured rows.
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <type_traits>
+
+#include "halfvec/eval/trade.hpp"
+#include "halfvec/scene/enums.hpp"
+#include "halfvec/scene/presets.hpp"
+
+namespace hv::eval {
+
+namespace {
+
+std::string str(std::string_view s) {
+  return std::string(s);
+}
+
+// ---- settings as names ------------------------------------------------------------------------
+template <class E>
+void enumRows(std::vector<TradeConfig>& out, const char* key, const RenderSettings& base, int pf,
+              E RenderSettings::*field, const char* group) {
+  for (size_t i = 0; i < enumNames<E>().size(); ++i) {
+    const auto v = static_cast<E>(i);
+    if (v == base.*field) continue;
+    TradeConfig c{std::string(key) + "=" + str(toString(v)), group, base, pf, {}};
+    c.settings.*field = v;
+    out.push_back(c);
+  }
+}
+
+void boolRow(std::vector<TradeConfig>& out, const char* key, const RenderSettings& base, int pf,
+             bool RenderSettings::*field, const char* group) {
+  TradeConfig c{std::string(key) + "=" + (base.*field ? "false" : "true"), group, base, pf, {}};
+  c.settings.*field = !(base.*field);
+  out.push_back(c);
+}
+
+}  // namespace
+
+RenderSettings truthSettings(const RenderSettings& s) {
+  RenderSettings t = s;
+  if (s.d == DistributionTerm::GGX) t.v = VisibilityTerm::SmithGGXCorrelated;  // Heitz 2014 eq. 99
+  if (s.d == DistributionTerm::Beckmann) t.v = VisibilityTerm::SmithBeckmannSeparable;
+  if (s.f == FresnelTerm::SchlickSG)
+    t.f = FresnelTerm::SchlickPow5;  // SG fits Schlick (Karis eq. 5)
+  t.remap_roughness = false;
+  t.falloff_plus_one = false;
+  return t;
+}
+
+TradePlan tradePlan(const Scene& scene, int max_brute_force_lights) {
+  TradePlan plan;
+  const RenderSettings& b = scene.settings;
+  const int pf = scene.environment.prefilter_samples;
+  const bool env = scene.environment.kind != EnvironmentKind::None;
+  bool sphere = false, tube = false;
+  for (const Light& l : scene.lights) {
+    sphere |= l.type == LightType::Sphere;
+    tube |= l.type == LightType::Tube;
+  }
+  const bool lights = !scene.lights.empty();
+  std::vector<TradeConfig> c;
+  c.push_back({"scene", "scene", b, pf, {}});
+  // One row per other value of each approximation option of the settings table
+  // (render_settings.hpp), where the scene has what makes it change code.
+  const std::pair<SettingFeature, const char*> absent[] = {
+      {SettingFeature::Lights, lights ? nullptr : "no lights"},
+      {SettingFeature::SphereLights, sphere ? nullptr : "no sphere lights"},
+      {SettingFeature::TubeLights, tube ? nullptr : "no tube lights"},
+      {SettingFeature::AmbientIbl, env ? nullptr : "no environment"}};
+  std::vector<std::string> skipped_keys(std::size(absent));
+  forEachSetting([&](const auto& row) {
+    using T = typename std::decay_t<decltype(row)>::Type;
+    if (!row.info.trade) return;
+    for (size_t i = 0; i < std::size(absent); ++i) {
+      if (absent[i].first != row.info.feature || !absent[i].second) continue;
+      skipped_keys[i] += (skipped_keys[i].empty() ? "" : ", ") + std::string(row.key);
+      return;
+    }
+    if constexpr (std::is_same_v<T, Culling>) {
+      if (b.culling == Culling::Tiled && int(scene.lights.size()) > max_brute_force_lights) {
+        plan.skipped.push_back("culling=brute_force: " + std::to_string(scene.lights.size()) +
+                               " lights (more than " + std::to_string(max_brute_force_lights) +
+                               "; brute force shades every light at every pixel)");
+        return;
+      }
+    }
+    if constexpr (std::is_same_v<T, bool>) {
+      boolRow(c, row.key, b, pf, row.member, row.info.trade_group);
+    } else if constexpr (std::is_enum_v<T>) {
+      enumRows(c, row.key, b, pf, row.member, row.info.trade_group);
+    }
+  });
+  for (size_t i = 0; i < std::size(absent); ++i) {
+    if (!skipped_keys[i].empty()) plan.skipped.push_back(skipped_keys[i] + ": " + absent[i].second);
+  }
+  if (!env) {
+    plan.skipped.push_back("environment.prefilter_samples: no environment");
+  } else if (scene.environment.kind == EnvironmentKind::Uniform) {
+    plan.skipped.push_back(
+        "environment.prefilter_samples: a uniform environment prefilters exactly with any count");
+  } else {
+    for (int p : {std::max(pf / 4, 1), std::min(pf * 4, 65536)}) {
+      if (p == pf) continue;
+      c.push_back({"environment.prefilter_samples=" + std::to_string(p), "environment", b, p, {}});
+    }
+  }
+  for (std::string_view p : settingsPresetNames()) {
+    TradeConfig t{"preset=" + str(p), "preset", b, pf, {}};
+    applySettingsPreset(p, t.settings);
+    c.push_back(t);
+  }
+  // The exact configuration: the reference's BRDF and the most accurate methods of the engine.
+  TradeConfig exact{"exact", "exact", truthSettings(b), pf, {}};
+  exact.settings.sphere_diffuse = SphereDiffuse::HorizonCorrect;
+  exact.settings.sphere_normalization = true;
+  exact.settings.sphere_specular = SphereSpecular::Ltc;  // docs/accuracy.md: the closest methods
+  exact.settings.tube_specular = TubeSpecular::Ltc;
+  exact.settings.tube_normalization = true;
+  exact.settings.tube_diffuse = TubeDiffuse::Ltc;
+  exact.settings.env_brdf = EnvBrdf::Table;
+  exact.settings.irradiance = Irradiance::Cubemap;
+  c.push_back(exact);
+
+  for (TradeConfig& t : c) {
+    auto same = std::find_if(plan.configs.begin(), plan.configs.end(), [&](const TradeConfig& o) {
+      return o.prefilter_samples == t.prefilter_samples && o.settings == t.settings;
+    });
+    if (same != plan.configs.end()) {
+      same->aliases.push_back(t.name);
+    } else {
+      plan.configs.push_back(t);
+    }
+  }
+  return plan;
+}
+
+void markPareto(std::vector<TradeRow>& rows) {
+  for (TradeRow& r : rows) {
+    const double t = r.total_ms, e = r.error.rel_rmse;
+    r.pareto = std::isfinite(e) && r.nonfinite == 0;
+    for (const TradeRow& o : rows) {
+      if (&o == &r || !std::isfinite(o.error.rel_rmse) || o.nonfinite) continue;
+      const double ot = o.total_ms, oe = o.error.rel_rmse;
+      if (ot <= t && oe <= e && (ot < t || oe < e)) {
+        r.pareto = false;
+        break;
+      }
+    }
+  }
+}
+
+void pickConfigurations(TradeReport& r) {
+  r.cheapest_within_error = r.most_accurate_within_ms = -1;
+  for (size_t i = 0; i < r.rows.size(); ++i) {
+    const TradeRow& row = r.rows[i];
+    if (row.nonfinite || !std::isfinite(row.error.rel_rmse)) continue;
+    if (row.error.rel_rmse <= r.max_error &&
+        (r.cheapest_within_error < 0 ||
+         row.total_ms < r.rows[size_t(r.cheapest_within_error)].total_ms)) {
+      r.cheapest_within_error = int(i);
+    }
+    if (row.total_ms <= r.max_ms &&
+        (r.most_accurate_within_ms < 0 ||
+         row.error.rel_rmse < r.rows[size_t(r.most_accurate_within_ms)].error.rel_rmse)) {
+      r.most_accurate_within_ms = int(i);
+    }
+  }
+}
+
+std::vector<std::string> costPasses(const std::string& group) {
+  if (group == "brdf" || group == "lights") return {"light"};
+  if (group == "culling") return {"light_cull", "light"};
+  if (group == "environment") return {"ambient"};
+  return {};
+}
+
+}  // namespace hv::eval
