@@ -8,13 +8,13 @@
 // ---- Uniform blocks ----------------------------------------------------------------------------
 #define HV_UBO_FRAME 0        // FrameBlock (frame.glsl), bound for the whole frame
 #define HV_UBO_ENVIRONMENT 1  // EnvironmentBlock (ambient.comp): SH9, mip count, presence
+#define HV_UBO_MATERIAL 2     // MaterialBlock (material.glsl): the draw's material, bound per draw
 
 // ---- Storage buffers ---------------------------------------------------------------------------
 // At most 8 binding points (0..7: GL 4.5's minimum of GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS), so a
 // pass may give a slot another meaning than a pass that does not run at the same time.
 #define HV_BINDING_CULL_MASKS 0       // culling: per group of tiles, its light mask
 #define HV_BINDING_CULL_TILE_STATE 1  // culling (batched): per tile, counts then write cursors
-#define HV_BINDING_MATERIALS 1
 #define HV_BINDING_LIGHTS 2
 #define HV_BINDING_CULL_LIGHTS 3  // culling: per light, its view-space sphere and tile rectangle
 #define HV_BINDING_TILE_RANGES 4
@@ -53,7 +53,6 @@
 // ---- Uniform locations (explicit, so the C++ never looks a name up) ------------------------------
 #define HV_LOC_MODEL 0          // gbuffer.vert: object to world
 #define HV_LOC_NORMAL_MATRIX 1  // gbuffer.vert: inverse transpose of the model matrix
-#define HV_LOC_MATERIAL 2       // gbuffer.frag: material index
 #define HV_LOC_CULL_BATCH 0     // light_cull.comp: lights [x, y), mask words per group
 
 // ---- FrameBlock::counts.w bits (hv::render::FrameFlag), set for the per-term debug views -------

@@ -1,4 +1,4 @@
-// Material records as the G-buffer pass reads them (binding HV_BINDING_MATERIALS).
+// The material record the G-buffer pass reads (uniform block HV_UBO_MATERIAL).
 // C++ mirror: halfvec/render/frame_data.hpp (GpuMaterial).
 #ifndef HV_MATERIAL_GLSL
 #define HV_MATERIAL_GLSL
@@ -22,8 +22,12 @@ struct GpuMaterial {
   uvec4 flags;      // texture bits, alpha mode, shading-model ID, unused
 };
 
-layout(std430, binding = HV_BINDING_MATERIALS) readonly buffer MaterialBlock {
-  GpuMaterial materials[];
+// The draw's material: GpuScene keeps every material in one buffer and the G-buffer pass binds the
+// draw's range (glBindBufferRange), so the values are uniform across the draw. A storage buffer
+// indexed by a material uniform was gathered per pixel on llvmpipe (docs/performance.md "The
+// material as uniforms").
+layout(std140, binding = HV_UBO_MATERIAL) uniform MaterialBlock {
+  GpuMaterial u_material;
 };
 
 #endif

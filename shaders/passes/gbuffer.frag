@@ -6,8 +6,6 @@
 #include "../common/gbuffer.glsl"
 #include "../common/material.glsl"
 
-layout(location = HV_LOC_MATERIAL) uniform int u_material;
-
 layout(binding = HV_UNIT_MATERIAL_TEXTURES + 0) uniform sampler2D t_base_color;  // sRGB texture: sampled linear
 layout(binding = HV_UNIT_MATERIAL_TEXTURES + 1) uniform sampler2D t_metal_rough;
 layout(binding = HV_UNIT_MATERIAL_TEXTURES + 2) uniform sampler2D t_normal;
@@ -45,7 +43,7 @@ vec2 uvSet(uint set) { return v_uv0; }
 #endif
 
 void main() {
-  GpuMaterial m = materials[u_material];
+  GpuMaterial m = u_material;
   vec4 base = m.base_color;
 #if HV_MAT_BASE_COLOR_MAP
   if (HV_MAT_USES(HV_MAT_BASE_COLOR_TEX)) base *= texture(t_base_color, uvSet(m.texcoords.x));

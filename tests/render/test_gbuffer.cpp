@@ -1,8 +1,14 @@
 // G-buffer round trip: known materials rendered, read back and decoded; each channel within its
 // quantization step of the input.
+#include <algorithm>
 #include <cmath>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "render_fixture.hpp"
+#include "halfvec/render/frame_data.hpp"
+#include "halfvec/render/gpu_scene.hpp"
 #include "halfvec/shading/shading.hpp"
 
 using namespace hv;
@@ -121,6 +127,62 @@ TEST(GBuffer, BackgroundIsMarked) {
   EXPECT_EQ(g.model[0], 0u);
   EXPECT_EQ(g.depth[0], 0.0f);
   EXPECT_EQ(g.model[size_t(16) * 32 + 16], static_cast<uint32_t>(ShadingModel::DefaultLit));
+}
+
+// The material reaches the shader per draw (a range of GpuScene's uniform buffer): four quads of
+// four materials in one frame each read back their own material, and the ranges start on the
+// driver's uniform-buffer offset alignment.
+TEST(GBuffer, EachDrawReadsItsOwnMaterial) {
+  testContext();
+  Scene s = planeScene(Material{}, 0.1f);  // material 0: a small plane under the four quads
+  s.objects[0].transform = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, -0.5f, 0.0f));
+  const glm::vec2 at[4] = {{-0.5f, -0.5f}, {0.5f, -0.5f}, {-0.5f, 0.5f}, {0.5f, 0.5f}};
+  for (int i = 0; i < 4; ++i) {
+    Material m;
+    m.base_color = glm::vec3(0.2f * float(i + 1), 0.5f, 1.0f - 0.2f * float(i));
+    m.metallic = 0.25f * float(i);
+    m.roughness = 0.1f + 0.2f * float(i);
+    m.cavity = 1.0f - 0.1f * float(i);
+    s.materials.push_back(m);
+    s.meshes.push_back(makePlane(0.9f, 0.9f));
+    s.meshes.back().material = i + 1;
+    Object o;
+    o.meshes = {i + 1};
+    o.transform = glm::translate(glm::mat4(1.0f), glm::vec3(at[i].x, 0.0f, at[i].y));
+    s.objects.push_back(o);
+  }
+  render::Renderer r;
+  r.setScene(s);
+  r.render(64, 64);
+  const auto g = r.readGBuffer();
+  std::vector<int> seen;
+  for (int qy : {16, 48}) {
+    for (int qx : {16, 48}) {
+      const size_t c = size_t(qy) * 64 + size_t(qx);
+      int found = -1;
+      for (int i = 1; i <= 4; ++i) {
+        const Material& m = s.materials[size_t(i)];
+        if (std::abs(g.metallic[c] - m.metallic) < 1.0f / 255.0f &&
+            std::abs(g.roughness[c] - m.roughness) < 1e-4f &&
+            std::abs(g.cavity[c] - m.cavity) < 1.0f / 255.0f &&
+            std::abs(g.base_color[c].x - m.base_color.x) < 0.01f) {
+          found = i;
+        }
+      }
+      EXPECT_GT(found, 0) << "pixel " << qx << "," << qy << " matches no quad's material";
+      seen.push_back(found);
+    }
+  }
+  std::sort(seen.begin(), seen.end());
+  EXPECT_EQ(seen, (std::vector<int>{1, 2, 3, 4}));
+
+  GLint align = 0;
+  glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &align);
+  const render::GpuScene gpu(s);
+  RecordProperty("uniform_buffer_offset_alignment", align);
+  RecordProperty("material_stride", int(gpu.materialStride()));
+  EXPECT_GE(gpu.materialStride(), sizeof(render::GpuMaterial));
+  EXPECT_EQ(gpu.materialStride() % size_t(std::max(align, 1)), 0u);
 }
 
 // The floor pass (DebugOptions::floor_pass) is timed as its own pass and leaves the frame's

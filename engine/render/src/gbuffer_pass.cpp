@@ -31,7 +31,6 @@ void runGBufferPass(const PassContext& ctx, const GBufferPassInput& in,
   if (!in.emissive) glColorMaski(3, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
 
   glBindVertexArray(in.gpu.vertexArray());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_MATERIALS, in.gpu.materialBuffer());
   int bound_material = -1;
   int bound_variant = -1;
   bool culling = true;
@@ -43,7 +42,6 @@ void runGBufferPass(const PassContext& ctx, const GBufferPassInput& in,
     if (variant != bound_variant) {
       bound_variant = variant;
       glUseProgram(ctx.programs.get(in.programs.at(size_t(variant))));
-      bound_material = -1;  // uniforms are per program
     }
     const glm::mat4& model = in.scene.objects[d.object].transform;
     const glm::mat4 normal_matrix = glm::transpose(glm::inverse(model));
@@ -58,7 +56,9 @@ void runGBufferPass(const PassContext& ctx, const GBufferPassInput& in,
     }
     if (d.material != bound_material) {
       bound_material = d.material;
-      glUniform1i(HV_LOC_MATERIAL, d.material);
+      glBindBufferRange(GL_UNIFORM_BUFFER, HV_UBO_MATERIAL, in.gpu.materialBuffer(),
+                        GLintptr(size_t(d.material) * in.gpu.materialStride()),
+                        GLsizeiptr(sizeof(GpuMaterial)));
       const auto tex = in.gpu.materialTextures(d.material);
       static_assert(std::tuple_size_v<decltype(tex)> == HV_MATERIAL_TEXTURE_COUNT);
       for (GLuint u = 0; u < tex.size(); ++u) {
@@ -73,6 +73,7 @@ void runGBufferPass(const PassContext& ctx, const GBufferPassInput& in,
   for (GLuint u = 0; u < HV_MATERIAL_TEXTURE_COUNT; ++u) {
     glBindSampler(HV_UNIT_MATERIAL_TEXTURES + u, 0);
   }
+  glBindBufferBase(GL_UNIFORM_BUFFER, HV_UBO_MATERIAL, 0);
   glBindVertexArray(0);
   glUseProgram(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -1,6 +1,8 @@
 #include "halfvec/render/gpu_scene.hpp"
 
+#include <algorithm>
 #include <cstddef>
+#include <cstring>
 
 #include "halfvec/render/frame_data.hpp"
 #include "halfvec/shading/light_gpu.hpp"
@@ -55,8 +57,12 @@ GpuScene::GpuScene(const Scene& scene) : scene_(&scene) {
   glTextureSubImage2D(white_.id(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, white_px);
   default_sampler_ = gl::createSampler("default sampler");
 
-  materials_ = gl::createBuffer("materials",
-                                std::max<size_t>(1, scene.materials.size()) * sizeof(GpuMaterial));
+  GLint align = 0;
+  glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &align);
+  const size_t a = size_t(std::max(align, 1));
+  material_stride_ = (sizeof(GpuMaterial) + a - 1) / a * a;
+  materials_ =
+      gl::createBuffer("materials", std::max<size_t>(1, scene.materials.size()) * material_stride_);
   updateMaterials(scene);
   updateLights(scene);
 
@@ -78,11 +84,13 @@ GpuScene::GpuScene(const Scene& scene) : scene_(&scene) {
 }
 
 void GpuScene::updateMaterials(const Scene& scene) {
-  std::vector<GpuMaterial> mats;
-  for (const Material& m : scene.materials) mats.push_back(packMaterial(m));
-  if (!mats.empty()) {
-    glNamedBufferSubData(materials_.id(), 0, mats.size() * sizeof(GpuMaterial), mats.data());
+  std::vector<std::byte> bytes(scene.materials.size() * material_stride_);
+  for (size_t i = 0; i < scene.materials.size(); ++i) {
+    const GpuMaterial g = packMaterial(scene.materials[i]);
+    std::memcpy(bytes.data() + i * material_stride_, &g, sizeof g);
   }
+  if (!bytes.empty())
+    glNamedBufferSubData(materials_.id(), 0, GLsizeiptr(bytes.size()), bytes.data());
 }
 
 void GpuScene::updateLights(const Scene& scene) {

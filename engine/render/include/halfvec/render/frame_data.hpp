@@ -42,7 +42,7 @@ struct alignas(16) GpuMaterial {
   glm::uvec4 texcoords;
   glm::uvec4 flags;  // texture bits, alpha mode, shading model, unused
 };
-static_assert(sizeof(GpuMaterial) == 96, "GpuMaterial must match std430 layout");
+static_assert(sizeof(GpuMaterial) == 96, "GpuMaterial must match std140 layout");
 
 enum MaterialFlag : uint32_t {
   kBaseColorTex = 1,

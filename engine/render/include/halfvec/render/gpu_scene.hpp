@@ -1,5 +1,6 @@
-// The scene's GPU resources: one vertex/index buffer for all meshes, materials and lights in
-// storage buffers, textures with their samplers. Rebuilt when the scene changes; materials and
+// The scene's GPU resources: one vertex/index buffer for all meshes, the materials in one uniform
+// buffer (a range per material, bound per draw), the lights in a storage buffer, textures with
+// their samplers. Rebuilt when the scene changes; materials and
 // lights can be updated in place (the viewer's panels do).
 #pragma once
 
@@ -33,7 +34,12 @@ class GpuScene {
   void updateLights(const Scene& scene);
 
   GLuint vertexArray() const { return vao_.id(); }
+  // One GpuMaterial per material, material i at byte i * materialStride(): the G-buffer pass
+  // binds that range as the draw's MaterialBlock (material.glsl), so the shader reads the
+  // material as uniforms instead of gathering it from a storage buffer per pixel.
   GLuint materialBuffer() const { return materials_.id(); }
+  // sizeof(GpuMaterial) rounded up to GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT (256 on some drivers).
+  size_t materialStride() const { return material_stride_; }
   GLuint lightBuffer() const { return lights_.id(); }
   size_t lightCount() const { return light_count_; }
   // What the GPU buffer holds, per light: world-space bounding sphere of the culling (xyz center,
@@ -52,6 +58,7 @@ class GpuScene {
   gl::Buffer vertices_, indices_, materials_, lights_;
   gl::VertexArray vao_;
   std::vector<DrawItem> draws_;
+  size_t material_stride_ = 0;
   size_t light_count_ = 0;
   std::vector<glm::vec4> cull_spheres_;
   size_t light_capacity_ = 0;
