@@ -102,5 +102,7 @@ void main() {
   vec2 roughness16 = encodeRoughness16(roughness);
   o_material = vec4(clamp(metallic, 0.0, 1.0), roughness16.x, float(m.flags.z) / 255.0, roughness16.y);
   o_normal = octEncode(n);
-  o_hdr = vec4(emissive, 0.0);
+  // Clamped as every pass that writes the HDR target clamps (frame.glsl HV_HDR_MAX): without an
+  // environment no ambient pass follows to clamp unlit pixels.
+  o_hdr = vec4(min(emissive, vec3(HV_HDR_MAX)), 0.0);
 }

@@ -2,7 +2,9 @@
 // lights. The expected pixel values come from an independent integration of the environment BRDF
 // (hv::integrateEnvBrdfAt, the quadrature-checked CPU integrator), not from the table the GPU
 // reads.
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <iostream>
 
 #include "halfvec/ibl/ibl.hpp"
@@ -161,4 +163,57 @@ TEST(AmbientGpu, FiniteAtExtremes) {
           ASSERT_GE(p[c], 0.0f);
         }
     }
+}
+
+// Without an environment the frame has no ambient pass, and its image is bit for bit the one an
+// environment of radiance 0 gives through the ambient pass (which adds exactly 0): the background
+// stays the HDR target's clear value, and an emissive radiance above the half float range is
+// clamped to HV_HDR_MAX by the G-buffer pass as the ambient pass clamped it.
+TEST(AmbientGpu, NoEnvironmentNoPassSameImage) {
+  testContext();
+  Material lit = whiteMaterial(0.0f, 0.5f);
+  lit.base_color = glm::vec3(0.8f, 0.4f, 0.2f);
+  Material glow;
+  glow.model = ShadingModel::Unlit;
+  glow.emissive = glm::vec3(1e6f, 2.0f, 0.5f);
+  Scene none = furnaceScene(lit, glm::vec3(0.0f));
+  none.materials.push_back(glow);
+  none.meshes.push_back(makeSphere(0.3f, 32, 16));
+  none.meshes.back().material = 1;
+  Object o;
+  o.meshes = {1};
+  o.transform[3] = glm::vec4(0.0f, 0.0f, 1.5f, 1.0f);  // in front of the lit sphere
+  none.objects.push_back(o);
+  Light l;
+  l.type = LightType::Point;
+  l.position = {1.0f, 2.0f, 3.0f};
+  l.intensity = 20.0f;
+  l.range = 10.0f;
+  none.lights.push_back(l);
+  Scene black = none;
+  none.environment.kind = EnvironmentKind::None;
+
+  auto run = [](const Scene& s, bool* ambient) {
+    render::Renderer r;
+    r.setScene(s);
+    const render::FrameStats st = r.render(48, 48);
+    *ambient = std::any_of(st.passes.begin(), st.passes.end(),
+                           [](const auto& p) { return p.first == "ambient"; });
+    return r.readHdr();
+  };
+  bool ambient_none = true, ambient_black = false;
+  const ImageRGBf a = run(none, &ambient_none);
+  const ImageRGBf b = run(black, &ambient_black);
+  EXPECT_FALSE(ambient_none);
+  EXPECT_TRUE(ambient_black);
+  ASSERT_EQ(a.px.size(), b.px.size());
+  size_t differing = 0, clamped = 0, background = 0;
+  for (size_t i = 0; i < a.px.size(); ++i) {
+    differing += std::memcmp(&a.px[i], &b.px[i], sizeof a.px[i]) != 0;
+    clamped += a.px[i].x == 65504.0f;
+    background += a.px[i] == glm::vec3(0.0f);
+  }
+  EXPECT_EQ(differing, 0u);
+  EXPECT_GT(clamped, 0u) << "the emitter is not in the image";
+  EXPECT_GT(background, 0u) << "no background pixel in the image";
 }

@@ -227,7 +227,11 @@ FrameStats Renderer::render(int width, int height, DebugView view,
       debug_.light_texel_limit,
       lightPassNeedsLtc()};
   p.light.run(ctx, frame.block, light, t.hdr.id());
-  runAmbientPass(ctx, {gbuffer, *p.environment, ambient_desc_}, t.hdr.id(), width, height);
+  // Without an environment the ambient pass would add nothing: the background is black, the HDR
+  // target's clear value (docs/performance.md "Passes of the frame").
+  if (p.environment->present()) {
+    runAmbientPass(ctx, {gbuffer, *p.environment, ambient_desc_}, t.hdr.id(), width, height);
+  }
   emitterPass(view);
   const bool post = postPassesActive(view);
   final_ldr_ = 0;
