@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "halfvec/core/output_files.hpp"
@@ -105,4 +106,156 @@ TEST(OutputFilesDeathTest, ASignalRemovesTheTemporaries) {
     EXPECT_EQ(slurp(d / "image.png"), "good") << "signal " << sig;
     EXPECT_EQ(entries(d), 1u) << "signal " << sig << ": a temporary file was left";
   }
+}
+
+namespace {
+
+// A private character device with the numbers of `like` (/dev/null, /dev/full), made with mknod
+// in `dir`; "" (and the reason in `why`) where that is not possible.
+fs::path privateDevice(const fs::path& dir, const char* like, std::string& why) {
+  if (::geteuid() != 0) {
+    why = "mknod of a character device needs root";
+    return {};
+  }
+  struct stat st {};
+  if (::stat(like, &st) != 0 || !S_ISCHR(st.st_mode)) {
+    why = std::string("no ") + like;
+    return {};
+  }
+  const fs::path p = dir / fs::path(like).filename();
+  if (::mknod(p.c_str(), S_IFCHR | 0600, st.st_rdev) != 0) {
+    why = "mknod refused here (a container without CAP_MKNOD?)";
+    return {};
+  }
+  return p;
+}
+
+bool isCharDevice(const fs::path& p) {
+  struct stat st {};
+  return ::lstat(p.c_str(), &st) == 0 && S_ISCHR(st.st_mode);
+}
+
+bool has(const std::string& s, const std::string& what) {
+  return s.find(what) != std::string::npos;
+}
+
+}  // namespace
+
+// Issue 29: `--out /dev/full` replaced the device node with a regular file, exit 0. A character
+// device is written directly (its node stays), and a failed device write fails the commit
+// before any file was replaced.
+TEST(OutputFiles, CharacterDevicesAreWrittenNotReplaced) {
+  const fs::path d = freshDir("device");
+  std::string why;
+  const fs::path null_dev = privateDevice(d, "/dev/null", why);
+  if (null_dev.empty()) GTEST_SKIP() << why;
+  writeFileAtomic(null_dev, "discarded");
+  EXPECT_TRUE(isCharDevice(null_dev)) << "the device node was replaced";
+  EXPECT_EQ(entries(d), 1u) << "a temporary was left beside the device";
+
+  const fs::path full_dev = privateDevice(d, "/dev/full", why);
+  if (full_dev.empty()) GTEST_SKIP() << why;
+  writeFileAtomic(d / "image.png", "good");
+  std::string err;
+  try {
+    OutputFiles out;
+    out.write(d / "image.png", "new");
+    out.write(full_dev, "no room");
+    out.commit();
+  } catch (const OutputError& e) {
+    err = e.what();
+  }
+  EXPECT_TRUE(has(err, full_dev.string()) && has(err, "No space left")) << err;
+  EXPECT_TRUE(isCharDevice(full_dev));
+  EXPECT_EQ(slurp(d / "image.png"), "good") << "a file was replaced although a device failed";
+  EXPECT_EQ(entries(d), 3u) << "a temporary was left";  // image.png, null, full
+}
+
+TEST(OutputFiles, FifoFolderAndSocketDestinationsAreRefused) {
+  const fs::path d = freshDir("special");
+  ASSERT_EQ(::mkfifo((d / "pipe.png").c_str(), 0600), 0);
+  OutputFiles out;
+  std::string err;
+  try {
+    out.add(d / "pipe.png");
+  } catch (const OutputError& e) {
+    err = e.what();
+  }
+  EXPECT_TRUE(has(err, "pipe.png") && has(err, "FIFO")) << err;
+  fs::create_directory(d / "folder.png");
+  EXPECT_THROW(out.add(d / "folder.png"), OutputError);
+  EXPECT_EQ(entries(d), 2u);
+}
+
+// A symlink destination: the file it names is replaced, the link stays a link.
+TEST(OutputFiles, SymlinkDestinationReplacesItsTarget) {
+  const fs::path d = freshDir("symlink");
+  writeFileAtomic(d / "real.png", "old");
+  fs::create_symlink(d / "real.png", d / "link.png");
+  writeFileAtomic(d / "link.png", "new");
+  EXPECT_TRUE(fs::is_symlink(d / "link.png"));
+  EXPECT_EQ(slurp(d / "real.png"), "new");
+}
+
+// Issue 29: `render scene.json --out scene.json` overwrote the scene. An output that is an input
+// (the same path, a hard link or a symlink of it) is refused when added, either order.
+TEST(OutputFiles, AnInputCannotBeAnOutput) {
+  const fs::path d = freshDir("inputs");
+  writeFileAtomic(d / "scene.json", "{}");
+  fs::create_hard_link(d / "scene.json", d / "hard.json");
+  fs::create_symlink(d / "scene.json", d / "soft.json");
+  for (const char* name : {"scene.json", "hard.json", "soft.json", "./scene.json"}) {
+    OutputFiles out;
+    out.protectInput(d / "scene.json");
+    std::string err;
+    try {
+      out.add(d / name);
+    } catch (const OutputError& e) {
+      err = e.what();
+    }
+    EXPECT_TRUE(has(err, "is also an input")) << name << ": " << err;
+  }
+  {
+    OutputFiles out;  // output first, then the input
+    out.add(d / "hard.json");
+    EXPECT_THROW(out.protectInput(d / "scene.json"), OutputError);
+  }
+  OutputFiles out;
+  out.protectInput(d / "scene.json");
+  out.protectInput(d / "missing.json");  // ignored: reading it fails
+  out.write(d / "other.json", "x");
+  out.commit();
+  EXPECT_EQ(slurp(d / "scene.json"), "{}");
+  EXPECT_EQ(slurp(d / "other.json"), "x");
+}
+
+// Issue 29: every SIGKILL left a ".NAME.XXXXXX" temporary beside the output, never cleaned up.
+// A run killed outright cannot remove its temporaries, but its lock on them goes with it: the
+// next run writing the same destination removes them, and never one a live run holds.
+TEST(OutputFilesDeathTest, AKilledRunsTemporaryIsRemovedByTheNext) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  const fs::path d = freshDir("killed");
+  writeFileAtomic(d / "image.png", "good");
+  EXPECT_EXIT(
+      {
+        OutputFiles out;
+        out.write(d / "image.png", "half-writ");
+        ::raise(SIGKILL);
+      },
+      ::testing::KilledBySignal(SIGKILL), "");
+  ASSERT_EQ(entries(d), 2u) << "the killed run left no temporary (nothing to test)";
+  {
+    OutputFiles live;  // a run in progress on the same destination: its temporary is kept
+    live.write(d / "image.png", "in progress");
+    OutputFiles next;
+    next.write(d / "image.png", "next");  // removes the killed run's temporary only
+    EXPECT_EQ(entries(d), 3u);            // image.png, live's and next's temporaries
+    next.commit();
+  }
+  EXPECT_EQ(slurp(d / "image.png"), "next");
+  EXPECT_EQ(entries(d), 1u);
+  // An unrelated dot file with a similar name is not touched.
+  std::ofstream(d / ".image.png.backup", std::ios::binary) << "mine";
+  writeFileAtomic(d / "image.png", "again");
+  EXPECT_EQ(slurp(d / ".image.png.backup"), "mine");
 }
