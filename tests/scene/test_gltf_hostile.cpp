@@ -240,10 +240,10 @@ TEST(GltfHostile, NonFiniteValuesAreRejected) {
   std::string e = loadError(j, "translation.gltf");
   EXPECT_TRUE(has(e, "nodes[0].translation")) << e;
   j = quad();
-  j["nodes"][0]["scale"] = {1e30, 1e30, 1e30};  // finite, but the child's world matrix is not
-  j["nodes"][1]["scale"] = {1e30, 1e30, 1e30};
+  j["nodes"][0]["scale"] = {1e30, 1e30, 1e30};  // finite, but beyond the scene's range
+  j["nodes"][1]["scale"] = {1e30, 1e30, 1e30};  // (and the child's world matrix is not finite)
   e = loadError(j, "world.gltf");
-  EXPECT_TRUE(has(e, "nodes[1]") && has(e, "world transform")) << e;
+  EXPECT_TRUE(has(e, "nodes[0]") && has(e, "world scale beyond the scene's range")) << e;
   j = quad();
   j["materials"][0]["pbrMetallicRoughness"]["roughnessFactor"] = 1e300;
   e = loadError(j, "factor.gltf");
@@ -307,4 +307,50 @@ TEST(GltfHostile, DeepJsonIsRejected) {
   text += ",\"extras\":" + std::string(100000, '[') + std::string(100000, ']') + "}";
   const std::string e = loadError(text, "deepjson.gltf");
   EXPECT_TRUE(has(e, "max_json_depth")) << e;
+}
+
+// Issue 29: a 1e38 translation and an all-zero matrix were rejected with errors about
+// "/camera/...", a camera the user never wrote (the framing of the model's bounds), and a node
+// with scale 0 (valid glTF) was refused. Now: an out-of-range transform is reported at the node,
+// by index and name; a singular one (scale 0) hides the node's mesh, with one warning.
+TEST(GltfHostile, DegenerateNodeTransformsNamedOrLoaded) {
+  json j = quad();
+  j["nodes"][1]["name"] = "far away";
+  j["nodes"][1]["translation"] = {1e38, 0, 0};
+  std::string e = loadError(j, "far.gltf");
+  EXPECT_TRUE(has(e, "nodes[1] (\"far away\")") && has(e, "world translation beyond")) << e;
+
+  for (const bool matrix : {false, true}) {
+    j = quad();
+    if (matrix) {
+      j["nodes"][1]["matrix"] = std::vector<double>(16, 0.0);
+    } else {
+      j["nodes"][1]["scale"] = {0, 0, 0};
+    }
+    const fs::path p = tempDir() / (matrix ? "zero_matrix.gltf" : "scale0.gltf");
+    std::ofstream(p, std::ios::binary) << j.dump();
+    hv::Scene scene;
+    std::vector<std::string> warnings;
+    hv::GltfOptions opt;
+    opt.warnings = &warnings;
+    EXPECT_NO_THROW(hv::loadGltf(p.string(), glm::mat4(1.0f), scene, opt)) << p;
+    EXPECT_EQ(scene.objects.size(), 1u) << "nodes[1], of scale 0, has nothing to draw";
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_TRUE(has(warnings[0], "nodes[1]") && has(warnings[0], "singular transform"))
+        << warnings[0];
+  }
+  // Scale 0 on one axis of a third node: the other two still draw.
+  j = quad();
+  j["nodes"].push_back(j["nodes"][1]);
+  j["nodes"][0]["children"].push_back(2);
+  j["nodes"][2]["scale"] = {1, 0, 1};
+  const fs::path p = tempDir() / "flat.gltf";
+  std::ofstream(p, std::ios::binary) << j.dump();
+  hv::Scene scene;
+  std::vector<std::string> warnings;
+  hv::GltfOptions opt;
+  opt.warnings = &warnings;
+  hv::loadGltf(p.string(), glm::mat4(1.0f), scene, opt);
+  EXPECT_EQ(scene.objects.size(), 2u);
+  EXPECT_EQ(warnings.size(), 1u);
 }

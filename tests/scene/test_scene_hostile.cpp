@@ -3,12 +3,16 @@
 // override indices beyond size_t. Each must give a SceneError naming the file and the JSON path.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <tuple>
+#include <utility>
 
+#include "halfvec/scene/model_scene.hpp"
 #include "halfvec/scene/scene_loader.hpp"
 
 namespace {
@@ -157,4 +161,118 @@ TEST(SceneHostile, OverrideIndicesParsedStrictly) {
   e = loadError(scene, {"lights.+0.intensity=1"});
   EXPECT_TRUE(has(e, "not an array index")) << e;
   EXPECT_EQ(loadError(scene, {"lights.0.intensity=2", "lights.1={\"type\": \"sphere\"}"}), "");
+}
+
+namespace {
+
+fs::path hostileDir(const std::string& name) {
+  const fs::path d =
+      fs::temp_directory_path() / ("hv_scene_hostile_" + std::to_string(::getpid())) / name;
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+// The error of loading `path` both ways a scene file is read: loadScene (halfvec reference,
+// bench, trade) and openScene (halfvec render and view); "" when it loads.
+std::pair<std::string, std::string> fileErrors(const fs::path& path) {
+  std::pair<std::string, std::string> e;
+  try {
+    hv::loadScene(path.string());
+  } catch (const hv::SceneError& err) {
+    e.first = err.what();
+  }
+  try {
+    hv::openScene(path.string(), {});
+  } catch (const hv::SceneError& err) {
+    e.second = err.what();
+  }
+  return e;
+}
+
+}  // namespace
+
+// Issue 29: 100,000 nested '[' (195 KB) crashed with SIGSEGV; 50,000 too. Scene JSON nesting is
+// bounded as glTF's is (kMaxSceneJsonDepth), with the position of the first level too deep.
+TEST(SceneHostile, DeepNestingIsRejectedWithItsPosition) {
+  for (size_t depth : {size_t(65), size_t(50000), size_t(100000)}) {
+    const std::string text = std::string(depth, '[') + std::string(depth, ']');
+    const std::string e = loadError(text);
+    EXPECT_TRUE(has(e, "hostile.json: line 1, column 65: JSON nesting deeper than 64") &&
+                has(e, "kMaxSceneJsonDepth"))
+        << depth << ": " << e;
+  }
+  // 64 levels parse (and fail validation for what they are, not for their depth).
+  const std::string ok = "{\"description\": " + std::string(63, '[') + std::string(63, ']') + "}";
+  EXPECT_FALSE(has(loadError(ok), "nesting")) << loadError(ok);
+  // Brackets inside strings are not nesting.
+  EXPECT_EQ(loadError("{\"description\": \"" + std::string(1000, '[') + "\"}"), "");
+  const fs::path d = hostileDir("deep");
+  std::ofstream(d / "deep.json", std::ios::binary)
+      << std::string(100000, '[') << std::string(100000, ']');
+  const auto [loaded, opened] = fileErrors(d / "deep.json");
+  EXPECT_TRUE(has(loaded, "deep.json: line 1, column 65: JSON nesting")) << loaded;
+  EXPECT_TRUE(has(opened, "deep.json: line 1, column 65: JSON nesting")) << opened;
+}
+
+// Issue 29: `1e400` printed nlohmann's text without file or position when the scene was opened
+// by `halfvec render`. Both readers now say FILE: line L, column C.
+TEST(SceneHostile, ParseErrorsOfFilesNameFileLineAndColumn) {
+  const fs::path d = hostileDir("parse");
+  std::ofstream(d / "big.json", std::ios::binary) << "{\n  \"settings\": {\"exposure\": 1e400}\n}";
+  auto [loaded, opened] = fileErrors(d / "big.json");
+  for (const std::string& e : {loaded, opened}) {
+    EXPECT_TRUE(has(e, (d / "big.json").string() + ": line 2, column 28: invalid JSON") &&
+                has(e, "1e400"))
+        << e;
+  }
+  std::ofstream(d / "syntax.json", std::ios::binary) << "{\n  \"camera\": nope\n}";
+  std::tie(loaded, opened) = fileErrors(d / "syntax.json");
+  for (const std::string& e : {loaded, opened}) {
+    EXPECT_TRUE(has(e, (d / "syntax.json").string() + ": line 2, column ") &&
+                has(e, "invalid JSON: syntax error"))
+        << e;
+  }
+}
+
+// Issue 29: a symlink to /dev/zero grew past 3.9 GB; a FIFO hung; a directory reported "file not
+// found". Each is refused by what it is, at once.
+TEST(SceneHostile, SpecialFilesAsTheSceneAreRefused) {
+  const fs::path d = hostileDir("special");
+  fs::create_symlink("/dev/zero", d / "zero.json");
+  ASSERT_EQ(::mkfifo((d / "fifo.json").c_str(), 0600), 0);
+  fs::create_directory(d / "dir.json");
+  const struct {
+    const char* name;
+    const char* what;
+  } cases[] = {{"zero.json", "is a character device"},
+               {"fifo.json", "is a FIFO (named pipe)"},
+               {"dir.json", "is a directory"},
+               {"missing.json", "no such file"}};
+  for (const auto& c : cases) {
+    const auto [loaded, opened] = fileErrors(d / c.name);
+    EXPECT_TRUE(has(loaded, c.name) && has(loaded, c.what)) << loaded;
+    EXPECT_TRUE(has(opened, c.name) && has(opened, c.what)) << opened;
+  }
+  // A glTF object or HDR environment that names a directory says so.
+  fs::create_directory(d / "model.glb");
+  const std::string e =
+      loadError(R"({"objects": [{"gltf": ")" + (d / "model.glb").string() + "\"}]}");
+  EXPECT_TRUE(has(e, "/objects/0/gltf") && has(e, "is a directory")) << e;
+}
+
+// Issue 29: `exposure: 1e-6`, the documented minimum, was rejected ("expected a number in
+// [1e-06, 1e+06], got 1e-06"): the float nearest 1e-6 is below the double. Bounds compare as
+// floats; just past them is still refused.
+TEST(SceneHostile, DocumentedBoundsAreAccepted) {
+  const hv::Scene s = hv::loadSceneFromString(
+      R"({"settings": {"exposure": 1e-6}, "camera": {"near": 1e-6, "far": 1e9},
+          "lights": [{"type": "sphere", "radius": 1e-6, "intensity": 1e6}]})",
+      "bounds.json");
+  EXPECT_FLOAT_EQ(s.settings.exposure, 1e-6f);
+  EXPECT_FLOAT_EQ(s.lights[0].radius, 1e-6f);
+  EXPECT_TRUE(has(loadError(R"({"settings": {"exposure": 9.99e-7}})"), "/settings/exposure"));
+  EXPECT_TRUE(has(loadError(R"({"settings": {"exposure": 1.0001e6}})"), "/settings/exposure"));
+  EXPECT_EQ(loadError(R"({"objects": [{"primitive": "box", "half_extents": [1e-6, 1e6, 1]}]})"),
+            "");
 }

@@ -14,10 +14,12 @@
 
 #include "halfvec/scene/gltf_loader.hpp"
 
+#include "halfvec/core/input_file.hpp"
 #include "halfvec/core/png_bound.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -44,6 +46,24 @@ bool fitsIn(uint64_t offset, uint64_t length, uint64_t size) {
 
 std::string idx(const char* array, size_t i) {
   return std::string(array) + "[" + std::to_string(i) + "]";
+}
+
+// Scene coordinates and sizes (metres) stay within +-1e6, as in scene files (kBig there).
+constexpr float kMaxWorldExtent = 1e6f;
+
+std::string fmtFloat(float x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", double(x));
+  return buf;
+}
+
+bool allFinite(const glm::mat3& m) {
+  for (int c = 0; c < 3; ++c) {
+    for (int r = 0; r < 3; ++r) {
+      if (!std::isfinite(m[c][r])) return false;
+    }
+  }
+  return true;
 }
 
 // ---- checks on the raw bytes, before tinygltf parses them -------------------------------------
@@ -196,22 +216,13 @@ std::string expandNothing(const std::string& path, void*) {
 bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
                    void* user) {
   const auto* ctx = static_cast<const LoadContext*>(user);
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) {
-    *err += "not a regular file";
-    return false;
-  }
-  const uint64_t size = fs::file_size(path, ec);
-  if (ec || size > ctx->limits->max_file_bytes) {
-    *err += ec ? ec.message()
-               : std::to_string(size) + " bytes exceed the limit of " +
-                     std::to_string(ctx->limits->max_file_bytes) + " (GltfLimits::max_file_bytes)";
-    return false;
-  }
-  std::ifstream f(path, std::ios::binary);
-  out->resize(size_t(size));
-  if (!f.read(reinterpret_cast<char*>(out->data()), std::streamsize(size))) {
-    *err += "read error";
+  // A buffer or image URI may name a FIFO, a device or a directory: the same checks as the file.
+  try {
+    const std::string bytes =
+        readInputFile(path, ctx->limits->max_file_bytes, "GltfLimits::max_file_bytes");
+    out->assign(bytes.begin(), bytes.end());
+  } catch (const InputError& e) {
+    *err += e.reason;  // tinygltf names the file itself
     return false;
   }
   return true;
@@ -1030,13 +1041,37 @@ class Importer {
                       " levels (GltfLimits::max_node_depth)");
       }
       const tinygltf::Node& n = m_.nodes[size_t(ni)];
+      // Messages name the node by index and, when it has one, by name.
+      const std::string label = n.name.empty() ? el : el + " (\"" + n.name + "\")";
       const glm::mat4 world = parent_world * localMatrix(n, el);
       for (int k = 0; k < 16; ++k) {
         if (!std::isfinite(glm::value_ptr(world)[k])) {
-          fail(el, "world transform overflows (non-finite)");
+          fail(label, "world transform overflows (non-finite)");
         }
       }
-      if (n.mesh >= 0) {
+      // Scene coordinates stay within +-1e6 m (docs/scene-format.md "Bounded"): a node placed or
+      // scaled past that (a translation of 1e38) is reported here, not later by the camera
+      // framed around it.
+      for (int c = 0; c < 4; ++c) {
+        const glm::vec3 t = glm::abs(glm::vec3(world[3]));
+        const float extent = c < 3 ? glm::length(glm::vec3(world[c])) : std::max({t.x, t.y, t.z});
+        if (!(extent <= kMaxWorldExtent)) {
+          fail(label, std::string(c < 3 ? "world scale " : "world translation ") +
+                          "beyond the scene's range of +-1e6 m (" + (c < 3 ? "axis length " : "") +
+                          fmtFloat(extent) + ")");
+        }
+      }
+      // A singular transform (a scale of 0, an all-zero matrix: valid glTF, used to hide a node)
+      // draws nothing, and its normals have no inverse transpose: its meshes and cameras are
+      // skipped, the node and its children are still checked.
+      const bool singular = !(std::abs(glm::determinant(glm::mat3(world))) > 0.0f) ||
+                            !allFinite(glm::inverse(glm::mat3(world)));
+      if (singular && n.mesh >= 0 && !warned_singular_) {
+        warn(label + ": a singular transform (scale 0) hides its mesh; not drawn" +
+             std::string(" (nor any other mesh under a singular transform)"));
+        warned_singular_ = true;
+      }
+      if (n.mesh >= 0 && !singular) {
         if (size_t(n.mesh) >= m_.meshes.size()) {
           fail(el + ".mesh", "index " + std::to_string(n.mesh) + " out of range");
         }
@@ -1049,7 +1084,7 @@ class Importer {
           objects.push_back(std::move(o));
         }
       }
-      if (n.camera >= 0 && size_t(n.camera) < m_.cameras.size()) {
+      if (n.camera >= 0 && size_t(n.camera) < m_.cameras.size() && !singular) {
         addCamera(m_.cameras[size_t(n.camera)], world);
       }
       on_path[size_t(ni)] = true;
@@ -1094,6 +1129,7 @@ class Importer {
   const GltfOptions& opt_;
   const GltfLimits& lim_;
   int image_base_ = 0, material_base_ = 0, mesh_base_ = 0;
+  bool warned_singular_ = false;  // one warning per file
   uint64_t total_vertices_ = 0, total_triangles_ = 0;
   std::vector<uint64_t> mesh_triangles_;  // per glTF mesh, all imported primitives
   int default_material_ = -1;
@@ -1169,23 +1205,17 @@ void loadGltfFromMemory(const uint8_t* bytes, size_t size, bool binary, const st
 
 void loadGltf(const std::string& path, const glm::mat4& transform, Scene& scene,
               const GltfOptions& options) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) throw SceneError(path + ": file not found");
-  const uint64_t size = fs::file_size(path, ec);
-  if (ec) throw SceneError(path + ": cannot read: " + ec.message());
-  if (size > options.limits.max_file_bytes) {
-    throw SceneError(path + ": " + std::to_string(size) + " bytes exceed the limit of " +
-                     std::to_string(options.limits.max_file_bytes) +
-                     " (GltfLimits::max_file_bytes)");
+  std::string text;
+  try {
+    text = readInputFile(path, options.limits.max_file_bytes, "GltfLimits::max_file_bytes");
+  } catch (const InputError& e) {
+    throw SceneError(e.what());
   }
-  std::vector<uint8_t> bytes(static_cast<size_t>(size));
-  std::ifstream f(path, std::ios::binary);
-  if (!f.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size))) {
-    throw SceneError(path + ": cannot read");
-  }
+  const auto* bytes = reinterpret_cast<const uint8_t*>(text.data());
+  const size_t size = text.size();
   // A GLB is recognised by its magic, whatever the extension.
-  const bool binary = size >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
-  loadGltfFromMemory(bytes.data(), bytes.size(), binary, path, transform, scene, options);
+  const bool binary = size >= 4 && std::memcmp(bytes, "glTF", 4) == 0;
+  loadGltfFromMemory(bytes, size, binary, path, transform, scene, options);
 }
 
 }  // namespace hv

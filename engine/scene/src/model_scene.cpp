@@ -50,14 +50,6 @@ float fitDistance(const std::vector<glm::vec3>& pts, glm::vec3 target, const Bas
   return d;
 }
 
-std::string readText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneError(path + ": cannot open file");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // The model's geometry only (materials and images are not imported) and its cameras.
 Scene loadGeometry(const std::string& path, std::vector<GltfCamera>& cameras,
                    std::vector<std::string>* warnings) {
@@ -238,16 +230,23 @@ ojson sceneJsonFor(const std::string& path, const SceneOpenOptions& options,
                        ": --camera selects a glTF model's camera; a scene file has one "
                        "camera (edit its \"camera\")");
     }
-    const std::string text = readText(path);
+    // The same checks as loadScene: a regular file within kMaxSceneFileBytes, nesting bounded,
+    // parse errors with file, line and column.
+    const std::string text = readSceneFile(path);
+    const bool gltf_like = !text.empty() && (text.rfind("glTF", 0) == 0 ||
+                                             text.find("\"asset\"") != std::string::npos);
+    const std::string hint = gltf_like ? " (a glTF model? name it .gltf or .glb)" : "";
     try {
+      checkSceneJsonText(text, path);
       j = ojson::parse(text);
-    } catch (const ojson::parse_error& e) {
-      std::string hint;
-      if (!text.empty() &&
-          (text.rfind("glTF", 0) == 0 || text.find("\"asset\"") != std::string::npos)) {
-        hint = " (a glTF model? name it .gltf or .glb)";
+    } catch (const SceneError& e) {
+      throw SceneError(e.what() + hint);
+    } catch (const ojson::exception& e) {
+      try {
+        throwSceneJsonError(e, text, path);
+      } catch (const SceneError& named) {
+        throw SceneError(named.what() + hint);
       }
-      throw SceneError(path + ": invalid JSON: " + e.what() + hint);
     }
   }
   if (!options.environment_hdr.empty()) {

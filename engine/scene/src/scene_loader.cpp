@@ -17,6 +17,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "halfvec/core/input_file.hpp"
 #include "halfvec/core/suggest.hpp"
 #include "halfvec/scene/enums.hpp"
 #include "halfvec/scene/gltf_loader.hpp"
@@ -59,6 +60,22 @@ std::string fmt(double x) {
   return o.str();
 }
 
+// "" when `path` names a regular file (symlinks followed); else what it names, for a message
+// ("file not found: x.glb", "not a file: models is a directory").
+std::string notAFile(const std::string& path) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (fs::is_regular_file(st)) return "";
+  if (!fs::exists(st)) return "file not found: " + path;
+  const char* kind = fs::is_directory(st)        ? "a directory"
+                     : fs::is_character_file(st) ? "a character device"
+                     : fs::is_block_file(st)     ? "a block device"
+                     : fs::is_fifo(st)           ? "a FIFO (named pipe)"
+                     : fs::is_socket(st)         ? "a socket"
+                                                 : "not a regular file";
+  return "not a file: " + path + " is " + kind;
+}
+
 struct Range {
   double lo = -kInf, hi = kInf;
   bool lo_open = false;
@@ -70,6 +87,12 @@ struct Range {
   }
   bool contains(double x) const {
     return std::isfinite(x) && (lo_open ? x > lo : x >= lo) && x <= hi;
+  }
+  // The same for a value stored as a float, against the bounds as floats: 1e-6 written in a file
+  // becomes the float nearest 1e-6, which is below the double 1e-6 but is the documented minimum.
+  bool containsFloat(float f) const {
+    const float flo = float(lo), fhi = float(hi);
+    return std::isfinite(f) && (lo_open ? f > flo : f >= flo) && f <= fhi;
   }
 };
 // Every number is stored as a float, so every range is finite and a positive range starts at a
@@ -180,7 +203,7 @@ class Obj {
   static float floatAt(const Ctx& ctx, const json& v, const std::string& ptr, Range r) {
     const double d = numberAt(ctx, v, ptr, r);
     const float f = float(d);  // |d| <= kBig: representable
-    if (!r.contains(double(f))) ctx.fail(ptr, "expected " + r.describe() + ", got " + shortDump(v));
+    if (!r.containsFloat(f)) ctx.fail(ptr, "expected " + r.describe() + ", got " + shortDump(v));
     return f;
   }
   static glm::vec3 vec3At(const Ctx& ctx, const json& v, const std::string& ptr, Range r) {
@@ -191,7 +214,7 @@ class Obj {
     glm::vec3 out;
     for (int i = 0; i < 3; ++i) {
       if (!v[size_t(i)].is_number() || !r.contains(v[size_t(i)].get<double>()) ||
-          !r.contains(double(float(v[size_t(i)].get<double>())))) {
+          !r.containsFloat(float(v[size_t(i)].get<double>()))) {
         ctx.fail(ptr, "expected " + what + ", got " + shortDump(v));
       }
       out[i] = float(v[size_t(i)].get<double>());
@@ -415,13 +438,14 @@ Environment parseEnvironment(const Ctx& ctx, const json& j,
   if (e.kind == EnvironmentKind::HdrFile) {
     if (!o.has("path")) o.fail("path", "missing; type \"hdr\" needs the path of an .hdr file");
     e.path = ctx.resolve(o.at("path"), o.string("path", ""));
-    if (!fs::is_regular_file(e.path) && o.has("fallback")) {  // as a glTF object's fallback
-      sceneWarning(ctx.file + ": " + o.at("path") + ": file not found: " + e.path +
-                       "; using the fallback environment",
-                   ctx.warnings);
+    const std::string missing = notAFile(e.path);
+    if (!missing.empty() && o.has("fallback")) {  // as a glTF object's fallback
+      sceneWarning(
+          ctx.file + ": " + o.at("path") + ": " + missing + "; using the fallback environment",
+          ctx.warnings);
       return parseEnvironment(ctx, o["fallback"], o.at("fallback"));
     }
-    if (!fs::is_regular_file(e.path)) o.fail("path", "file not found: " + e.path);
+    if (!missing.empty()) o.fail("path", missing);
     if (o.has("fallback")) parseEnvironment(ctx, o["fallback"], o.at("fallback"));  // validated
   }
   e.color = o.vec3("color", e.color, kNonNeg);
@@ -695,7 +719,7 @@ class SceneBuilder {
     std::string path, missing;
     try {
       path = ctx_.resolve(o.at("gltf"), file);
-      if (!fs::is_regular_file(path)) missing = "file not found: " + path;
+      missing = notAFile(path);
     } catch (const SceneError& e) {
       if (!o.has("fallback")) throw;
       missing = e.what();
@@ -758,22 +782,62 @@ std::string jsonErrorText(const json::exception& e) {
   return m;
 }
 
-std::string readFile(const std::string& path) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) throw SceneError(path + ": cannot open file");
-  const uintmax_t size = fs::file_size(path, ec);
-  if (!ec && size > kMaxSceneFileBytes) {
-    throw SceneError(path + ": " + std::to_string(size) + " bytes exceed the limit of " +
-                     std::to_string(kMaxSceneFileBytes) + " for a scene file (kMaxSceneFileBytes)");
+}  // namespace
+
+std::string readSceneFile(const std::string& path) {
+  try {
+    return readInputFile(path, kMaxSceneFileBytes, "kMaxSceneFileBytes");
+  } catch (const InputError& e) {
+    throw SceneError(e.what());
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneError(path + ": cannot open file");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+}
+
+namespace {
+
+std::string positionPrefix(const std::string& source_name, std::string_view text, size_t offset) {
+  const TextPosition p = textPosition(text, offset);
+  return source_name + ": line " + std::to_string(p.line) + ", column " + std::to_string(p.column) +
+         ": ";
 }
 
 }  // namespace
+
+void checkSceneJsonText(std::string_view text, const std::string& source_name) {
+  // nlohmann's lexer ends the input at a NUL byte: whatever follows would be ignored silently.
+  if (const size_t nul = text.find('\0'); nul != std::string_view::npos) {
+    throw SceneError(positionPrefix(source_name, text, nul) + "invalid JSON: NUL byte at offset " +
+                     std::to_string(nul) + " (not a text file?)");
+  }
+  if (const size_t at = jsonNestingBeyond(text, kMaxSceneJsonDepth); at != std::string_view::npos) {
+    throw SceneError(positionPrefix(source_name, text, at) + "JSON nesting deeper than " +
+                     std::to_string(kMaxSceneJsonDepth) + " levels (kMaxSceneJsonDepth)");
+  }
+}
+
+void throwSceneJsonError(const json::exception& e, std::string_view text,
+                         const std::string& source_name) {
+  std::string m = jsonErrorText(e);
+  if (const auto* pe = dynamic_cast<const json::parse_error*>(&e)) {
+    // "parse error at line L, column C: syntax error ...": the position goes in front, in the
+    // loader's style. nlohmann's byte is 1-based, the character it stopped at.
+    if (const size_t colon = m.find(": "); m.rfind("parse error", 0) == 0 && colon != m.npos) {
+      m = m.substr(colon + 2);
+    }
+    throw SceneError(positionPrefix(source_name, text, pe->byte > 0 ? pe->byte - 1 : 0) +
+                     "invalid JSON: " + m);
+  }
+  // out_of_range 406, a number beyond double range (1e400): nlohmann gives the token but no
+  // position; the token's first occurrence in the text gives it.
+  const size_t q0 = m.find('\''), q1 = m.rfind('\'');
+  if (q0 != std::string::npos && q1 > q0 + 1) {
+    const size_t at = text.find(m.substr(q0 + 1, q1 - q0 - 1));
+    if (at != std::string_view::npos) {
+      throw SceneError(positionPrefix(source_name, text, at) + "invalid JSON: " + m +
+                       " (numbers must fit a double)");
+    }
+  }
+  throw SceneError(source_name + ": invalid JSON: " + m + " (numbers must fit a double)");
+}
 
 std::string expandEnvVars(const std::string& text) {
   std::string out;
@@ -896,35 +960,12 @@ Scene parseScene(const json& j, const std::string& source_name,
 Scene loadSceneFromString(std::string_view text, const std::string& source_name,
                           const std::vector<std::string>& overrides,
                           std::vector<std::string>* warnings) {
-  // nlohmann's lexer ends the input at a NUL byte: whatever follows would be ignored silently.
-  if (const size_t nul = text.find('\0'); nul != std::string_view::npos) {
-    throw SceneError(source_name + ": invalid JSON: NUL byte at offset " + std::to_string(nul) +
-                     " (not a text file?)");
-  }
+  checkSceneJsonText(text, source_name);
   json j;
   try {
     j = json::parse(text);
-  } catch (const json::parse_error& e) {  // its message gives line and column
-    throw SceneError(source_name + ": invalid JSON: " + jsonErrorText(e));
   } catch (const json::exception& e) {
-    // out_of_range 406, a number beyond double range (1e400): nlohmann gives the token but no
-    // position; the token's first occurrence in the text gives it.
-    std::string where;
-    const std::string m = e.what();
-    const size_t q0 = m.find('\''), q1 = m.rfind('\'');
-    if (q0 != std::string::npos && q1 > q0 + 1) {
-      const size_t at = text.find(m.substr(q0 + 1, q1 - q0 - 1));
-      if (at != std::string_view::npos) {
-        const size_t line_start = text.rfind('\n', at);
-        where =
-            " at line " +
-            std::to_string(1 + std::count(text.begin(), text.begin() + long(at), '\n')) +
-            ", column " +
-            std::to_string(at - (line_start == std::string_view::npos ? 0 : line_start + 1) + 1);
-      }
-    }
-    throw SceneError(source_name + ": invalid JSON" + where + ": " + jsonErrorText(e) +
-                     " (numbers must fit a double)");
+    throwSceneJsonError(e, text, source_name);
   }
   for (const std::string& o : overrides) applyOverride(j, o, source_name);
   return parseScene(j, source_name, warnings);
@@ -933,7 +974,7 @@ Scene loadSceneFromString(std::string_view text, const std::string& source_name,
 Scene loadScene(const std::string& path, const std::vector<std::string>& overrides,
                 std::vector<std::string>* warnings) {
   try {
-    return loadSceneFromString(readFile(path), path, overrides, warnings);
+    return loadSceneFromString(readSceneFile(path), path, overrides, warnings);
   } catch (const SceneError&) {
     throw;
   } catch (const std::bad_alloc&) {

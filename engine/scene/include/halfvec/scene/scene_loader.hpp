@@ -22,6 +22,21 @@ constexpr size_t kMaxSceneLights = size_t(1) << 20;
 constexpr size_t kMaxPrimitiveVertices = size_t(1) << 22;
 // Size of a scene file.
 constexpr size_t kMaxSceneFileBytes = size_t(64) << 20;
+// JSON nesting of a scene file, as GltfLimits::max_json_depth for glTF: the deepest valid scene
+// nests 5 levels ({"objects": [{"transform": {"matrix": [...]}}]}); nlohmann's printer and the
+// checks recurse per level, and 50,000 levels overflowed the stack.
+constexpr int kMaxSceneJsonDepth = 64;
+
+// Reads a scene file: a regular file (symlinks followed; a directory, FIFO or device is an error
+// saying what it is) of at most kMaxSceneFileBytes, reading no further. Throws SceneError.
+std::string readSceneFile(const std::string& path);
+
+// Checks scene JSON text before it is parsed (a NUL byte, nesting beyond kMaxSceneJsonDepth) and
+// turns a parser exception into a SceneError "FILE: line L, column C: invalid JSON: ...", the
+// position of a number beyond double range (1e400) included. For every reader of scene text.
+void checkSceneJsonText(std::string_view text, const std::string& source_name);
+[[noreturn]] void throwSceneJsonError(const nlohmann::json::exception& e, std::string_view text,
+                                      const std::string& source_name);
 
 // Loads the scene file at `path`. `overrides` are "json.path=value" strings applied to the JSON
 // before validation, e.g. "settings.width=640", "lights.0.intensity=5",
