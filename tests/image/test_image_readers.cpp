@@ -3,7 +3,11 @@
 // hostile headers: dimensions past kMaxImageSide, sizes the data cannot hold.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cstdio>
+#include <filesystem>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -173,4 +177,33 @@ TEST(ImageReaders, PfmDeclaredSizeMustFitTheData) {
   e = errorOf(
       [&] { hv::decodePfm(reinterpret_cast<const uint8_t*>(s.data()), s.size(), "huge.pfm"); });
   EXPECT_NE(e.find("bad header"), std::string::npos) << e;
+}
+
+// Issue 29: a directory or /dev/zero as an input reported "file not found" (and /dev/zero, read
+// through, would not end). Each image reader names what the path is, at once; a FIFO is not
+// waited on.
+TEST(ImageReaders, SpecialFilesAreNamedForWhatTheyAre) {
+  namespace fs = std::filesystem;
+  const fs::path d = fs::temp_directory_path() / ("hv_image_special_" + std::to_string(::getpid()));
+  fs::remove_all(d);
+  fs::create_directories(d / "dir.png");
+  fs::create_symlink("/dev/zero", d / "zero.pfm");
+  ASSERT_EQ(::mkfifo((d / "fifo.png").c_str(), 0600), 0);
+  auto error = [](auto&& read) {
+    try {
+      read();
+    } catch (const hv::ImageError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  std::string e = error([&] { hv::readPng((d / "dir.png").string()); });
+  EXPECT_NE(e.find("is a directory"), std::string::npos) << e;
+  e = error([&] { hv::readPfm((d / "zero.pfm").string()); });
+  EXPECT_NE(e.find("is a character device"), std::string::npos) << e;
+  e = error([&] { hv::readPng((d / "fifo.png").string()); });
+  EXPECT_NE(e.find("is a FIFO"), std::string::npos) << e;
+  e = error([&] { hv::readPng((d / "missing.png").string()); });
+  EXPECT_NE(e.find("no such file"), std::string::npos) << e;
+  fs::remove_all(d);
 }

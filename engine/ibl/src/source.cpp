@@ -10,6 +10,7 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include "halfvec/core/input_file.hpp"
 #include "halfvec/ibl/ibl.hpp"
 #include "halfvec/core/parallel.hpp"
 
@@ -170,20 +171,15 @@ ImageRGBf decodeHdr(const uint8_t* b, size_t size, const std::string& path, int 
 }
 
 ImageRGBf loadHdr(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) fail(path, "cannot open (missing file?)");
-  const uintmax_t size = std::filesystem::file_size(path, ec);
   // The largest file of the largest image: flat scanlines, 4 bytes per pixel, plus a header.
-  const uintmax_t max_size = uintmax_t(kMaxHdrWidth) * uintmax_t(kMaxHdrWidth / 2) * 4 + (1 << 20);
-  if (ec || size > max_size) {
-    fail(path, ec ? "cannot read: " + ec.message()
-                  : std::to_string(size) + " bytes, more than any " + std::to_string(kMaxHdrWidth) +
-                        "-pixel-wide image needs");
+  const uint64_t max_size = uint64_t(kMaxHdrWidth) * uint64_t(kMaxHdrWidth / 2) * 4 + (1 << 20);
+  std::string b;
+  try {
+    b = readInputFile(path, max_size, "the largest file a kMaxHdrWidth-wide image needs");
+  } catch (const InputError& e) {
+    fail(path, e.reason);
   }
-  std::ifstream f(path, std::ios::binary);
-  std::vector<uint8_t> b(static_cast<size_t>(size));
-  if (!f.read(reinterpret_cast<char*>(b.data()), std::streamsize(size))) fail(path, "cannot read");
-  return decodeHdr(b.data(), b.size(), path);
+  return decodeHdr(reinterpret_cast<const uint8_t*>(b.data()), b.size(), path);
 }
 
 glm::vec2 equirectUV(glm::vec3 d) {

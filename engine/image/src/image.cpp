@@ -1,5 +1,6 @@
 #include "halfvec/image/image.hpp"
 
+#include "halfvec/core/input_file.hpp"
 #include "halfvec/core/png_bound.hpp"
 
 #include <algorithm>
@@ -24,23 +25,13 @@ namespace {
 
 // The whole file, if it is a regular file of at most `max_bytes`.
 std::vector<uint8_t> readFileBytes(const std::string& path, const char* what, uint64_t max_bytes) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    throw ImageError(std::string(what) + " '" + path + "': cannot open (missing file?)");
+  try {
+    const std::string bytes =
+        readInputFile(path, max_bytes, "the largest file an accepted image needs");
+    return std::vector<uint8_t>(bytes.begin(), bytes.end());
+  } catch (const InputError& e) {
+    throw ImageError(std::string(what) + " '" + path + "': " + e.reason);
   }
-  const uint64_t size = std::filesystem::file_size(path, ec);
-  if (ec) throw ImageError(std::string(what) + " '" + path + "': cannot read: " + ec.message());
-  if (size > max_bytes) {
-    throw ImageError(std::string(what) + " '" + path + "': " + std::to_string(size) +
-                     " bytes, more than the largest image accepted needs (" +
-                     std::to_string(max_bytes) + ")");
-  }
-  std::ifstream f(path, std::ios::binary);
-  std::vector<uint8_t> bytes(static_cast<size_t>(size));
-  if (!f.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size))) {
-    throw ImageError(std::string(what) + " '" + path + "': cannot read");
-  }
-  return bytes;
 }
 
 void checkSize(const std::string& path, int w, int h, size_t have, size_t want, const char* what) {
