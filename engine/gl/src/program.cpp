@@ -1,5 +1,8 @@
 #include "halfvec/gl/program.hpp"
 
+#include <sched.h>
+#include <unistd.h>
+
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
@@ -210,6 +213,20 @@ void writeBinary(const fs::path& path, const BinaryKey& key, const BinaryBlob& b
   out.commit();
 }
 
+// What the driver's binaries depend on beyond its strings. llvmpipe (Mesa 22.3) keys its binary
+// format on the CPU capabilities it detected, which include the number of CPUs the process may
+// run on (its affinity mask): a binary saved by `halfvec render` was rejected by the same build
+// run under `taskset -c 0`, or wherever a scheduler gives a process another CPU set
+// (docs/hostile-input.md). The key holds both counts.
+std::string cpuKey() {
+  std::string k = "cpus " + std::to_string(::sysconf(_SC_NPROCESSORS_ONLN));
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (::sched_getaffinity(0, sizeof set, &set) == 0)
+    k += " affinity " + std::to_string(CPU_COUNT(&set));
+  return k;
+}
+
 std::string glString(GLenum e) {
   const auto* s = reinterpret_cast<const char*>(glGetString(e));
   return s ? s : "";
@@ -241,7 +258,8 @@ void ProgramCache::setBinaryCacheDir(const fs::path& dir) {
     glGetIntegerv(GL_NUM_PROGRAM_BINARY_FORMATS, &n);
     binary_formats_ = n;
     binary_supported_ = n > 0;
-    driver_ = glString(GL_VENDOR) + "|" + glString(GL_RENDERER) + "|" + glString(GL_VERSION);
+    driver_ = glString(GL_VENDOR) + "|" + glString(GL_RENDERER) + "|" + glString(GL_VERSION) + "|" +
+              cpuKey();
     binary_queried_ = true;
   }
 }
@@ -315,11 +333,13 @@ GLuint ProgramCache::get(const ProgramDesc& desc) {
         prog = std::move(p);
         ++hits_;
       } else {
-        log::warn("program binary cache: " + file.string() + " rejected by the driver (stale?); " +
-                  "compiling '" + desc.name + "'");
+        // Expected now and then (another driver build, or a key that misses what the driver
+        // checks): compiled again and the entry rewritten, silently (--verbose shows it).
+        log::debug("program binary cache: " + file.string() + " rejected by the driver; " +
+                   "compiling '" + desc.name + "' and replacing it");
       }
     } else if (why != "missing") {
-      log::warn("program binary cache: ignoring " + file.string() + " (" + why + ")");
+      log::debug("program binary cache: ignoring " + file.string() + " (" + why + ")");
     }
   }
   if (!prog) {
