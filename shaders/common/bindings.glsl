@@ -21,6 +21,10 @@
 #define HV_BINDING_TILE_INDICES 5
 #define HV_BINDING_TILE_TYPES 6   // per tile: (points, spheres) of its range, tubes follow
 #define HV_BINDING_CULL_BOUNDS 7  // culling: per tile, block and group, the surface AABB
+#define HV_BINDING_EMITTERS 0          // emitter culling: every sphere and tube light's instance
+#define HV_BINDING_VISIBLE_EMITTERS 1  // emitter culling: those that can cover a pixel, drawn
+#define HV_BINDING_EMITTER_DRAW 2      // emitter culling: the indirect draw, instances counted
+#define HV_BINDING_EMITTER_GROUPS 3    // emitter culling: per workgroup, counts then offsets
 // The tile index list starts with a header of this many uints (the first: the total entries).
 #define HV_TILE_LIST_HEADER_UINTS 4
 

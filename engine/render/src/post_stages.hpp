@@ -17,7 +17,10 @@ namespace hv::render {
 
 // Sphere and tube lights as capsules of their emitting radiance (shaders/passes/emitter.vert):
 // one instanced draw of a capsule template (a unit sphere split at its equator, the halves moved
-// apart along the axis by the tube's half length).
+// apart along the axis by the tube's half length), of the emitters that can cover a pixel
+// center (shaders/passes/emitter_cull.comp: an indirect draw whose instance count the GPU counts).
+constexpr size_t kEmitterLods = 4;  // EmitterPass's capsule templates, finest first
+
 class EmitterPass {
  public:
   EmitterPass();
@@ -30,10 +33,14 @@ class EmitterPass {
 
  private:
   gl::Buffer template_vertices_, template_indices_, instances_;
+  gl::Buffer visible_;  // the instances emitter_cull.comp keeps, grouped by template
+  gl::Buffer groups_;   // emitter_cull.comp's per-workgroup counts and offsets
+  gl::Buffer draw_;     // a DrawElementsIndirectCommand per template, counted by the culling
   gl::VertexArray vao_;
   gl::Framebuffer fbo_;
   GLuint fbo_hdr_ = 0, fbo_depth_ = 0;  // what fbo_ is built on
-  size_t index_count_ = 0, count_ = 0, capacity_ = 0;
+  size_t index_count_[kEmitterLods] = {}, first_index_[kEmitterLods] = {};
+  size_t count_ = 0, capacity_ = 0;
 };
 
 // The picked object: its visible pixels (its triangles drawn again, kept where their depth matches
