@@ -16,9 +16,11 @@
 
 #include "app/commands.hpp"
 #include "halfvec/core/suggest.hpp"
+#include "halfvec/gl/log.hpp"
 #include "halfvec/gl/shader_source.hpp"
 #include "halfvec/render/renderer.hpp"
 #include "halfvec/scene/model_scene.hpp"
+#include "halfvec/scene/scene_loader.hpp"
 #include "halfvec/scene/scene_writer.hpp"
 
 namespace hv::app {
@@ -43,6 +45,8 @@ Commands:
   ltc-fit               fit the LTC table of the ltc light modes -> engine/shading/src/ltc_table.cpp
 
 Run `halfvec <command> --help` for the options of each command.
+Any command also takes --verbose: debug messages (e.g. program binary cache entries the driver
+rejected and that were compiled again) go to stderr too.
 )";
 struct Command {
   std::string_view name;
@@ -212,13 +216,44 @@ int printScene(const std::string& path, const SceneOpenOptions& options) {
   return 0;
 }
 
+void protectSceneInputs(OutputFiles& outputs, const std::string& scene_path,
+                        const SceneOpenOptions& options, const Scene& scene) {
+  namespace fs = std::filesystem;
+  outputs.protectInput(scene_path);
+  if (!options.environment_hdr.empty()) outputs.protectInput(options.environment_hdr);
+  if (!scene.environment.path.empty()) outputs.protectInput(scene.environment.path);
+  if (isModelPath(scene_path)) return;
+  // The glTF files of a scene file's objects, resolved as the loader does (it has loaded them:
+  // the file is valid and its ${VAR}s are set).
+  try {
+    const nlohmann::json j = nlohmann::json::parse(readSceneFile(scene_path));
+    if (!j.contains("objects") || !j["objects"].is_array()) return;
+    const fs::path dir = fs::path(scene_path).parent_path();
+    for (const auto& o : j["objects"]) {
+      if (!o.is_object() || !o.contains("gltf") || !o["gltf"].is_string()) continue;
+      fs::path p(expandEnvVars(o["gltf"].get<std::string>()));
+      outputs.protectInput(p.is_relative() ? dir / p : p);
+    }
+  } catch (const std::exception&) {  // the loader accepted the file: nothing more to protect
+  }
+}
+
 int runCli(const std::vector<std::string>& args) {
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
     std::fputs(kHelp, stdout);
     return args.empty() ? 2 : 0;
   }
   const std::string cmd = args[0];
-  const Args rest(args.begin() + 1, args.end());
+  Args rest;
+  bool verbose = false;
+  for (size_t i = 1; i < args.size(); ++i) {
+    if (args[i] == "--verbose") {
+      verbose = true;
+    } else {
+      rest.push_back(args[i]);
+    }
+  }
+  log::setMinLevel(verbose ? log::Level::Debug : log::Level::Info);
   const Command* command = nullptr;
   for (const Command& c : kCommands) {
     if (c.name == cmd) command = &c;

@@ -139,7 +139,9 @@ int cmdCompare(const Args& args) {
       throw ImageError("cannot compare a PNG (display values) with a PFM (linear radiance): '" +
                        a.test + "' and '" + a.ref + "'");
     }
-    OutputFiles outputs;  // reserved first: an unwritable output fails before the work
+    OutputFiles outputs;           // reserved first: an unwritable output fails before the work
+    outputs.protectInput(a.test);  // --heatmap a.png over an input: refused
+    outputs.protectInput(a.ref);
     const auto heat_tmp = a.heatmap.empty() ? std::filesystem::path() : outputs.add(a.heatmap);
     const auto json_tmp = a.json.empty() ? std::filesystem::path() : outputs.add(a.json);
     const ImageRGBf test = readImage(a.test);

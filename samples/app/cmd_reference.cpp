@@ -112,6 +112,9 @@ int cmdReference(const Args& args) {
   // Every output reserved before the (long) reference render: an unwritable path fails now, and
   // nothing appears unless all were written.
   OutputFiles files;
+  SceneOpenOptions open;
+  open.overrides = overrides;
+  protectSceneInputs(files, scene_path, open, scene);  // --out scene.json: refused
   const std::filesystem::path hdr_tmp = hdr.empty() ? "" : files.add(hdr);
   const std::filesystem::path out_tmp = out.empty() ? "" : files.add(out);
   std::vector<std::filesystem::path> aov_tmp;

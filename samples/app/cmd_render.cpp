@@ -140,7 +140,8 @@ struct RenderOutputs {
   std::vector<std::filesystem::path> aov;  // kReferenceAovCount files when --aov is given
 };
 
-void reserveOutputs(const RenderArgs& ra, RenderOutputs& o) {
+void reserveOutputs(const RenderArgs& ra, const Scene& scene, RenderOutputs& o) {
+  protectSceneInputs(o.files, ra.scene, ra.open, scene);  // --out scene.json: refused
   const auto out_dir = std::filesystem::path(ra.out).parent_path();
   if (!out_dir.empty()) std::filesystem::create_directories(out_dir);
   o.out = o.files.add(ra.out);
@@ -268,7 +269,7 @@ int cmdRender(const Args& args) {
     ra.out = "out/" + std::filesystem::path(ra.scene).stem().string() + ".png";
   }
   RenderOutputs outputs;
-  reserveOutputs(ra, outputs);
+  reserveOutputs(ra, scene, outputs);
 
   auto ctx = createHeadlessContext();
   render::Renderer renderer;

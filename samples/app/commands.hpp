@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "halfvec/core/output_files.hpp"
 #include "halfvec/scene/model_scene.hpp"
 #include "halfvec/scene/scene.hpp"
 
@@ -74,5 +75,11 @@ std::string debugViewSuggestion(const std::string& typed);
 // --print-scene: writes to stdout the scene JSON `path` opens as (a model's synthesized scene,
 // --env applied; --set overrides are not applied to the printout), in the sample scenes' style.
 int printScene(const std::string& path, const SceneOpenOptions& options);
+
+// Declares every file a scene run reads as an input of `outputs` (OutputFiles::protectInput), so
+// that no output of the run can overwrite one: the scene file (or model), --env's HDR, the
+// scene's HDR environment and the glTF files its objects name. Call before adding outputs.
+void protectSceneInputs(OutputFiles& outputs, const std::string& scene_path,
+                        const SceneOpenOptions& options, const Scene& scene);
 
 }  // namespace hv::app
