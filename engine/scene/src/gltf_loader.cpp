@@ -774,7 +774,12 @@ class Importer {
       return it == p.attributes.end() ? -1 : it->second;
     };
     const int pos_acc = attr("POSITION");
-    if (pos_acc < 0) fail(el, "primitive has no POSITION attribute");
+    // glTF 2.0 (3.7.2.1): without positions a client "SHOULD skip primitive's rendering" (the
+    // Khronos validator accepts such a file, with a warning).
+    if (pos_acc < 0) {
+      warn(el + ": no POSITION attribute (nothing to draw); skipped");
+      return std::nullopt;
+    }
     // The vertex budget before any attribute is read (they may have no bufferView: zeros).
     const uint64_t pos_count = accessor(pos_acc, el + ".POSITION").count;
     if (pos_count > lim_.max_vertices - std::min(total_vertices_, lim_.max_vertices)) {
