@@ -7,16 +7,19 @@
 # low priority. Crashes go to out/fuzz/artifacts/TARGET; minimize one with
 #   build-fuzz/fuzz/fuzz_TARGET -minimize_crash=1 -runs=10000 CRASH
 # and commit the result under tests/fuzz/TARGET (the tests replay every file there).
-# Usage: bash scripts/fuzz.sh [--seconds N] [TARGET...]   (default: 1800 s, all five targets)
+# Usage: bash scripts/fuzz.sh [--seconds N] [--parallel] [TARGET...]
+#   (default: 1800 s, all five targets, one after the other; --parallel runs them all at once)
 # Exit 0 when no target found anything; 1 otherwise. Prints execs and coverage per target.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=1800
+parallel=0
 targets=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --seconds) seconds="$2"; shift 2 ;;
-    -h|--help) sed -n '2,12p' "$0"; exit 0 ;;
+    --parallel) parallel=1; shift ;;
+    -h|--help) sed -n '2,13p' "$0"; exit 0 ;;
     *) targets+=("$1"); shift ;;
   esac
 done
@@ -34,8 +37,8 @@ rm -rf "$seeds"
 python3 scripts/fuzz_seeds.py "$seeds" >&2
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=0
-status=0
-for t in "${targets[@]}"; do
+fuzz_target() {
+  local t=$1 status=0 corpus artifacts log marker started elapsed execs cov ft unit cpu
   corpus=out/fuzz/corpus/$t
   artifacts=out/fuzz/artifacts/$t
   mkdir -p "$corpus" "$artifacts" "$seeds/$t"
@@ -74,5 +77,21 @@ for t in "${targets[@]}"; do
   cov=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | cut -d' ' -f2)
   ft=$(grep -o 'ft: [0-9]*' "$log" | tail -1 | cut -d' ' -f2)
   echo "fuzz $t: ${execs:-?} execs in ${elapsed} s (asked ${seconds} s), coverage ${cov:-?} edges, ${ft:-?} features, corpus $(ls "$corpus" | wc -l) files"
-done
+  return $status
+}
+
+status=0
+if [ $parallel = 1 ]; then
+  pids=()
+  for t in "${targets[@]}"; do
+    fuzz_target "$t" > "out/fuzz/$t.summary" &
+    pids+=($!)
+  done
+  for i in "${!pids[@]}"; do
+    wait "${pids[$i]}" || status=1
+    cat "out/fuzz/${targets[$i]}.summary"
+  done
+else
+  for t in "${targets[@]}"; do fuzz_target "$t" || status=1; done
+fi
 exit $status
