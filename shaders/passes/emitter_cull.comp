@@ -1,7 +1,7 @@
 #version 450 core
 // Emitter culling (emitter_pass.cpp): keeps the sphere and tube lights whose capsule can cover a
 // pixel center and compacts them, in light order, into the visible list the indirect draws read
-// (grouped by capsule template, finest first), each template's count and first instance into its
+// (grouped by capsule template), each template's count and first instance into its
 // indirect draw.
 // A capsule is the convex hull of its two end spheres, so its image lies in the union of their
 // images' bounding boxes; an emitter whose box holds no pixel center (smaller than a pixel and
@@ -26,7 +26,9 @@ layout(std430, binding = HV_BINDING_VISIBLE_EMITTERS) writeonly buffer VisibleEm
   EmitterInstance visible[];
 };
 // One DrawElementsIndirectCommand (count, instanceCount, firstIndex, baseVertex, baseInstance)
-// per capsule template, finest first; stage 1 sets instanceCount and baseInstance.
+// per capsule template, coarsest first (draws[3 - k] for template k): emitters do not test each
+// other's depth, so where two overlap the one drawn last shows, and the larger on screen (the
+// finer template) is more often the nearer. Stage 1 sets instanceCount and baseInstance.
 struct DrawCommand {
   uint index_count;
   uint instance_count;
@@ -133,8 +135,8 @@ void main() {
   }
   uint first = 0u;
   for (uint k = 0u; k < 4u; ++k) {
-    draws[k].instance_count = total[k];
-    draws[k].base_instance = first;
+    draws[3u - k].instance_count = total[k];
+    draws[3u - k].base_instance = first;
     first += total[k];
   }
 #else
@@ -154,7 +156,7 @@ void main() {
   if (kind != 0u) {
     const uint k = kind - 1u;
     const uint at = group_counts[group][k] + s_scan[local][k] - 1u;
-    visible[draws[k].base_instance + at] = emitters[gl_GlobalInvocationID.x];
+    visible[draws[3u - k].base_instance + at] = emitters[gl_GlobalInvocationID.x];
   }
 #endif
 #endif

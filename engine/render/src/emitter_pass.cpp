@@ -151,7 +151,8 @@ void EmitterPass::run(gl::ProgramCache& programs, GLuint hdr, GLuint depth, int 
   // Culling: the emitters that can cover a pixel center, counted into the draw's instances.
   DrawCommand reset[kEmitterLods];
   for (size_t k = 0; k < kEmitterLods; ++k) {
-    reset[k] = {uint32_t(index_count_[k]), 0, uint32_t(first_index_[k]), 0, 0};
+    // Coarsest first (emitter_cull.comp): the finer, larger on screen, are drawn over them.
+    reset[kEmitterLods - 1 - k] = {uint32_t(index_count_[k]), 0, uint32_t(first_index_[k]), 0, 0};
   }
   glNamedBufferSubData(draw_.id(), 0, sizeof reset, reset);
   const GLuint groups = GLuint((count_ + kCullGroup - 1) / kCullGroup);
