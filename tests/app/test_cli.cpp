@@ -96,8 +96,8 @@ TEST(Cli, RendersDefaultSceneFiniteAndNotUniform) {
     EXPECT_EQ(p["reasons"].size(), defines) << p["program"];
   }
   EXPECT_EQ(names, (std::set<std::string>{"gbuffer", "light_cull_bounds", "light_cull_bin",
-                                          "light_cull_tiles", "light", "ambient", "emitters",
-                                          "tonemap", "fxaa"}));
+                                          "light_cull_tiles", "light", "ambient", "emitter_cull",
+                                          "emitters", "tonemap", "fxaa"}));
 }
 
 TEST(Cli, UberRendersTheSameImage) {

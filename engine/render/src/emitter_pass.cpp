@@ -161,7 +161,7 @@ void EmitterPass::run(gl::ProgramCache& programs, GLuint hdr, GLuint depth, int 
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_EMITTER_DRAW, draw_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_EMITTER_GROUPS, groups_.id());
   for (const char* stage : {"0", "1", "2"}) {  // count, scan, write (emitter_cull.comp)
-    const GLuint cull = programs.get({"emitter cull",
+    const GLuint cull = programs.get({"emitter_cull",
                                       {{GL_COMPUTE_SHADER, "passes/emitter_cull.comp"}},
                                       {{"HV_EMITTER_CULL_STAGE", stage}}});
     glUseProgram(cull);
