@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cfloat>
+#include <cmath>
 #include <charconv>
 #include <cstdio>
 #include <cstdlib>
@@ -144,6 +146,19 @@ double numberInRange(const std::string& option, const std::string& v, double lo,
     throw UsageError{option + buf + v + "'"};
   }
   return x;
+}
+
+float floatInRange(const std::string& option, const std::string& v, float lo, float hi) {
+  char* end = nullptr;
+  const double x = std::strtod(v.c_str(), &end);
+  const bool space = !v.empty() && std::isspace(static_cast<unsigned char>(v[0]));
+  const float f = std::isfinite(x) && std::abs(x) <= double(FLT_MAX) ? float(x) : NAN;
+  if (v.empty() || space || end != v.c_str() + v.size() || !(f >= lo && f <= hi)) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, " expects a number in [%g, %g], got '", double(lo), double(hi));
+    throw UsageError{option + buf + v + "'"};
+  }
+  return f;
 }
 
 std::string optionValue(const Args& args, size_t& i) {

@@ -167,8 +167,8 @@ BenchArgs parseBenchArgs(const Args& args) {
     } else if (a == "--lights") {
       b.only = positiveInt(a, value());
     } else if (a == "--range") {
-      b.only_range = static_cast<float>(std::atof(value().c_str()));
-      if (!(b.only_range > 0.0f)) throw UsageError{"--range expects a positive length in m"};
+      // A light range in metres, as a scene's (kPositive there): "2m" or 1e300 are refused.
+      b.only_range = floatInRange(a, value(), 1e-6f, 1e6f);
     } else if (a == "--quick") {
       b.quick = true;
     } else if (a == "--types") {

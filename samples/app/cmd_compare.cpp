@@ -1,5 +1,6 @@
 // `halfvec compare TEST REF`: error metrics of an image against a reference, and a pass/fail exit
 // status for regression tests (docs/testing.md).
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <cctype>
@@ -60,7 +61,7 @@ CompareArgs parse(const Args& args) {
     if (s == "--heatmap") {
       r.heatmap = value();
     } else if (s == "--heatmap-max") {
-      r.heatmap_max = float(parseTolerance(s, value()));
+      r.heatmap_max = floatInRange(s, value(), 0.0f, FLT_MAX);  // 1e300 would become inf
     } else if (s == "--json") {
       r.json = value();
     } else if (s == "--max-rel-rmse") {

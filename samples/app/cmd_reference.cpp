@@ -87,7 +87,7 @@ int cmdReference(const Args& args) {
     } else if (a == "--samples") {
       opt.samples = positiveInt(a, value());
     } else if (a == "--target-error") {
-      opt.target_rel_error = std::stof(value());
+      opt.target_rel_error = floatInRange(a, value(), 0.0f, 1e6f);  // 0: off
     } else if (a == "--threads") {
       opt.threads = intInRange(a, value(), 0, 4096);
     } else if (a == "--visibility") {

@@ -59,6 +59,9 @@ int positiveInt(const std::string& option, const std::string& v);  // 1..1,000,0
 // `v` as a number in [lo, hi] (hi may be infinity), the whole string (no leading space, not NaN);
 // else UsageError "<option> expects a number in [<lo>, <hi>], got '<v>'".
 double numberInRange(const std::string& option, const std::string& v, double lo, double hi);
+// The same for an option stored as a float: parsed as a double, converted, and the float compared
+// with the bounds as floats (so the bounds themselves are accepted and nothing becomes inf).
+float floatInRange(const std::string& option, const std::string& v, float lo, float hi);
 
 // A positional argument of a command that takes one scene file: stores it in `scene`; throws
 // UsageError for an unknown option (a leading '-') or a second scene file.
