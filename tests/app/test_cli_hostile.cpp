@@ -268,6 +268,30 @@ TEST(CliHostile, DeviceOutputsAreWrittenNotReplaced) {
       << "a temporary was left";
 }
 
+// Options stored as floats (issue 29): bounds compared as floats, nothing becomes inf; stof and
+// atof took "2x" and threw or truncated.
+TEST(CliHostile, FloatOptionsAreParsedAsFloats) {
+  std::string err;
+  const std::vector<std::vector<std::string>> floats = {
+      {"compare", "a.pfm", "b.pfm", "--heatmap-max"},
+      {"reference", scene(), "--target-error"},
+      {"bench", "--range"}};
+  for (const auto& c : floats) {
+    for (const char* bad : {"abc", "", "2x", "nan", "1e300", "-1", " 3"}) {
+      std::vector<std::string> args = c;
+      args.push_back(bad);
+      args.push_back("--zzzz-not-an-option");
+      EXPECT_EQ(run(args, &err), 2) << c.back() << " '" << bad << "'";
+      EXPECT_NE(err.find(c.back() + " expects a number in"), std::string::npos) << err;
+    }
+    std::vector<std::string> args = c;
+    args.push_back(c.back() == "--range" ? "1e-6" : "0");  // the bound itself is accepted
+    args.push_back("--zzzz-not-an-option");
+    EXPECT_EQ(run(args, &err), 2);
+    EXPECT_NE(err.find("unknown option"), std::string::npos) << c.back() << ": " << err;
+  }
+}
+
 namespace {
 
 // Runs `command` in a shell (the built halfvec program, a process of its own); returns its exit
