@@ -156,6 +156,7 @@ Light keyLight(const Bounds& bounds) {
   // Irradiance at the center under Karis's falloff 1/(d^2 + 1): I / (d^2 + 1).
   l.intensity = kKeyLightIrradiance * (dist * dist + 1.0f);
   l.range = 4.0f * dist;
+  l.shadows = true;  // the model shadows itself (docs/scene-format.md)
   return l;
 }
 
@@ -214,7 +215,8 @@ ojson modelSceneJson(const std::string& model_path, int camera,
                                     {"color", vec3Json(key.color)},
                                     {"intensity", key.intensity},
                                     {"radius", key.radius},
-                                    {"range", key.range}}});
+                                    {"range", key.range},
+                                    {"shadows", key.shadows}}});
   j["environment"] = ojson{{"type", "sky"}};
   return j;
 }

@@ -342,7 +342,8 @@ Light parseLight(const Ctx& ctx, const json& j, const std::string& ptr) {
     if (!j.is_object()) ctx.fail(ptr, "expected an object, got " + shortDump(j));
     ctx.fail(ptr + "/type", "missing; expected one of " + enumNamesJoined<LightType>());
   }
-  std::vector<std::string_view> keys = {"type", "position", "color", "intensity", "range"};
+  std::vector<std::string_view> keys = {"type",      "position", "color",
+                                        "intensity", "range",    "shadows"};
   if (*type != LightType::Point) keys.push_back("radius");
   if (*type == LightType::Tube) keys.insert(keys.end(), {"length", "axis"});
   Obj o(ctx, j, ptr, keys);
@@ -352,6 +353,7 @@ Light parseLight(const Ctx& ctx, const json& j, const std::string& ptr) {
   l.color = o.vec3("color", l.color, kNonNeg);
   l.intensity = o.num("intensity", l.intensity, kNonNeg);
   l.range = o.num("range", l.range, kPositive);
+  l.shadows = o.boolean("shadows", l.shadows);
   if (l.type == LightType::Sphere) l.radius = o.num("radius", 0.1f, kPositive);
   if (l.type == LightType::Tube) {
     l.radius = o.num("radius", 0.05f, kNonNeg);

@@ -339,6 +339,7 @@ ojson lightJson(const Light& l) {
     j["axis"] = vec3(l.axis);
   }
   j["range"] = l.range;
+  if (l.shadows) j["shadows"] = true;
   return j;
 }
 
@@ -402,6 +403,7 @@ void lightEdits(const nlohmann::json& file, const Scene& loaded, const Scene& ed
       c.field(p + "/axis", a.axis, b.axis, vec3(b.axis));
     }
     c.field(p + "/range", a.range, b.range, b.range);
+    c.field(p + "/shadows", a.shadows, b.shadows, b.shadows);
   }
 }
 

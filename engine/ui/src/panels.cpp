@@ -34,7 +34,7 @@ bool sameMaterial(const Material& a, const Material& b) {
 bool sameLight(const Light& a, const Light& b) {
   return a.type == b.type && a.position == b.position && a.color == b.color &&
          a.intensity == b.intensity && a.radius == b.radius && a.length == b.length &&
-         a.axis == b.axis && a.range == b.range;
+         a.axis == b.axis && a.range == b.range && a.shadows == b.shadows;
 }
 
 }  // namespace
@@ -264,6 +264,7 @@ HV_LIGHT_SETTER(setAxis, glm::vec3 a,
                 l->axis = glm::length(finiteOr(a, glm::vec3(0))) > 1e-6f ? glm::normalize(a)
                                                                          : before.axis)
 HV_LIGHT_SETTER(setRange, float v, l->range = std::isfinite(v) ? std::max(v, 0.01f) : before.range)
+HV_LIGHT_SETTER(setShadows, bool on, l->shadows = on)
 #undef HV_LIGHT_SETTER
 
 // ---------------------------------------------------------------------------------------------

@@ -113,6 +113,8 @@ struct Light {
   float length = 0.0f;      // tube segment length
   glm::vec3 axis{1.0f, 0.0f, 0.0f};  // tube segment direction (normalized on load)
   float range = 10.0f;  // falloff window radius R of Karis eq. 9; also the culling bound
+  // Casts shadows: an omnidirectional shadow map (docs/lights.md, "Shadows").
+  bool shadows = false;
 };
 
 enum class EnvironmentKind : uint8_t { None, Uniform, Sky, HdrFile };

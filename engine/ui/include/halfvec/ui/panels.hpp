@@ -115,6 +115,7 @@ class LightsPanelModel {
   bool setLength(float v);
   bool setAxis(glm::vec3 a);
   bool setRange(float v);
+  bool setShadows(bool on);  // the light casts shadows (a shadow map)
 
   bool takeDirty() {
     const bool d = dirty_;
