@@ -43,6 +43,10 @@
 #define HV_UNIT_RADIANCE 5
 #define HV_UNIT_ENV_BRDF 6
 #define HV_UNIT_IRRADIANCE 7
+// Light pass with shadowed lights: the shadow atlas (a depth cube map array) twice, raw distances
+// and with depth comparison (shaders/common/shadows.glsl, engine/render/src/shadow_pass.cpp).
+#define HV_UNIT_SHADOW_DEPTH 8
+#define HV_UNIT_SHADOW_COMPARE 9
 // Tone map: the HDR target.
 #define HV_UNIT_HDR 0
 // G-buffer pass: a material's textures on units HV_UNIT_MATERIAL_TEXTURES + 0..4 (base color,
@@ -58,6 +62,8 @@
 #define HV_LOC_MODEL 0          // gbuffer.vert: object to world
 #define HV_LOC_NORMAL_MATRIX 1  // gbuffer.vert: inverse transpose of the model matrix
 #define HV_LOC_CULL_BATCH 0     // light_cull.comp: lights [x, y), mask words per group
+#define HV_LOC_SHADOW_VIEW_PROJ 3  // shadow.vert: the cube face's view-projection
+#define HV_LOC_SHADOW_LIGHT 4      // shadow.frag: light center, 1 / far
 
 // ---- FrameBlock::counts.w bits (hv::render::FrameFlag), set for the per-term debug views -------
 #define HV_FRAME_NO_BACKGROUND 1u  // background pixels stay black (ambient.comp)

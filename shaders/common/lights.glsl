@@ -26,6 +26,7 @@
 //  HV_HAS_POINT_LIGHTS / HV_HAS_SPHERE_LIGHTS / HV_HAS_TUBE_LIGHTS 1|0: compile that light type
 //  HV_DIRECT_TERMS 3|1|2|0      bit 1 diffuse, bit 2 specular: the terms shadeLight returns (the
 //                               others are 0); for per-term images (`halfvec render --aov`)
+//  HV_SHADOWS, HV_SHADOW_FILTER, HV_SHADOW_MAP_SIZE: shadows.glsl (lightShadow below)
 #ifndef HV_LIGHTS_GLSL
 #define HV_LIGHTS_GLSL
 
@@ -33,6 +34,7 @@
 #include "brdf.glsl"
 #include "ltc.glsl"
 #include "setting_values.glsl"
+#include "shadows.glsl"
 
 #ifndef HV_FALLOFF_PLUS_ONE
 #define HV_FALLOFF_PLUS_ONE 1
@@ -87,7 +89,9 @@
 //  position_radius: x,y,z world position (tube: segment center), w sphere/capsule radius (m)
 //  color_inv_range: rgb linear color premultiplied by intensity I (W/sr), w 1/R (eq. 9 window)
 //  axis_length:     x,y,z unit tube axis, w tube segment length (m); 0 for point and sphere
-//  params:          x range R (Karis eq. 9 window), y type (0/1/2), z culling radius, w 0
+//  params:          x range R (Karis eq. 9 window), y type (0/1/2), z culling radius, w the
+//                   light's cube in the shadow atlas + 1 (0: no shadow map; written by the shadow
+//                   pass, engine/render/src/shadow_pass.cpp)
 // Points and spheres read only the first two vec4 in the light pass, tubes three.
 struct GpuLight {
   vec4 position_radius;
@@ -520,5 +524,15 @@ vec3 evaluateLight(GpuLight light, Surface s, vec3 P, vec3 V) {
 // nearest emitting point): R for points and spheres, R + len/2 for tubes. Precomputed by
 // packLight; for tiled culling.
 float lightCullRadius(GpuLight light) { return light.params.z; }
+
+#if HV_SHADOWS && !defined(HV_CPP)
+// The shadow of light l at the shading point (shadows.glsl): its map is cube params.w - 1 of the
+// atlas, distances over the culling radius; the emitter's radius, axis and length size PCSS's
+// penumbra. Multiplies the light's whole contribution, diffuse and specular (light_shade.comp).
+float lightShadow(GpuLight l, Surface s, ShadingPoint sp) {
+  return shadowVisibility(vec3(l.position_radius), lightCullRadius(l), l.params.w - 1.0f,
+                          l.position_radius.w, vec3(l.axis_length), l.axis_length.w, sp.P, s.N);
+}
+#endif
 
 #endif

@@ -81,6 +81,12 @@ vec3 probeLight(GpuLight l) { return l.color_inv_range.rgb * step(0.0, l.positio
 #define HV_EVAL_POINT(l, j) probeLight(l)
 #define HV_EVAL_SPHERE(l, j) probeLight(l)
 #define HV_EVAL_TUBE(l, j) (probeLight(l) * step(0.0, l.axis_length.w))
+#elif HV_SHADOWS
+// Shadowed lights (shadows.glsl): each light's radiance times its visibility; a light without a
+// map (params.w = 0) costs the test only.
+#define HV_EVAL_POINT(l, j) (evaluatePointLightAt(l, s[j], sp[j]) * lightShadow(l, s[j], sp[j]))
+#define HV_EVAL_SPHERE(l, j) (evaluateSphereLightAt(l, s[j], sp[j]) * lightShadow(l, s[j], sp[j]))
+#define HV_EVAL_TUBE(l, j) (evaluateTubeLightAt(l, s[j], sp[j]) * lightShadow(l, s[j], sp[j]))
 #else
 #define HV_EVAL_POINT(l, j) evaluatePointLightAt(l, s[j], sp[j])
 #define HV_EVAL_SPHERE(l, j) evaluateSphereLightAt(l, s[j], sp[j])
@@ -130,7 +136,12 @@ void main() {
   uint n = u_counts.x;
   for (uint i = 0u; i < n; ++i) {
     GpuLight l = lights[i];
+#if HV_SHADOWS
+    for (int j = 0; j < HV_LIGHT_PIXELS; ++j)
+      sum[j] += evaluateLightAt(l, s[j], sp[j]) * lightShadow(l, s[j], sp[j]);
+#else
     for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += evaluateLightAt(l, s[j], sp[j]);
+#endif
   }
 #else
   uint tile = tileRow() * u_viewport.z + gl_WorkGroupID.x;  // tileRow() < tiles y: a pixel is lit

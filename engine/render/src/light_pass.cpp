@@ -6,6 +6,7 @@
 #include "ltc_textures.hpp"
 #include "passes.hpp"
 #include "pipeline_state.hpp"
+#include "shadow_pass.hpp"
 
 namespace hv::render {
 
@@ -57,10 +58,12 @@ void LightPass::run(const PassContext& ctx, const FrameBlock& frame, const Input
     if (!ltc_) ltc_ = std::make_unique<LtcTextures>();
     ltc_->bind();
   }
+  if (in.shadows) in.shadows->bind();
   glDispatchCompute(frame.viewport.z, (frame.viewport.w + kLightGroupTiles - 1) / kLightGroupTiles,
                     1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   if (in.ltc) LtcTextures::unbind();
+  if (in.shadows) ShadowMaps::unbind();
   unbindGBuffer();
   if (use_textures) {
     glBindTextureUnit(HV_UNIT_LIGHT_TEXELS, 0);

@@ -24,6 +24,8 @@
 
 namespace hv::render {
 
+class ShadowMaps;  // shadow_pass.hpp
+
 // What every pass runs with: the program cache, the frame's timer (each pass is one timed,
 // named scope) and the samplers the compute passes share.
 struct PassContext {
@@ -117,6 +119,7 @@ class LightPass {
     LightPassProbe probe = LightPassProbe::Shade;
     size_t texel_limit = 0;  // DebugOptions::light_texel_limit
     bool ltc = false;        // the program reads the LTC table (Renderer::lightPassNeedsLtc)
+    const ShadowMaps* shadows = nullptr;  // the shadow atlas, when the program has shadows
   };
   // Adds the direct light of every lit pixel into `hdr` (RGBA16F image).
   void run(const PassContext& ctx, const FrameBlock& frame, const Input& in, GLuint hdr);

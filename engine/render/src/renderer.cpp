@@ -84,6 +84,7 @@ void Renderer::setScene(const Scene& scene) {
   ++lights_version_;
   gpu_ = std::make_unique<GpuScene>(scene);
   passes_->environment = std::make_unique<GpuEnvironment>(scene);
+  passes_->shadows.invalidate();  // other casters
   refreshVariants();
 }
 
@@ -204,6 +205,11 @@ FrameStats Renderer::render(int width, int height, DebugView view,
   const PassContext ctx{programs_, timer_, nearest_.id()};
   const GBufferView gbuffer = t.gbufferView();
 
+  // Shadow maps of the shadowed lights (cached until a light or a caster changes).
+  ShadowMaps::Stats shadow_stats;
+  if (key_.shadows) {
+    shadow_stats = p.shadows.run(ctx, {*scene_, *gpu_, kDefaultShadowMapSize, lights_version_});
+  }
   runGBufferPass(ctx,
                  {*scene_, *gpu_, key_, gbuffer_descs_, draw_order_,
                   (frame.block.counts.w & kFrameNoEmissive) == 0},
@@ -225,7 +231,8 @@ FrameStats Renderer::render(int width, int height, DebugView view,
       lightingDefines(),
       debug_.light_probe,
       debug_.light_texel_limit,
-      lightPassNeedsLtc()};
+      lightPassNeedsLtc(),
+      key_.shadows ? &p.shadows : nullptr};
   p.light.run(ctx, frame.block, light, t.hdr.id());
   // Without an environment the ambient pass would add nothing: the background is black, the HDR
   // target's clear value (docs/performance.md "Passes of the frame").
@@ -260,6 +267,8 @@ FrameStats Renderer::render(int width, int height, DebugView view,
     tile_entries_ = total;
   }
   stats.tile_light_entries = tile_entries_;
+  stats.shadow_maps = shadow_stats.maps;
+  stats.shadow_maps_rendered = shadow_stats.rendered;
   return stats;
 }
 

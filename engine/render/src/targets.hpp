@@ -4,6 +4,7 @@
 #include "halfvec/gl/objects.hpp"
 #include "halfvec/render/renderer.hpp"
 #include "passes.hpp"
+#include "shadow_pass.hpp"
 
 namespace hv::render {
 
@@ -27,6 +28,7 @@ struct Renderer::Targets {
 struct Renderer::Passes {
   LightCulling culling;
   LightPass light;
+  ShadowMaps shadows;
   std::unique_ptr<GpuEnvironment> environment;
 };
 

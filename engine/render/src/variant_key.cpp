@@ -4,6 +4,7 @@
 #include <map>
 #include <type_traits>
 
+#include "halfvec/render/shadows.hpp"
 #include "halfvec/scene/enums.hpp"
 #include "halfvec/shading/brdf.hpp"
 
@@ -191,7 +192,7 @@ std::string VariantKey::text() const {
          (models.empty() ? std::string("none") : models) + "; environment " +
          std::string(toString(environment)) + "; " + std::to_string(material_variants.size()) +
          " material variant" + (material_variants.size() == 1 ? "" : "s") + "; " +
-         (uber ? "uber" : "specialized");
+         (uber ? "uber" : "specialized") + (shadows ? "; shadows" : "");
 }
 
 VariantKey deriveVariantKey(const Scene& scene) {
@@ -201,6 +202,7 @@ VariantKey deriveVariantKey(const Scene& scene) {
     k.point_lights |= l.type == LightType::Point;
     k.sphere_lights |= l.type == LightType::Sphere;
     k.tube_lights |= l.type == LightType::Tube;
+    k.shadows |= l.shadows;
   }
   k.environment = scene.environment.kind;
   // Only materials that are drawn count.
@@ -373,6 +375,20 @@ std::vector<KeyDefine> settingKeyDefines(const VariantKey& k, const Scene& scene
   return out;
 }
 
+// Why the light programs have shadow code or none: the shadowed lights, named.
+std::string shadowsWhy(const Scene& scene) {
+  std::vector<size_t> on;
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    if (scene.lights[i].shadows) on.push_back(i);
+  }
+  if (on.empty()) return "no light has shadows: true (no shadow maps, no shadow lookup)";
+  std::string t = std::to_string(on.size()) + " shadowed light" + (on.size() == 1 ? "" : "s");
+  for (size_t i = 0; i < on.size() && i < 4; ++i)
+    t += (i ? ", " : " (") + describeLight(scene.lights, on[i]);
+  if (on.size() > 4) t += " and " + std::to_string(on.size() - 4) + " more";
+  return t + ")";
+}
+
 }  // namespace
 
 std::vector<KeyDefine> gbufferDefines(const VariantKey& k, size_t variant, const Scene& scene) {
@@ -425,6 +441,7 @@ std::vector<KeyDefine> lightDefines(const VariantKey& k, const Scene& scene) {
     if (k.uber) w = "uber build (" + w + ")";
     out.push_back({t.define, flag(t.on), w});
   }
+  out.push_back({"HV_SHADOWS", flag(k.shadows), shadowsWhy(scene)});
   return out;
 }
 

@@ -63,7 +63,9 @@ struct FrameStats {
   std::vector<std::pair<std::string, double>> passes;  // GPU ms per pass, in order
   double total_ms = 0.0;
   int width = 0, height = 0;
-  size_t tile_light_entries = 0;  // sum over tiles of lights in the tile's list
+  size_t tile_light_entries = 0;    // sum over tiles of lights in the tile's list
+  size_t shadow_maps = 0;           // shadowed lights with a map in the atlas
+  size_t shadow_maps_rendered = 0;  // of them, rendered this frame (the others were cached)
 };
 
 // What was compiled for the scene and why (docs/variants.md): `render --stats` and the viewer's

@@ -54,6 +54,9 @@ struct VariantKey {
   // possible, so it has no flag: the ambient pass always writes it.
   bool unlit = false, default_lit = false;
   EnvironmentKind environment = EnvironmentKind::None;
+  // A light casts shadows (Light::shadows): the light programs contain the shadow lookup
+  // (shaders/common/shadows.glsl) and the frame starts with the shadow-map pass.
+  bool shadows = false;
   // The distinct feature sets, one G-buffer program each, and each material's index into it.
   std::vector<MaterialFeatures> material_variants;
   std::vector<int> material_variant;

@@ -1,0 +1,38 @@
+// Shadow maps, the CPU side (docs/lights.md, "Shadows"): the atlas budget and which lights get a
+// map. A light with `shadows: true` gets an omnidirectional map (six cube faces of linear
+// distance) in one depth cube map array, the atlas, of settings.shadow_map_size texels a side;
+// the atlas holds shadowAtlasCapacity(size) lights, the first shadowed lights in scene order, and
+// the lights beyond it render unshadowed (the renderer warns, naming them). No GL here.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "halfvec/scene/scene.hpp"
+
+namespace hv::render {
+
+// Texels a side of a cube face.
+constexpr int kDefaultShadowMapSize = 1024;
+// The atlas budget, texels: six faces of 2048^2, 96 MiB at 32-bit depth (docs/lights.md).
+constexpr size_t kShadowAtlasTexels = size_t(6) * 2048 * 2048;
+// Lights the atlas holds at this face size (at least 1): 16 at 512, 4 at 1024, 1 at 2048.
+size_t shadowAtlasCapacity(int map_size);
+
+struct ShadowAssignment {
+  std::vector<int> layer;           // per light: its cube in the atlas, -1 for none
+  std::vector<size_t> maps;         // the lights with a map, in cube order
+  std::vector<size_t> over_budget;  // shadowed lights beyond the atlas, unshadowed
+};
+// The first `capacity` lights with shadows get cubes 0, 1, ... in scene order.
+ShadowAssignment assignShadowMaps(const std::vector<Light>& lights, size_t capacity);
+
+// The warning for the lights beyond the atlas ("" when none), naming them.
+std::string overBudgetWarning(const std::vector<Light>& lights, const ShadowAssignment& a,
+                              int map_size);
+
+// "light 3 (sphere at [1, 2.5, 0])": how warnings name a light (lights have no names).
+std::string describeLight(const std::vector<Light>& lights, size_t index);
+
+}  // namespace hv::render

@@ -1,0 +1,68 @@
+// The shadow-map pass (private to engine/render): renders the omnidirectional maps of the
+// shadowed lights into the atlas (halfvec/render/shadows.hpp) when a light or a caster changed,
+// keeps them otherwise, and tells the light pass where each light's map is (GpuLight.params.w).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "halfvec/gl/objects.hpp"
+#include "halfvec/render/gpu_scene.hpp"
+#include "halfvec/render/shadows.hpp"
+#include "halfvec/scene/scene.hpp"
+
+namespace hv::render {
+
+struct PassContext;
+
+// hv::log::warn (shadow_maps.cpp: halfvec/gl/log.hpp's namespace `log` hides the GLSL log() of
+// the shading headers included here).
+void logShadowWarning(const std::string& message);
+
+class ShadowMaps {
+ public:
+  struct Input {
+    const Scene& scene;
+    const GpuScene& gpu;
+    int map_size = 1024;        // settings.shadow_map_size
+    size_t lights_version = 0;  // changes whenever GpuScene::updateLights re-uploaded the lights
+  };
+  struct Stats {
+    size_t maps = 0;      // lights with a map this frame
+    size_t rendered = 0;  // of them, re-rendered this frame (the others were cached)
+    std::vector<size_t> over_budget;
+  };
+  // Assigns the cubes, writes each light's params.w (cube + 1, 0 = none) into the GPU light
+  // buffer, and renders the cubes whose light or casters changed since they were last rendered.
+  Stats run(const PassContext& ctx, const Input& in);
+  // Forgets every cube (a new scene: other casters).
+  void invalidate() { cubes_.clear(); }
+  // Binds the atlas on HV_UNIT_SHADOW_DEPTH (raw distances) and HV_UNIT_SHADOW_COMPARE (depth
+  // comparison) for the light pass; unbind releases both units.
+  void bind() const;
+  static void unbind();
+
+ private:
+  // What a cube was rendered from: the light's shape and place, and the casters.
+  struct CubeKey {
+    std::array<float, 9> light{};  // position, radius, axis, length, far
+    uint64_t casters = 0;          // hash of the object transforms
+    int size = 0;
+    bool operator==(const CubeKey&) const = default;
+  };
+  void ensureAtlas(int size, size_t cubes);
+  void renderCube(const Input& in, size_t cube, const Light& light, float far);
+  gl::Texture atlas_;
+  gl::Framebuffer fbo_;
+  gl::Sampler raw_, compare_;
+  int size_ = 0;
+  size_t layers_ = 0;             // cubes the atlas has room for
+  std::vector<CubeKey> cubes_;    // per cube: what it holds (size 0: nothing)
+  std::vector<float> written_w_;  // per light: the params.w last written
+  const GpuScene* written_for_ = nullptr;
+  size_t written_version_ = 0;
+  std::string warned_;  // the last over-budget warning, not repeated every frame
+};
+
+}  // namespace hv::render

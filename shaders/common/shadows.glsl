@@ -1,0 +1,184 @@
+// Shadows of point, sphere and tube lights from omnidirectional shadow maps (docs/lights.md,
+// "Shadows"): one cube map of linear distance per shadowed light, the cube faces of all of them
+// layers of one depth cube map array (the atlas, engine/render/src/shadow_pass.cpp). The geometry
+// of the filters (texel angle, Fernando's penumbra, the emitter's extent, the taps, the receiver
+// plane) is shared by GLSL and C++ (halfvec/shading/glsl.hpp); the lookups are GLSL only.
+//
+// Defines (the C++ side sets them from the scene, render/src/variant_key.cpp lightDefines):
+//  HV_SHADOWS 0|1             compile the lookup (a scene without shadowed lights has none)
+//  HV_SHADOW_FILTER 2|1|0     2 = PCSS (Fernando 2005), 1 = PCF (fixed radius), 0 = hard
+//                             (order of hv::ShadowFilter)
+//  HV_SHADOW_MAP_SIZE 512     texels per cube face side (settings.shadow_map_size)
+#ifndef HV_SHADOWS_GLSL
+#define HV_SHADOWS_GLSL
+
+#include "math.glsl"
+#include "sampling.glsl"
+
+#ifndef HV_SHADOWS
+#define HV_SHADOWS 0
+#endif
+#define HV_SHADOW_FILTER_HARD 0
+#define HV_SHADOW_FILTER_PCF 1
+#define HV_SHADOW_FILTER_PCSS 2
+#ifndef HV_SHADOW_FILTER
+#define HV_SHADOW_FILTER HV_SHADOW_FILTER_PCSS
+#endif
+#ifndef HV_SHADOW_MAP_SIZE
+#define HV_SHADOW_MAP_SIZE 512
+#endif
+// Taps of the PCF filter and of PCSS's blocker search (a Vogel disk each).
+#define HV_SHADOW_TAPS 16
+
+// Bias, in texels of the map at the receiver's distance (measured: docs/lights.md, "Shadows",
+// acne at 80 degrees from the normal against light leaking at contact). The receiver moves along
+// its normal by HV_SHADOW_NORMAL_OFFSET texels before the lookup (normal offset); each tap then
+// compares against the receiver's plane along that tap's ray (receiver-plane depth), less
+// (HV_SHADOW_CONST_BIAS + HV_SHADOW_SLOPE_BIAS tan(theta)) texels: the depth a texel spans on a
+// plane at angle theta to the light (slope scale), tan clamped at HV_SHADOW_MAX_SLOPE.
+const float HV_SHADOW_NORMAL_OFFSET = 1.0f;
+const float HV_SHADOW_CONST_BIAS = 0.5f;
+const float HV_SHADOW_SLOPE_BIAS = 1.0f;
+const float HV_SHADOW_MAX_SLOPE = 10.0f;
+// PCF's filter radius and PCSS's smallest one, in texels (PCSS of a point light: the same).
+const float HV_SHADOW_PCF_RADIUS = 1.5f;
+// PCSS's blocker search covers the emitter's angular radius seen from the receiver times this:
+// blockers down to a third of the way from the light to the receiver are found (a blocker at
+// distance z from the light occludes part of an emitter of radius r from a receiver at d when
+// it lies within r (d - z) / (d z) of the receiver's direction, r / d for z = d / 2).
+const float HV_PCSS_SEARCH_SCALE = 2.0f;
+// Widest filter, radians: a receiver far behind a close blocker under a large light would
+// otherwise sample half the cube.
+const float HV_SHADOW_MAX_FILTER = 0.35f;
+
+// Angle of one texel at a cube face's center, radians: a face spans tan = -1 .. 1 (towards the
+// edges texels subtend less, down to 1/3 of this in solid angle at the corners).
+float shadowTexelAngle() { return 2.0f / float(HV_SHADOW_MAP_SIZE); }
+
+// Fernando 2005, "Percentage-Closer Soft Shadows", eq. 1 (similar triangles): the penumbra's
+// half-width on the receiver, w = r (d_receiver - d_blocker) / d_blocker, of an emitter of
+// half-extent r, distances from the light. As an angle seen from the light: w / d_receiver.
+float pcssPenumbraAngle(float d_receiver, float d_blocker, float half_extent) {
+  float db = max(d_blocker, 1e-4f);
+  return half_extent * max(d_receiver - db, 0.0f) / (db * max(d_receiver, 1e-4f));
+}
+
+// The emitter as the filter sees it from a receiver in direction D (unit, light to receiver):
+// an ellipse in the plane across D with half-axes ext.x along u and ext.y along v (metres). A
+// sphere (or point) is a disk of its radius; a capsule of radius r and segment length len is
+// r + (len / 2) sin(axis, D) along the segment's projection u and r across it (the capsule's
+// silhouette's extents seen along D). u, v: unit, across D.
+vec2 emitterExtent(vec3 D, vec3 axis, float radius, float len, HV_OUT(vec3) u, HV_OUT(vec3) v) {
+  tangentFrame(D, u, v);
+  vec3 ap = axis - dot(axis, D) * D;  // the segment's direction projected across D
+  float s = length(ap);               // sin of the angle between the axis and D
+  // Along the segment's projection when there is one (len = 0 or axis along D: the disk).
+  if (s * len > 1e-6f) {
+    u = ap / s;
+    v = cross(D, u);
+  }
+  return vec2(radius + 0.5f * len * s, radius);
+}
+
+// Tap i of n of a Vogel disk (Vogel 1979; golden-angle spiral): points at radius
+// sqrt((i + 0.5) / n) of the unit disk, uniform in area, so n taps average the disk.
+vec2 vogelTap(int i, int n) {
+  float r = sqrt((float(i) + 0.5f) / float(n));
+  float a = float(i) * 2.39996323f;  // the golden angle, pi (3 - sqrt(5))
+  return vec2(r * cos(a), r * sin(a));
+}
+
+// Distance from the light, along unit direction dir, to the receiver's plane (through the point
+// at toP from the light, normal N): the depth a tap of the filter compares against (receiver-
+// plane depth; Isidoro 2006). A ray that misses the plane (it faces away or is parallel)
+// gets `far` (beyond every caster: shadowed by any). Clamped to [d / 2, far].
+float receiverPlaneDistance(vec3 toP, vec3 N, vec3 dir, float far) {
+  float num = dot(toP, N);  // < 0 on the lit side
+  float den = dot(dir, N);
+  float t = num / min(den, -1e-6f);
+  t = den < -1e-6f ? t : far;
+  return clamp(t, 0.5f * length(toP), far);
+}
+
+// The depth bias of a tap, metres, at distance d on a plane whose normal is at angle theta to
+// the light (cos_theta = |N.L|): slope-scaled (see HV_SHADOW_SLOPE_BIAS).
+float shadowDepthBias(float d, float cos_theta) {
+  float c = max(cos_theta, 1e-4f);
+  float tan_theta = min(sqrt(max(1.0f - c * c, 0.0f)) / c, HV_SHADOW_MAX_SLOPE);
+  return (HV_SHADOW_CONST_BIAS + HV_SHADOW_SLOPE_BIAS * tan_theta) * shadowTexelAngle() * d;
+}
+
+#if HV_SHADOWS && !defined(HV_CPP)
+// The atlas twice (engine/render/src/shadow_pass.cpp): raw distances (nearest; PCSS's blocker
+// search, hard shadows) and with depth comparison (bilinear PCF of 2 x 2 texels per tap). Each
+// texel holds distance / far from the light center, far = the light's culling radius.
+layout(binding = HV_UNIT_SHADOW_DEPTH) uniform samplerCubeArray t_shadow_depth;
+layout(binding = HV_UNIT_SHADOW_COMPARE) uniform samplerCubeArrayShadow t_shadow_compare;
+
+// Visibility (0 shadowed .. 1 lit) at P, normal N, of a light centered at Lpos whose map is
+// cube `layer` of the atlas (< 0: none; lit), distances stored over `far`; the emitter (PCSS):
+// radius, segment axis and length. The loops run 0 times for a light without a map or a
+// receiver beyond the map: on a SIMD CPU implementation (llvmpipe) an `if` costs its body even
+// when no lane takes it, a loop that no lane enters costs nothing.
+float shadowVisibility(vec3 Lpos, float far, float layer, float radius, vec3 axis, float len,
+                       vec3 P, vec3 N) {
+  float texel = shadowTexelAngle();
+  // Normal offset: the receiver moves along its normal (towards the light on a lit face).
+  vec3 toP0 = P - Lpos;
+  vec3 toP = toP0 + N * (HV_SHADOW_NORMAL_OFFSET * texel * length(toP0));
+  float d = length(toP);
+  vec3 D = toP / max(d, 1e-6f);
+  float bias = shadowDepthBias(d, abs(dot(N, D)));
+  float inv_far = 1.0f / far;
+  int n = (layer >= 0.0f && d < far) ? HV_SHADOW_TAPS : 0;
+#if HV_SHADOW_FILTER == HV_SHADOW_FILTER_HARD
+  float vis = 1.0f;
+  for (int i = 0; i < n; i += HV_SHADOW_TAPS) {
+    float z = textureLod(t_shadow_depth, vec4(D, layer), 0.0f).r * far;
+    vis = step(d - bias, z);
+  }
+  return vis;
+#else
+  vec3 u;
+  vec3 v;
+#if HV_SHADOW_FILTER == HV_SHADOW_FILTER_PCF
+  tangentFrame(D, u, v);
+  vec2 radii = vec2(HV_SHADOW_PCF_RADIUS * texel);
+#else
+  vec2 ext = emitterExtent(D, axis, radius, len, u, v);
+  // Blocker search (Fernando 2005, step 1): the mean distance of the texels nearer than the
+  // receiver, over the emitter's extent seen from the receiver.
+  float search = clamp(HV_PCSS_SEARCH_SCALE * ext.x / d, HV_SHADOW_PCF_RADIUS * texel,
+                       HV_SHADOW_MAX_FILTER);
+  float blockers = 0.0f;
+  float blocker_sum = 0.0f;
+  for (int i = 0; i < n; ++i) {
+    vec2 o = vogelTap(i, HV_SHADOW_TAPS) * search;
+    vec3 dir = normalize(D + u * o.x + v * o.y);
+    float t = receiverPlaneDistance(toP, N, dir, far);
+    float z = textureLod(t_shadow_depth, vec4(dir, layer), 0.0f).r * far;
+    float b = step(z, t - bias);
+    blockers += b;
+    blocker_sum += b * z;
+  }
+  // Penumbra (step 2) from the emitter's half-extents, at least PCF's radius.
+  float zb = blocker_sum / max(blockers, 1.0f);
+  vec2 radii = clamp(vec2(pcssPenumbraAngle(d, zb, ext.x), pcssPenumbraAngle(d, zb, ext.y)),
+                     vec2(HV_SHADOW_PCF_RADIUS * texel), vec2(HV_SHADOW_MAX_FILTER));
+  // No blocker: lit, nothing to filter.
+  n = blockers > 0.0f ? n : 0;
+#endif
+  // Percentage-closer filtering (Reeves et al. 1987) over the ellipse (PCSS step 3).
+  float lit = 0.0f;
+  for (int i = 0; i < n; ++i) {
+    vec2 o = vogelTap(i, HV_SHADOW_TAPS) * radii;
+    vec3 dir = normalize(D + u * o.x + v * o.y);
+    float t = receiverPlaneDistance(toP, N, dir, far);
+    lit += texture(t_shadow_compare, vec4(dir, layer), (t - bias) * inv_far);
+  }
+  return n > 0 ? lit / float(n) : 1.0f;
+#endif
+}
+#endif
+
+#endif
