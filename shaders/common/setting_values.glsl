@@ -59,6 +59,11 @@
 #define HV_TONEMAP_PBR_NEUTRAL 3
 #define HV_TONEMAP_ACES 4
 
+// shadow_filter (HV_SHADOW_FILTER): one tap, a fixed-radius PCF, or PCSS (Fernando 2005).
+#define HV_SHADOW_FILTER_HARD 0
+#define HV_SHADOW_FILTER_PCF 1
+#define HV_SHADOW_FILTER_PCSS 2
+
 // gamma (HV_GAMMA): gamma 2.2 or exact sRGB (IEC 61966-2-1).
 #define HV_GAMMA_22 0
 #define HV_GAMMA_SRGB 1

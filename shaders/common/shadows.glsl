@@ -7,20 +7,18 @@
 // Defines (the C++ side sets them from the scene, render/src/variant_key.cpp lightDefines):
 //  HV_SHADOWS 0|1             compile the lookup (a scene without shadowed lights has none)
 //  HV_SHADOW_FILTER 2|1|0     2 = PCSS (Fernando 2005), 1 = PCF (fixed radius), 0 = hard
-//                             (order of hv::ShadowFilter)
+//                             (values: setting_values.glsl)
 //  HV_SHADOW_MAP_SIZE 512     texels per cube face side (settings.shadow_map_size)
 #ifndef HV_SHADOWS_GLSL
 #define HV_SHADOWS_GLSL
 
 #include "math.glsl"
 #include "sampling.glsl"
+#include "setting_values.glsl"
 
 #ifndef HV_SHADOWS
 #define HV_SHADOWS 0
 #endif
-#define HV_SHADOW_FILTER_HARD 0
-#define HV_SHADOW_FILTER_PCF 1
-#define HV_SHADOW_FILTER_PCSS 2
 #ifndef HV_SHADOW_FILTER
 #define HV_SHADOW_FILTER HV_SHADOW_FILTER_PCSS
 #endif

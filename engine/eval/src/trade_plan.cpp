@@ -56,10 +56,11 @@ TradePlan tradePlan(const Scene& scene, int max_brute_force_lights) {
   const RenderSettings& b = scene.settings;
   const int pf = scene.environment.prefilter_samples;
   const bool env = scene.environment.kind != EnvironmentKind::None;
-  bool sphere = false, tube = false;
+  bool sphere = false, tube = false, shadowed = false;
   for (const Light& l : scene.lights) {
     sphere |= l.type == LightType::Sphere;
     tube |= l.type == LightType::Tube;
+    shadowed |= l.shadows;
   }
   const bool lights = !scene.lights.empty();
   std::vector<TradeConfig> c;
@@ -70,7 +71,8 @@ TradePlan tradePlan(const Scene& scene, int max_brute_force_lights) {
       {SettingFeature::Lights, lights ? nullptr : "no lights"},
       {SettingFeature::SphereLights, sphere ? nullptr : "no sphere lights"},
       {SettingFeature::TubeLights, tube ? nullptr : "no tube lights"},
-      {SettingFeature::AmbientIbl, env ? nullptr : "no environment"}};
+      {SettingFeature::AmbientIbl, env ? nullptr : "no environment"},
+      {SettingFeature::ShadowedLights, shadowed ? nullptr : "no shadowed lights"}};
   std::vector<std::string> skipped_keys(std::size(absent));
   forEachSetting([&](const auto& row) {
     using T = typename std::decay_t<decltype(row)>::Type;

@@ -208,7 +208,8 @@ FrameStats Renderer::render(int width, int height, DebugView view,
   // Shadow maps of the shadowed lights (cached until a light or a caster changes).
   ShadowMaps::Stats shadow_stats;
   if (key_.shadows) {
-    shadow_stats = p.shadows.run(ctx, {*scene_, *gpu_, kDefaultShadowMapSize, lights_version_});
+    shadow_stats =
+        p.shadows.run(ctx, {*scene_, *gpu_, key_.settings.shadow_map_size, lights_version_});
   }
   runGBufferPass(ctx,
                  {*scene_, *gpu_, key_, gbuffer_descs_, draw_order_,

@@ -82,6 +82,8 @@ bool featurePresent(SettingFeature f, const VariantKey& k) {
       return k.tube_lights;
     case SettingFeature::AmbientIbl:
       return k.ambientIbl();
+    case SettingFeature::ShadowedLights:
+      return k.shadows;
   }
   return true;
 }
@@ -99,6 +101,8 @@ std::string featureAbsentReason(SettingFeature f, const VariantKey& k) {
       return "no tube lights";
     case SettingFeature::AmbientIbl:
       return k.hasEnvironment() ? "no default_lit material" : "no environment";
+    case SettingFeature::ShadowedLights:
+      return "no shadowed lights";
   }
   return "";
 }
@@ -116,6 +120,8 @@ const char* featureInvalid(SettingFeature f) {
       return "tube-light options without tube lights";
     case SettingFeature::AmbientIbl:
       return "ambient IBL options without ambient IBL (no environment or no lit material)";
+    case SettingFeature::ShadowedLights:
+      return "shadow options without shadowed lights";
   }
   return "";
 }
@@ -242,8 +248,9 @@ std::vector<std::string> validateKey(const VariantKey& k) {
   if (!k.hasEnvironment() && s.irradiance == Irradiance::Cubemap) {
     bad.push_back("irradiance cubemap without an environment");
   }
-  for (SettingFeature f : {SettingFeature::Lights, SettingFeature::SphereLights,
-                           SettingFeature::TubeLights, SettingFeature::AmbientIbl}) {
+  for (SettingFeature f :
+       {SettingFeature::Lights, SettingFeature::SphereLights, SettingFeature::TubeLights,
+        SettingFeature::AmbientIbl, SettingFeature::ShadowedLights}) {
     if (featurePresent(f, k)) continue;
     bool changed = false;
     forEachSetting([&](const auto& row) {

@@ -14,6 +14,8 @@ std::vector<std::pair<std::string, std::string>> settingDefines(const RenderSett
       out.emplace_back(row.info.define, s.*row.member ? "1" : "0");
     } else if constexpr (std::is_enum_v<T>) {
       out.emplace_back(row.info.define, std::to_string(static_cast<int>(s.*row.member)));
+    } else if constexpr (std::is_same_v<T, int>) {
+      out.emplace_back(row.info.define, std::to_string(s.*row.member));
     }
   });
   return out;

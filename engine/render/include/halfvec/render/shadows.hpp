@@ -13,8 +13,6 @@
 
 namespace hv::render {
 
-// Texels a side of a cube face.
-constexpr int kDefaultShadowMapSize = 1024;
 // The atlas budget, texels: six faces of 2048^2, 96 MiB at 32-bit depth (docs/lights.md).
 constexpr size_t kShadowAtlasTexels = size_t(6) * 2048 * 2048;
 // Lights the atlas holds at this face size (at least 1): 16 at 512, 4 at 1024, 1 at 2048.

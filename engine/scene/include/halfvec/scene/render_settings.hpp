@@ -70,16 +70,23 @@ enum class ToneMap : uint8_t {
   Aces = HV_TONEMAP_ACES
 };
 enum class Gamma : uint8_t { Gamma22 = HV_GAMMA_22, SRGB = HV_GAMMA_SRGB };
+// Shadows of lights with `shadows: true` (docs/lights.md, "Shadows").
+enum class ShadowFilter : uint8_t {
+  Hard = HV_SHADOW_FILTER_HARD,
+  Pcf = HV_SHADOW_FILTER_PCF,
+  Pcss = HV_SHADOW_FILTER_PCSS
+};
 
 // What part of a scene makes a setting change code. Without it the variant key resets the setting
 // to its default (canonicalSettings), the manifest says why, and a key that holds another value is
 // invalid (validateKey). The rules and their wording: engine/render/src/variant_key.cpp.
 enum class SettingFeature : uint8_t {
-  Frame,         // always in use (output size, tone mapping, the uber switch)
-  Lights,        // any light: the BRDF terms, the falloff, culling
-  SphereLights,  // sphere lights
-  TubeLights,    // tube lights
-  AmbientIbl,    // an environment lighting a default_lit material
+  Frame,           // always in use (output size, tone mapping, the uber switch)
+  Lights,          // any light: the BRDF terms, the falloff, culling
+  SphereLights,    // sphere lights
+  TubeLights,      // tube lights
+  AmbientIbl,      // an environment lighting a default_lit material
+  ShadowedLights,  // a light with `shadows: true`
 };
 
 // Another setting that makes this one change no code, and the value it then takes in the key.
@@ -94,10 +101,11 @@ enum class Supersede : uint8_t {
 enum class SettingPass : uint8_t { None, Light, Ambient, ToneMap };
 
 // The descriptive columns of a row. Numbers: [lo, hi] (integers compare as integers, floats as
-// the float they are stored in). `define` is the shader define; its value is the enum's value or
-// 1/0 for a bool. `trade`: an approximation option that `halfvec trade` varies, in `trade_group`.
-// `label`: the viewer's Render panel shows it (nullptr: not shown); `needs_set_scene`: changing it
-// re-uploads the scene (the irradiance cube is baked only when asked for).
+// the float they are stored in). `define` is the shader define; its value is the enum's value, the
+// integer, or 1/0 for a bool. `trade`: an approximation option that `halfvec trade` varies, in
+// `trade_group`. `label`: the viewer's Render panel shows it (nullptr: not shown);
+// `needs_set_scene`: changing it re-uploads the scene (the irradiance cube is baked only when asked
+// for).
 struct SettingInfo {
   double lo = 0.0, hi = 0.0;
   bool lo_open = false;
@@ -204,6 +212,14 @@ struct SettingInfo {
     (SettingInfo{.feature = SettingFeature::AmbientIbl, .define = "HV_SPECULAR_OCCLUSION",         \
                  .pass = SettingPass::Ambient, .trade = true, .trade_group = "environment",        \
                  .label = "specular occlusion"}))                                                  \
+  /* Shadows (docs/lights.md, "Shadows"); the face size sets how many lights the atlas holds */     \
+  X(ShadowFilter, shadow_filter, ShadowFilter::Pcss, "shadow_filter",                              \
+    (SettingInfo{.feature = SettingFeature::ShadowedLights, .define = "HV_SHADOW_FILTER",          \
+                 .pass = SettingPass::Light, .trade = true, .trade_group = "lights",               \
+                 .label = "shadow filter"}))                                                       \
+  X(int, shadow_map_size, 1024, "shadow_map_size",                                                 \
+    (SettingInfo{.lo = 16, .hi = 2048, .feature = SettingFeature::ShadowedLights,                  \
+                 .define = "HV_SHADOW_MAP_SIZE", .pass = SettingPass::Light}))                     \
   /* every feature compiled in, chosen at run time (docs/variants.md) */                           \
   X(bool, uber, false, "uber", (SettingInfo{}))
 // clang-format on
