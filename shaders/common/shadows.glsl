@@ -45,6 +45,8 @@ const float HV_SHADOW_PCF_RADIUS = 1.5f;
 // distance z from the light occludes part of an emitter of radius r from a receiver at d when
 // it lies within r (d - z) / (d z) of the receiver's direction, r / d for z = d / 2).
 const float HV_PCSS_SEARCH_SCALE = 2.0f;
+// The blocker search takes every HV_PCSS_SEARCH_STEP-th tap of the filter's Vogel disk.
+#define HV_PCSS_SEARCH_STEP 1
 // Widest filter, radians: a receiver far behind a close blocker under a large light would
 // otherwise sample half the cube.
 const float HV_SHADOW_MAX_FILTER = 0.35f;
@@ -120,62 +122,66 @@ layout(binding = HV_UNIT_SHADOW_COMPARE) uniform samplerCubeArrayShadow t_shadow
 // when no lane takes it, a loop that no lane enters costs nothing.
 float shadowVisibility(vec3 Lpos, float far, float layer, float radius, vec3 axis, float len,
                        vec3 P, vec3 N) {
-  float texel = shadowTexelAngle();
-  // Normal offset: the receiver moves along its normal (towards the light on a lit face).
-  vec3 toP0 = P - Lpos;
-  vec3 toP = toP0 + N * (HV_SHADOW_NORMAL_OFFSET * texel * length(toP0));
-  float d = length(toP);
-  vec3 D = toP / max(d, 1e-6f);
-  float bias = shadowDepthBias(d, abs(dot(N, D)));
-  float inv_far = 1.0f / far;
-  int n = (layer >= 0.0f && d < far) ? HV_SHADOW_TAPS : 0;
-#if HV_SHADOW_FILTER == HV_SHADOW_FILTER_HARD
   float vis = 1.0f;
-  for (int i = 0; i < n; i += HV_SHADOW_TAPS) {
-    float z = textureLod(t_shadow_depth, vec4(D, layer), 0.0f).r * far;
-    vis = step(d - bias, z);
+  // A loop of one pass or none: nothing below runs for a light without a map.
+  int lookups = layer >= 0.0f ? 1 : 0;
+  for (int k = 0; k < lookups; ++k) {
+    float texel = shadowTexelAngle();
+    // Normal offset: the receiver moves along its normal (towards the light on a lit face).
+    vec3 toP0 = P - Lpos;
+    vec3 toP = toP0 + N * (HV_SHADOW_NORMAL_OFFSET * texel * length(toP0));
+    float d = length(toP);
+    vec3 D = toP / max(d, 1e-6f);
+    float bias = shadowDepthBias(d, abs(dot(N, D)));
+    // Beyond the map (the light's culling radius) the light is 0 anyway.
+    int n = d < far ? HV_SHADOW_TAPS : 0;
+#if HV_SHADOW_FILTER == HV_SHADOW_FILTER_HARD
+    for (int i = 0; i < n; i += HV_SHADOW_TAPS) {
+      float z = textureLod(t_shadow_depth, vec4(D, layer), 0.0f).r * far;
+      vis = step(d - bias, z);
+    }
+#else
+    vec3 u;
+    vec3 v;
+#if HV_SHADOW_FILTER == HV_SHADOW_FILTER_PCF
+    tangentFrame(D, u, v);
+    vec2 radii = vec2(HV_SHADOW_PCF_RADIUS * texel);
+#else
+    vec2 ext = emitterExtent(D, axis, radius, len, u, v);
+    // Blocker search (Fernando 2005, step 1): the mean distance of the texels nearer than the
+    // receiver, over the emitter's extent seen from the receiver.
+    float search = clamp(HV_PCSS_SEARCH_SCALE * ext.x / d, HV_SHADOW_PCF_RADIUS * texel,
+                         HV_SHADOW_MAX_FILTER);
+    float blockers = 0.0f;
+    float blocker_sum = 0.0f;
+    for (int i = 0; i < n; i += HV_PCSS_SEARCH_STEP) {
+      vec2 o = vogelTap(i, HV_SHADOW_TAPS) * search;
+      vec3 dir = normalize(D + u * o.x + v * o.y);
+      float t = receiverPlaneDistance(toP, N, dir, far);
+      float z = textureLod(t_shadow_depth, vec4(dir, layer), 0.0f).r * far;
+      float b = step(z, t - bias);
+      blockers += b;
+      blocker_sum += b * z;
+    }
+    // Penumbra (step 2) from the emitter's half-extents, at least PCF's radius.
+    float zb = blocker_sum / max(blockers, 1.0f);
+    vec2 radii = clamp(vec2(pcssPenumbraAngle(d, zb, ext.x), pcssPenumbraAngle(d, zb, ext.y)),
+                       vec2(HV_SHADOW_PCF_RADIUS * texel), vec2(HV_SHADOW_MAX_FILTER));
+    // No blocker: lit, nothing to filter.
+    n = blockers > 0.0f ? n : 0;
+#endif
+    // Percentage-closer filtering (Reeves et al. 1987) over the ellipse (PCSS step 3).
+    float lit = 0.0f;
+    for (int i = 0; i < n; ++i) {
+      vec2 o = vogelTap(i, HV_SHADOW_TAPS) * radii;
+      vec3 dir = normalize(D + u * o.x + v * o.y);
+      float t = receiverPlaneDistance(toP, N, dir, far);
+      lit += texture(t_shadow_compare, vec4(dir, layer), (t - bias) / far);
+    }
+    vis = n > 0 ? lit / float(n) : 1.0f;
+#endif
   }
   return vis;
-#else
-  vec3 u;
-  vec3 v;
-#if HV_SHADOW_FILTER == HV_SHADOW_FILTER_PCF
-  tangentFrame(D, u, v);
-  vec2 radii = vec2(HV_SHADOW_PCF_RADIUS * texel);
-#else
-  vec2 ext = emitterExtent(D, axis, radius, len, u, v);
-  // Blocker search (Fernando 2005, step 1): the mean distance of the texels nearer than the
-  // receiver, over the emitter's extent seen from the receiver.
-  float search = clamp(HV_PCSS_SEARCH_SCALE * ext.x / d, HV_SHADOW_PCF_RADIUS * texel,
-                       HV_SHADOW_MAX_FILTER);
-  float blockers = 0.0f;
-  float blocker_sum = 0.0f;
-  for (int i = 0; i < n; ++i) {
-    vec2 o = vogelTap(i, HV_SHADOW_TAPS) * search;
-    vec3 dir = normalize(D + u * o.x + v * o.y);
-    float t = receiverPlaneDistance(toP, N, dir, far);
-    float z = textureLod(t_shadow_depth, vec4(dir, layer), 0.0f).r * far;
-    float b = step(z, t - bias);
-    blockers += b;
-    blocker_sum += b * z;
-  }
-  // Penumbra (step 2) from the emitter's half-extents, at least PCF's radius.
-  float zb = blocker_sum / max(blockers, 1.0f);
-  vec2 radii = clamp(vec2(pcssPenumbraAngle(d, zb, ext.x), pcssPenumbraAngle(d, zb, ext.y)),
-                     vec2(HV_SHADOW_PCF_RADIUS * texel), vec2(HV_SHADOW_MAX_FILTER));
-  // No blocker: lit, nothing to filter.
-  n = blockers > 0.0f ? n : 0;
-#endif
-  // Percentage-closer filtering (Reeves et al. 1987) over the ellipse (PCSS step 3).
-  float lit = 0.0f;
-  for (int i = 0; i < n; ++i) {
-    vec2 o = vogelTap(i, HV_SHADOW_TAPS) * radii;
-    vec3 dir = normalize(D + u * o.x + v * o.y);
-    float t = receiverPlaneDistance(toP, N, dir, far);
-    lit += texture(t_shadow_compare, vec4(dir, layer), (t - bias) * inv_far);
-  }
-  return n > 0 ? lit / float(n) : 1.0f;
-#endif
 }
 #endif
 
