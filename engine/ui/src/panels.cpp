@@ -267,6 +267,13 @@ HV_LIGHT_SETTER(setRange, float v, l->range = std::isfinite(v) ? std::max(v, 0.0
 HV_LIGHT_SETTER(setShadows, bool on, l->shadows = on)
 #undef HV_LIGHT_SETTER
 
+bool LightsPanelModel::setShadowFilter(ShadowFilter f) {
+  if (!scene_ || scene_->settings.shadow_filter == f) return false;
+  scene_->settings.shadow_filter = f;
+  dirty_ = true;
+  return true;
+}
+
 // ---------------------------------------------------------------------------------------------
 
 // The controls are the settings table's rows that have a label (render_settings.hpp), in its order.

@@ -156,7 +156,8 @@ bool drawLightsContents(LightsPanelModel& model) {
     }
   }
   pushLabelColumn({"type", "position", "color", "intensity", "range", "radius", "length", "axis",
-                   "count", "point", "sphere", "tube", "box min", "box max", "seed"});
+                   "shadows", "shadow filter", "count", "point", "sphere", "tube", "box min",
+                   "box max", "seed"});
   if (model.count() > 0) {
     drawLightTable(model);
     if (const Light* cur = model.current()) {
@@ -185,12 +186,19 @@ bool drawLightsContents(LightsPanelModel& model) {
         if (ImGui::DragFloat3("axis", &l.axis.x, 0.01f, -1.0f, 1.0f))
           changed |= model.setAxis(l.axis);
       }
+      bool shadows = l.shadows;
+      if (ImGui::Checkbox("shadows", &shadows)) changed |= model.setShadows(shadows);
       if (ImGui::Button("Remove")) changed |= model.remove(model.selected());
       ImGui::SameLine();
     }
     if (ImGui::Button("Remove all")) {
       model.clear();
       changed = true;
+    }
+    // One filter for every shadowed light (settings.shadow_filter; docs/lights.md "Shadows").
+    int filter = int(model.shadowFilter());
+    if (nameCombo("shadow filter", &filter, enumNames<ShadowFilter>())) {
+      changed |= model.setShadowFilter(ShadowFilter(filter));
     }
   }
   if (ImGui::CollapsingHeader("Generate random lights")) {

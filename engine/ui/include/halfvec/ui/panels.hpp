@@ -116,6 +116,11 @@ class LightsPanelModel {
   bool setAxis(glm::vec3 a);
   bool setRange(float v);
   bool setShadows(bool on);  // the light casts shadows (a shadow map)
+  // The scene's settings.shadow_filter (the filter of every shadowed light).
+  ShadowFilter shadowFilter() const {
+    return scene_ ? scene_->settings.shadow_filter : ShadowFilter::Pcss;
+  }
+  bool setShadowFilter(ShadowFilter f);
 
   bool takeDirty() {
     const bool d = dirty_;
