@@ -79,6 +79,7 @@ std::vector<Geometry> geometries() {
 struct Option {
   std::string name;
   std::function<void(RenderSettings&)> apply;
+  bool shadows = false;  // the light casts shadows (the spheres shadow each other)
 };
 
 std::vector<Option> options(bool small) {
@@ -115,6 +116,14 @@ std::vector<Option> options(bool small) {
     s.tube_specular = TubeSpecular::Ltc;
     s.tube_diffuse = TubeDiffuse::Ltc;
   });
+  // Shadowed lights (docs/lights.md, "Shadows"): each filter, and PCSS with the smallest maps
+  // (the largest texels, so the largest biases and filters).
+  for (ShadowFilter f : {ShadowFilter::Pcss, ShadowFilter::Pcf, ShadowFilter::Hard}) {
+    o.push_back({"shadows, shadow_filter=" + std::string(toString(f)),
+                 [f](RenderSettings& s) { s.shadow_filter = f; }, true});
+  }
+  o.push_back(
+      {"shadows, shadow_map_size=16", [](RenderSettings& s) { s.shadow_map_size = 16; }, true});
   if (small) {
     // CI: the options whose code paths differ most (physical falloff divides by d^2 alone).
     std::vector<Option> keep;
@@ -123,7 +132,8 @@ std::vector<Option> options(bool small) {
           x.name == "v=smith_ggx_correlated" || x.name == "f=exact" ||
           x.name == "sphere_diffuse=horizon_correct" ||
           x.name == "tube_specular=smallest_angle_eq18" || x.name == "d=beckmann" ||
-          x.name == "diffuse=burley" || x.name == "ltc (all three)") {
+          x.name == "diffuse=burley" || x.name == "ltc (all three)" ||
+          x.name == "shadows, shadow_filter=pcss") {
         keep.push_back(x);
       }
     }
@@ -158,6 +168,7 @@ std::vector<StabilityRow> runStabilitySweep(
             l.length = 0.0f;
           }
           if (type == LightType::Sphere) l.length = 0.0f;
+          l.shadows = opt.shadows;
           scene.lights.push_back(l);
           renderer.setScene(scene);
           renderer.render(opts.size, opts.size);
