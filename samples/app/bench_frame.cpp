@@ -10,6 +10,7 @@
 #include "halfvec/core/output_files.hpp"
 #include "halfvec/eval/bench.hpp"
 #include "halfvec/platform/context.hpp"
+#include "halfvec/render/renderer.hpp"
 #include "halfvec/scene/scene_loader.hpp"
 
 namespace hv::app {
@@ -25,6 +26,79 @@ void printCost(const eval::FrameCost& c) {
   };
   for (const eval::PassCost& p : c.passes) row(p);
   row(c.frame);
+  std::fflush(stdout);
+}
+
+// The shadows' cost (docs/lights.md, "Shadows"), for a scene with shadowed lights: three
+// renderers of it, frames interleaved: as it is (the maps cached since the warm-up frame),
+// without shadows (no shadow code), and with every shadowed light moved by 1e-4 m each frame
+// (its maps rendered again every frame). Each ratio is per frame, against that frame's floor.
+void printShadowCost(const Scene& scene, int w, int h, int frames) {
+  Scene none = scene, moving = scene;
+  size_t shadowed = 0;
+  for (Light& l : none.lights) {
+    shadowed += l.shadows;
+    l.shadows = false;
+  }
+  if (shadowed == 0) return;
+  render::DebugOptions d;
+  d.floor_pass = true;
+  d.finish_each_pass = true;
+  render::Renderer cached, plain, rerendered;
+  const Scene* scenes[3] = {&scene, &none, &moving};
+  render::Renderer* rs[3] = {&cached, &plain, &rerendered};
+  for (int i = 0; i < 3; ++i) {
+    rs[i]->setDebugOptions(d);
+    rs[i]->setScene(*scenes[i]);
+    rs[i]->render(w, h);  // warm-up: compiles, renders the maps
+  }
+  eval::PassSeries s[3];
+  size_t faces = 0, maps = 0;
+  for (int f = 0; f < frames; ++f) {
+    for (Light& l : moving.lights) {
+      if (l.shadows) l.position.x += (f % 2 ? -1e-4f : 1e-4f);
+    }
+    rerendered.updateLights();
+    for (int i = 0; i < 3; ++i) {
+      const render::FrameStats st = rs[i]->render(w, h);
+      if (i == 2) faces = 6 * st.shadow_maps_rendered;
+      if (i == 0) maps = st.shadow_maps;
+      s[i].add(st);
+    }
+  }
+  auto total = [](const eval::PassSeries& p, size_t k) {
+    double t = 0.0;
+    for (const std::string& pass : p.order) {
+      if (pass != "floor" && k < p.of(pass).size()) t += p.of(pass)[k];
+    }
+    return t;
+  };
+  std::vector<double> lookup, frame, pass, per_face;
+  for (size_t k = 0; k < size_t(frames); ++k) {
+    const double floor = s[0].of("floor").at(k), floor2 = s[2].of("floor").at(k);
+    lookup.push_back((s[0].of("light").at(k) - s[1].of("light").at(k)) / floor);
+    frame.push_back((total(s[0], k) - total(s[1], k)) / floor);
+    pass.push_back(s[2].of("shadows").at(k) / floor2);
+    per_face.push_back(s[2].of("shadows").at(k) / double(std::max<size_t>(faces, 1)) /
+                       s[2].of("gbuffer").at(k));
+  }
+  auto row = [](const char* what, const std::vector<double>& v, const char* unit) {
+    const eval::MedianInterval m = eval::medianInterval(v);
+    std::printf("  %-48s %7.2f%s  (%.2f - %.2f)\n", what, m.median, unit, m.lo, m.hi);
+  };
+  std::printf(
+      "  shadows: %zu shadowed light%s, %zu map%s; interleaved with the scene without "
+      "shadows and with the maps re-rendered every frame\n",
+      shadowed, shadowed == 1 ? "" : "s", maps, maps == 1 ? "" : "s");
+  row("shadow lookup in the light pass (cached maps)", lookup, "x floor");
+  row("whole frame, cached maps, over no shadows", frame, "x floor");
+  row("shadow-map pass, all maps re-rendered", pass, "x floor");
+  row("shadow-map pass per cube face, over the G-buffer pass", per_face, "x");
+  std::printf(
+      "  (light pass %.2f ms with shadows, %.2f ms without; shadow-map pass %.2f ms for "
+      "%zu faces; G-buffer %.2f ms)\n",
+      s[0].median("light"), s[1].median("light"), s[2].median("shadows"), faces,
+      s[2].median("gbuffer"));
   std::fflush(stdout);
 }
 
@@ -91,6 +165,7 @@ int benchFrame(const FrameBenchOptions& o) {
     if (o.shader_dirs.empty()) {
       costs.push_back(eval::measureFrameCost(loaded[i], name, o.width, o.height, o.frames));
       printCost(costs.back());
+      printShadowCost(loaded[i], o.width, o.height, o.frames);
     } else {
       for (const auto& c :
            eval::measureFrameCostTrees(loaded[i], o.shader_dirs, o.width, o.height, o.frames)) {
