@@ -213,10 +213,10 @@ struct SettingInfo {
                  .pass = SettingPass::Ambient, .trade = true, .trade_group = "environment",        \
                  .label = "specular occlusion"}))                                                  \
   /* Shadows (docs/lights.md, "Shadows"); the face size sets how many lights the atlas holds */     \
+  /* no label: the Lights panel picks the filter */                                                \
   X(ShadowFilter, shadow_filter, ShadowFilter::Pcss, "shadow_filter",                              \
     (SettingInfo{.feature = SettingFeature::ShadowedLights, .define = "HV_SHADOW_FILTER",          \
-                 .pass = SettingPass::Light, .trade = true, .trade_group = "lights",               \
-                 .label = "shadow filter"}))                                                       \
+                 .pass = SettingPass::Light, .trade = true, .trade_group = "lights"}))             \
   X(int, shadow_map_size, 1024, "shadow_map_size",                                                 \
     (SettingInfo{.lo = 16, .hi = 2048, .feature = SettingFeature::ShadowedLights,                  \
                  .define = "HV_SHADOW_MAP_SIZE", .pass = SettingPass::Light}))                     \
