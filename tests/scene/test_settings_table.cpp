@@ -106,8 +106,13 @@ TEST(SettingsTable, EveryValueReachesItsDefine) {
         s.*row.member = *fromString<T>(enumNames<T>()[i]);
         EXPECT_EQ(defineOf(s), std::to_string(i)) << row.key << " = " << enumNames<T>()[i];
       }
+    } else if constexpr (std::is_same_v<T, int>) {
+      for (int v : {int(row.info.lo), int(row.info.hi)}) {
+        s.*row.member = v;
+        EXPECT_EQ(defineOf(s), std::to_string(v)) << row.key;
+      }
     } else {
-      ADD_FAILURE() << row.key << ": a define needs a bool or an enum";
+      ADD_FAILURE() << row.key << ": a define needs a bool, an integer or an enum";
     }
   });
   EXPECT_GE(defines, 18);
