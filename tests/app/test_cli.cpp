@@ -97,7 +97,7 @@ TEST(Cli, RendersDefaultSceneFiniteAndNotUniform) {
   }
   EXPECT_EQ(names, (std::set<std::string>{"gbuffer", "light_cull_bounds", "light_cull_bin",
                                           "light_cull_tiles", "light", "ambient", "emitter_cull",
-                                          "emitters", "tonemap", "fxaa"}));
+                                          "emitters", "tonemap", "fxaa", "shadow"}));
 }
 
 TEST(Cli, UberRendersTheSameImage) {
