@@ -121,28 +121,11 @@ GlbChunks checkGlb(const std::string& name, const uint8_t* b, size_t size) {
 // tinygltf converts "extras" and "extensions" recursively: JSON nesting is bounded before it
 // parses anything (strings and escapes skipped).
 void checkJsonDepth(const std::string& name, const uint8_t* text, size_t size, int max_depth) {
-  int depth = 0;
-  bool in_string = false, escape = false;
-  for (size_t i = 0; i < size; ++i) {
-    const uint8_t c = text[i];
-    if (in_string) {
-      if (escape) {
-        escape = false;
-      } else if (c == '\\') {
-        escape = true;
-      } else if (c == '"') {
-        in_string = false;
-      }
-    } else if (c == '"') {
-      in_string = true;
-    } else if (c == '[' || c == '{') {
-      if (++depth > max_depth) {
-        throw SceneError(name + ": JSON nesting deeper than " + std::to_string(max_depth) +
-                         " levels at byte " + std::to_string(i) + " (GltfLimits::max_json_depth)");
-      }
-    } else if (c == ']' || c == '}') {
-      --depth;
-    }
+  const size_t at =
+      jsonNestingBeyond(std::string_view(reinterpret_cast<const char*>(text), size), max_depth);
+  if (at != std::string_view::npos) {
+    throw SceneError(name + ": JSON nesting deeper than " + std::to_string(max_depth) +
+                     " levels at byte " + std::to_string(at) + " (GltfLimits::max_json_depth)");
   }
 }
 
