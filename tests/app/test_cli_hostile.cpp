@@ -268,7 +268,7 @@ TEST(CliHostile, DeviceOutputsAreWrittenNotReplaced) {
       << "a temporary was left";
 }
 
-// Options stored as floats (issue 29): bounds compared as floats, nothing becomes inf; stof and
+// Options stored as floats: bounds compared as floats, nothing becomes inf; stof and
 // atof took "2x" and threw or truncated.
 TEST(CliHostile, FloatOptionsAreParsedAsFloats) {
   std::string err;

@@ -1,6 +1,6 @@
 // Inputs read as hostile (halfvec/core/input_file.hpp): a FIFO, a device, a directory or a file
 // over the limit is reported by what it is, before anything is read, and reading never goes past
-// the limit (issue 29: a scene path symlinked to /dev/zero grew past 3.9 GB; a FIFO hung).
+// the limit (a scene path symlinked to /dev/zero grew past 3.9 GB; a FIFO hung).
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>

@@ -187,7 +187,7 @@ std::string samplePath(const char* name) {
 }  // namespace
 
 // A flat floor lit at 80 degrees from its normal, nothing above it: every lit pixel must stay
-// lit. Goal (issue 27): fewer than 0.1% of the visible floor pixels wrongly shadowed.
+// lit. Goal: fewer than 0.1% of the visible floor pixels wrongly shadowed.
 TEST(Shadows, NoAcneAtGrazingLight) {
   testContext();
   const float a = glm::radians(80.0f);
