@@ -30,6 +30,9 @@ namespace {
 using namespace scene_json;
 
 class SceneBuilder {
+  enum class PrimKind { Sphere, Plane, Box, Capsule };
+  static constexpr std::string_view kPrimNames[] = {"sphere", "plane", "box", "capsule"};
+
  public:
   SceneBuilder(const Ctx& ctx, Scene& scene) : ctx_(ctx), scene_(scene) {}
 
@@ -106,9 +109,8 @@ class SceneBuilder {
     return default_material_;
   }
 
-  // `inherited`: the transform of the gltf object whose fallback this is.
-  void parsePrimitiveObject(const json& j, const std::string& ptr,
-                            std::optional<glm::mat4> inherited, const std::string& default_name) {
+  // The "primitive" of an object, with an error naming the allowed values.
+  PrimKind primitiveKind(const json& j, const std::string& ptr) const {
     std::optional<PrimKind> kind;
     if (j.contains("primitive") && j["primitive"].is_string()) {
       const std::string s = j["primitive"].get<std::string>();
@@ -124,8 +126,13 @@ class SceneBuilder {
                          ? didYouMean(j["primitive"].get<std::string>(), kPrimNames)
                          : ""));
     }
+    return *kind;
+  }
+
+  // The keys an object of that primitive may have.
+  static std::vector<std::string_view> primitiveKeys(PrimKind kind) {
     std::vector<std::string_view> keys = {"name", "primitive", "transform", "material"};
-    switch (*kind) {
+    switch (kind) {
       case PrimKind::Sphere:
         keys.insert(keys.end(), {"radius", "segments", "rings"});
         break;
@@ -139,11 +146,11 @@ class SceneBuilder {
         keys.insert(keys.end(), {"radius", "half_length", "segments", "rings"});
         break;
     }
-    Obj o(ctx_, j, ptr, keys);
-    Object obj;
-    obj.name = o.string("name", default_name);
-    obj.transform = o.has("transform") ? parseTransform(ctx_, o["transform"], o.at("transform"))
-                                       : inherited.value_or(glm::mat4(1.0f));
+    return keys;
+  }
+
+  // The primitive's mesh, its tessellation checked against the scene's budget first.
+  Mesh primitiveMesh(const Obj& o, PrimKind kind) {
     Mesh mesh;
     // Tessellation budget, checked before the mesh is built (vertex counts of primitives.cpp).
     auto budget = [&](int segments, int rings, size_t vertices) {
@@ -156,7 +163,7 @@ class SceneBuilder {
                                " primitive vertices (kMaxPrimitiveVertices)");
       }
     };
-    switch (*kind) {
+    switch (kind) {
       case PrimKind::Sphere: {
         const float radius = o.num("radius", 0.5f, kPositive);
         const int segments = o.integer("segments", 64, 3, 4096),
@@ -196,6 +203,19 @@ class SceneBuilder {
         break;
       }
     }
+    return mesh;
+  }
+
+  // `inherited`: the transform of the gltf object whose fallback this is.
+  void parsePrimitiveObject(const json& j, const std::string& ptr,
+                            std::optional<glm::mat4> inherited, const std::string& default_name) {
+    const PrimKind kind = primitiveKind(j, ptr);
+    Obj o(ctx_, j, ptr, primitiveKeys(kind));
+    Object obj;
+    obj.name = o.string("name", default_name);
+    obj.transform = o.has("transform") ? parseTransform(ctx_, o["transform"], o.at("transform"))
+                                       : inherited.value_or(glm::mat4(1.0f));
+    Mesh mesh = primitiveMesh(o, kind);
     mesh.material = o.has("material") ? materialRef(o["material"], o.at("material"), obj.name)
                                       : defaultMaterial();
     mesh.name = obj.name + "/" + mesh.name;
@@ -256,9 +276,6 @@ class SceneBuilder {
       ctx_.fail(o.at("gltf"), e.what());
     }
   }
-
-  enum class PrimKind { Sphere, Plane, Box, Capsule };
-  static constexpr std::string_view kPrimNames[] = {"sphere", "plane", "box", "capsule"};
 
   const Ctx& ctx_;
   Scene& scene_;
