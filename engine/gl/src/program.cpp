@@ -231,6 +231,55 @@ std::string glString(GLenum e) {
   const auto* s = reinterpret_cast<const char*>(glGetString(e));
   return s ? s : "";
 }
+
+// The program stored under `file`, or nothing when it is missing, unreadable or rejected by the
+// driver (then compiled again and the entry rewritten).
+std::optional<Program> loadBinary(const fs::path& file, const BinaryKey& bkey,
+                                  const std::string& name, VariantInfo& info) {
+  BinaryBlob blob;
+  std::string why;
+  const auto t0 = Clock::now();
+  if (!readBinary(file, bkey, blob, why)) {
+    if (why != "missing")
+      log::debug("program binary cache: ignoring " + file.string() + " (" + why + ")");
+    return std::nullopt;
+  }
+  Program p(glCreateProgram(), name);
+  glProgramBinary(p.id(), blob.format, blob.data.data(), GLsizei(blob.data.size()));
+  GLint ok = GL_FALSE;
+  glGetProgramiv(p.id(), GL_LINK_STATUS, &ok);
+  if (!ok) {
+    // Expected now and then (another driver build, or a key that misses what the driver
+    // checks): compiled again and the entry rewritten, silently (--verbose shows it).
+    log::debug("program binary cache: " + file.string() + " rejected by the driver; " +
+               "compiling '" + name + "' and replacing it");
+    return std::nullopt;
+  }
+  info.cache_load_ms = msSince(t0);
+  info.from_binary_cache = true;
+  return p;
+}
+
+// Stores a freshly linked program's binary; a read-only cache must not stop rendering.
+void saveBinary(const Program& prog, const fs::path& file, const BinaryKey& bkey,
+                VariantInfo& info) {
+  GLint len = 0;
+  glGetProgramiv(prog.id(), GL_PROGRAM_BINARY_LENGTH, &len);
+  if (len <= 0) return;
+  BinaryBlob blob;
+  blob.data.resize(size_t(len));
+  GLsizei got = 0;
+  glGetProgramBinary(prog.id(), len, &got, &blob.format, blob.data.data());
+  blob.data.resize(size_t(std::max(got, 0)));
+  if (blob.data.empty()) return;
+  try {
+    writeBinary(file, bkey, blob);
+    info.binary_saved = true;
+  } catch (const std::exception& e) {
+    log::warn(std::string("program binary cache: not written: ") + e.what());
+  }
+}
+
 }  // namespace
 
 Program buildProgram(const ProgramDesc& desc, BuildTimings* timings, bool retrievable) {
@@ -319,28 +368,8 @@ GLuint ProgramCache::get(const ProgramDesc& desc) {
   if (binaryCacheEnabled()) {
     bkey = binaryKey(driver_, desc, sources);
     file = cacheFile(binary_dir_, bkey);
-    BinaryBlob blob;
-    std::string why;
-    const auto t0 = Clock::now();
-    if (readBinary(file, bkey, blob, why)) {
-      Program p(glCreateProgram(), desc.name);
-      glProgramBinary(p.id(), blob.format, blob.data.data(), GLsizei(blob.data.size()));
-      GLint ok = GL_FALSE;
-      glGetProgramiv(p.id(), GL_LINK_STATUS, &ok);
-      if (ok) {
-        info.cache_load_ms = msSince(t0);
-        info.from_binary_cache = true;
-        prog = std::move(p);
-        ++hits_;
-      } else {
-        // Expected now and then (another driver build, or a key that misses what the driver
-        // checks): compiled again and the entry rewritten, silently (--verbose shows it).
-        log::debug("program binary cache: " + file.string() + " rejected by the driver; " +
-                   "compiling '" + desc.name + "' and replacing it");
-      }
-    } else if (why != "missing") {
-      log::debug("program binary cache: ignoring " + file.string() + " (" + why + ")");
-    }
+    prog = loadBinary(file, bkey, desc.name, info);
+    if (prog) ++hits_;
   }
   if (!prog) {
     BuildTimings t;
@@ -349,23 +378,7 @@ GLuint ProgramCache::get(const ProgramDesc& desc) {
     info.link_ms = t.link_ms;
     if (binaryCacheEnabled()) {
       ++misses_;
-      GLint len = 0;
-      glGetProgramiv(prog->id(), GL_PROGRAM_BINARY_LENGTH, &len);
-      if (len > 0) {
-        BinaryBlob blob;
-        blob.data.resize(size_t(len));
-        GLsizei got = 0;
-        glGetProgramBinary(prog->id(), len, &got, &blob.format, blob.data.data());
-        blob.data.resize(size_t(std::max(got, 0)));
-        try {
-          if (!blob.data.empty()) {
-            writeBinary(file, bkey, blob);
-            info.binary_saved = true;
-          }
-        } catch (const std::exception& e) {  // a read-only cache must not stop rendering
-          log::warn(std::string("program binary cache: not written: ") + e.what());
-        }
-      }
+      saveBinary(*prog, file, bkey, info);
     }
   }
   const GLuint id = prog->id();
