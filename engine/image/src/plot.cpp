@@ -115,105 +115,129 @@ std::vector<double> logTicks(double lo, double hi) {
   return ticks;
 }
 
-ImageRGBA8 drawScatterPlot(const ScatterPlot& plot, int width, int height) {
-  width = std::max(width, 320), height = std::max(height, 240);
-  ImageRGBA8 img = makeImageRGBA8(width, height);
-  fillRect(img, 0, 0, width, height, Rgb8{255, 255, 255});
+namespace {
 
-  const int left = 90, right = width - 24, top = 56, bottom = height - 64;  // plot area
-  auto ok = [&](const PlotPoint& p) {
-    return std::isfinite(p.x) && std::isfinite(p.y) && (!plot.log_y || p.y > 0.0);
-  };
+bool plottable(const ScatterPlot& plot, const PlotPoint& p) {
+  return std::isfinite(p.x) && std::isfinite(p.y) && (!plot.log_y || p.y > 0.0);
+}
+
+// The plot area in pixels and the data range it shows, with the mapping between them.
+struct PlotFrame {
+  int left = 0, right = 0, top = 0, bottom = 0;
+  double x_lo = 0.0, x_hi = 1.0, y_lo = 0.0, y_hi = 1.0;
+  bool log_y = false;
+  int px(double x) const {
+    return left + int(std::lround((x - x_lo) / (x_hi - x_lo) * (right - left)));
+  }
+  int py(double y) const {
+    const double t = log_y ? (std::log10(std::max(y, y_lo)) - std::log10(y_lo)) /
+                                 (std::log10(y_hi) - std::log10(y_lo))
+                           : (y - y_lo) / (y_hi - y_lo);
+    return bottom - int(std::lround(t * (bottom - top)));
+  }
+};
+
+PlotFrame plotFrame(const ScatterPlot& plot, int width, int height) {
+  PlotFrame f{.left = 90, .right = width - 24, .top = 56, .bottom = height - 64};
+  f.log_y = plot.log_y;
   double x_lo = std::numeric_limits<double>::infinity(), x_hi = -x_lo, y_lo = x_lo, y_hi = -x_lo;
   for (const PlotPoint& p : plot.points) {
-    if (!ok(p)) continue;
+    if (!plottable(plot, p)) continue;
     x_lo = std::min(x_lo, p.x), x_hi = std::max(x_hi, p.x);
     y_lo = std::min(y_lo, p.y), y_hi = std::max(y_hi, p.y);
   }
   if (!std::isfinite(x_lo)) x_lo = 0.0, x_hi = 1.0, y_lo = plot.log_y ? 0.1 : 0.0, y_hi = 1.0;
-  {  // margins: 8% of the x range on both sides; y: a fraction of a decade or 8% of the range
-    const double dx = std::max(x_hi - x_lo, std::max(std::abs(x_hi), 1e-6) * 0.1);
-    x_lo -= 0.08 * dx, x_hi += 0.08 * dx;
-    if (plot.log_y) {
-      y_lo /= 1.6, y_hi *= 1.6;
-    } else {
-      const double dy = std::max(y_hi - y_lo, std::max(std::abs(y_hi), 1e-6) * 0.1);
-      y_lo -= 0.08 * dy, y_hi += 0.08 * dy;
-    }
+  // Margins: 8% of the x range on both sides; y: a fraction of a decade or 8% of the range.
+  const double dx = std::max(x_hi - x_lo, std::max(std::abs(x_hi), 1e-6) * 0.1);
+  x_lo -= 0.08 * dx, x_hi += 0.08 * dx;
+  if (plot.log_y) {
+    y_lo /= 1.6, y_hi *= 1.6;
+  } else {
+    const double dy = std::max(y_hi - y_lo, std::max(std::abs(y_hi), 1e-6) * 0.1);
+    y_lo -= 0.08 * dy, y_hi += 0.08 * dy;
   }
-  auto px = [&](double x) {
-    return left + int(std::lround((x - x_lo) / (x_hi - x_lo) * (right - left)));
-  };
-  auto py = [&](double y) {
-    const double t = plot.log_y ? (std::log10(std::max(y, y_lo)) - std::log10(y_lo)) /
-                                      (std::log10(y_hi) - std::log10(y_lo))
-                                : (y - y_lo) / (y_hi - y_lo);
-    return bottom - int(std::lround(t * (bottom - top)));
-  };
+  f.x_lo = x_lo, f.x_hi = x_hi, f.y_lo = y_lo, f.y_hi = y_hi;
+  return f;
+}
 
-  // Grid, ticks and tick labels.
-  for (double t : linearTicks(x_lo, x_hi)) {
-    const int x = px(t);
-    drawLine(img, x, top, x, bottom, kGrid);
-    drawLine(img, x, bottom, x, bottom + 5, kBlack);
+// Grid, ticks, tick labels, axes, title, axis labels and the legend.
+void drawAxes(ImageRGBA8& img, const PlotFrame& f, const ScatterPlot& plot) {
+  for (double t : linearTicks(f.x_lo, f.x_hi)) {
+    const int x = f.px(t);
+    drawLine(img, x, f.top, x, f.bottom, kGrid);
+    drawLine(img, x, f.bottom, x, f.bottom + 5, kBlack);
     const std::string s = tickLabel(t);
-    drawText(img, x - textWidth(s, 2) / 2, bottom + 9, s, 2, kBlack);
+    drawText(img, x - textWidth(s, 2) / 2, f.bottom + 9, s, 2, kBlack);
   }
-  for (double t : plot.log_y ? logTicks(y_lo, y_hi) : linearTicks(y_lo, y_hi)) {
-    const int y = py(t);
-    drawLine(img, left, y, right, y, kGrid);
-    drawLine(img, left - 5, y, left, y, kBlack);
+  for (double t : plot.log_y ? logTicks(f.y_lo, f.y_hi) : linearTicks(f.y_lo, f.y_hi)) {
+    const int y = f.py(t);
+    drawLine(img, f.left, y, f.right, y, kGrid);
+    drawLine(img, f.left - 5, y, f.left, y, kBlack);
     const std::string s = tickLabel(t);
-    drawText(img, left - 9 - textWidth(s, 2), y - kTextHeight, s, 2, kBlack);
+    drawText(img, f.left - 9 - textWidth(s, 2), y - kTextHeight, s, 2, kBlack);
   }
-  drawLine(img, left, top, left, bottom, kBlack);
-  drawLine(img, left, bottom, right, bottom, kBlack);
-  drawText(img, left, 12, plot.title, 2, kBlack);
-  if (!plot.front.empty()) {  // legend
+  drawLine(img, f.left, f.top, f.left, f.bottom, kBlack);
+  drawLine(img, f.left, f.bottom, f.right, f.bottom, kBlack);
+  drawText(img, f.left, 12, plot.title, 2, kBlack);
+  if (!plot.front.empty()) {
     const std::string legend = "front (no row faster and more accurate)";
-    const int lx = right - textWidth(legend, 2);
-    fillDisc(img, lx - 12, top - 15, 5, kFront);
-    drawText(img, lx, top - 22, legend, 2, kFront);
+    const int lx = f.right - textWidth(legend, 2);
+    fillDisc(img, lx - 12, f.top - 15, 5, kFront);
+    drawText(img, lx, f.top - 22, legend, 2, kFront);
   }
-  drawText(img, left, top - 22, plot.y_label, 2, kBlack);
-  drawText(img, (left + right - textWidth(plot.x_label, 2)) / 2, height - 26, plot.x_label, 2,
-           kBlack);
+  drawText(img, f.left, f.top - 22, plot.y_label, 2, kBlack);
+  drawText(img, (f.left + f.right - textWidth(plot.x_label, 2)) / 2, img.height - 26, plot.x_label,
+           2, kBlack);
+}
 
-  // The front as a staircase (each point dominates the region to its upper right).
-  for (size_t i = 1; i < plot.front.size(); ++i) {
-    const PlotPoint& a = plot.points[plot.front[i - 1]];
-    const PlotPoint& b = plot.points[plot.front[i]];
-    if (!ok(a) || !ok(b)) continue;
-    drawLine(img, px(a.x), py(a.y), px(b.x), py(a.y), kFront);
-    drawLine(img, px(b.x), py(a.y), px(b.x), py(b.y), kFront);
-  }
-  std::vector<Box> taken;
+// Labels: the first of a few positions around the point that overlaps no label or point.
+void drawPointLabels(ImageRGBA8& img, const PlotFrame& f, const ScatterPlot& plot,
+                     std::vector<Box>& taken) {
   for (const PlotPoint& p : plot.points) {
-    if (!ok(p)) continue;
-    const int r = p.marked ? 5 : 3;
-    fillDisc(img, px(p.x), py(p.y), r, p.marked ? kFront : kPoint);
-    taken.push_back({px(p.x) - r, py(p.y) - r, px(p.x) + r + 1, py(p.y) + r + 1});
-  }
-  // Labels: the first of a few positions around the point that overlaps no label or point.
-  for (const PlotPoint& p : plot.points) {
-    if (!ok(p) || !p.labeled || p.label.empty()) continue;
-    const int w = textWidth(p.label, 2), h = 2 * kTextHeight, x = px(p.x), y = py(p.y);
+    if (!plottable(plot, p) || !p.labeled || p.label.empty()) continue;
+    const int w = textWidth(p.label, 2), h = 2 * kTextHeight, x = f.px(p.x), y = f.py(p.y);
     const int cand[][2] = {{8, -h - 2},      {8, 4},         {-8 - w, -h - 2},     {-8 - w, 4},
                            {8, -2 * h - 6},  {8, h + 8},     {-8 - w, -2 * h - 6}, {-8 - w, h + 8},
                            {8, -3 * h - 10}, {8, 2 * h + 12}};
     Box best{x + cand[0][0], y + cand[0][1], x + cand[0][0] + w, y + cand[0][1] + h};
     for (const auto& c : cand) {
       Box b{x + c[0], y + c[1], x + c[0] + w, y + c[1] + h};
-      if (b.x0 < 0 || b.x1 > width || b.y0 < top - 4 || b.y1 > bottom) continue;
+      if (b.x0 < 0 || b.x1 > img.width || b.y0 < f.top - 4 || b.y1 > f.bottom) continue;
       if (std::none_of(taken.begin(), taken.end(), [&](const Box& o) { return b.overlaps(o); })) {
         best = b;
         break;
       }
     }
-    best.x0 = std::clamp(best.x0, 0, std::max(width - w, 0));
+    best.x0 = std::clamp(best.x0, 0, std::max(img.width - w, 0));
     drawText(img, best.x0, best.y0, p.label, 2, p.marked ? kFront : kBlack);
     taken.push_back(best);
   }
+}
+
+}  // namespace
+
+ImageRGBA8 drawScatterPlot(const ScatterPlot& plot, int width, int height) {
+  width = std::max(width, 320), height = std::max(height, 240);
+  ImageRGBA8 img = makeImageRGBA8(width, height);
+  fillRect(img, 0, 0, width, height, Rgb8{255, 255, 255});
+  const PlotFrame f = plotFrame(plot, width, height);
+  drawAxes(img, f, plot);
+  // The front as a staircase (each point dominates the region to its upper right).
+  for (size_t i = 1; i < plot.front.size(); ++i) {
+    const PlotPoint& a = plot.points[plot.front[i - 1]];
+    const PlotPoint& b = plot.points[plot.front[i]];
+    if (!plottable(plot, a) || !plottable(plot, b)) continue;
+    drawLine(img, f.px(a.x), f.py(a.y), f.px(b.x), f.py(a.y), kFront);
+    drawLine(img, f.px(b.x), f.py(a.y), f.px(b.x), f.py(b.y), kFront);
+  }
+  std::vector<Box> taken;
+  for (const PlotPoint& p : plot.points) {
+    if (!plottable(plot, p)) continue;
+    const int r = p.marked ? 5 : 3;
+    fillDisc(img, f.px(p.x), f.py(p.y), r, p.marked ? kFront : kPoint);
+    taken.push_back({f.px(p.x) - r, f.py(p.y) - r, f.px(p.x) + r + 1, f.py(p.y) + r + 1});
+  }
+  drawPointLabels(img, f, plot, taken);
   return img;
 }
 
