@@ -140,67 +140,36 @@ void drawLightTable(LightsPanelModel& model) {
   }
   ImGui::EndTable();
 }
-}  // namespace
 
-bool drawLightsContents(LightsPanelModel& model) {
+// The selected light's shape and emission, each field edited through the model.
+bool drawLightFields(LightsPanelModel& model, const Light& cur) {
   bool changed = false;
-  ImGui::Text("%zu lights", model.count());
-  bool first = true;
-  for (LightType t : {LightType::Point, LightType::Sphere, LightType::Tube}) {
-    const std::string label = "+ " + std::string(toString(t));
-    if (!first) ImGui::SameLine();
-    first = false;
-    if (ImGui::SmallButton(label.c_str())) {
-      model.add(t);
-      changed = true;
-    }
+  Light l = cur;
+  int type = int(l.type);
+  if (nameCombo("type", &type, enumNames<LightType>())) changed |= model.setType(LightType(type));
+  if (ImGui::DragFloat3("position", &l.position.x, 0.02f)) changed |= model.setPosition(l.position);
+  if (ImGui::ColorEdit3("color", &l.color.x, ImGuiColorEditFlags_Float)) {
+    changed |= model.setColor(l.color);
   }
-  pushLabelColumn({"type", "position", "color", "intensity", "range", "radius", "length", "axis",
-                   "shadows", "shadow filter", "count", "point", "sphere", "tube", "box min",
-                   "box max", "seed"});
-  if (model.count() > 0) {
-    drawLightTable(model);
-    if (const Light* cur = model.current()) {
-      Light l = *cur;
-      int type = int(l.type);
-      if (nameCombo("type", &type, enumNames<LightType>()))
-        changed |= model.setType(LightType(type));
-      if (ImGui::DragFloat3("position", &l.position.x, 0.02f))
-        changed |= model.setPosition(l.position);
-      if (ImGui::ColorEdit3("color", &l.color.x, ImGuiColorEditFlags_Float)) {
-        changed |= model.setColor(l.color);
-      }
-      if (ImGui::DragFloat("intensity", &l.intensity, 0.1f, 0.0f, 1e4f)) {
-        changed |= model.setIntensity(l.intensity);
-      }
-      if (ImGui::DragFloat("range", &l.range, 0.05f, 0.01f, 1e3f))
-        changed |= model.setRange(l.range);
-      if (l.type != LightType::Point &&
-          ImGui::DragFloat("radius", &l.radius, 0.005f, 0.0f, 100.0f)) {
-        changed |= model.setRadius(l.radius);
-      }
-      if (l.type == LightType::Tube) {
-        if (ImGui::DragFloat("length", &l.length, 0.01f, 0.0f, 100.0f)) {
-          changed |= model.setLength(l.length);
-        }
-        if (ImGui::DragFloat3("axis", &l.axis.x, 0.01f, -1.0f, 1.0f))
-          changed |= model.setAxis(l.axis);
-      }
-      bool shadows = l.shadows;
-      if (ImGui::Checkbox("shadows", &shadows)) changed |= model.setShadows(shadows);
-      if (ImGui::Button("Remove")) changed |= model.remove(model.selected());
-      ImGui::SameLine();
-    }
-    if (ImGui::Button("Remove all")) {
-      model.clear();
-      changed = true;
-    }
-    // One filter for every shadowed light (settings.shadow_filter; docs/lights.md "Shadows").
-    int filter = int(model.shadowFilter());
-    if (nameCombo("shadow filter", &filter, enumNames<ShadowFilter>())) {
-      changed |= model.setShadowFilter(ShadowFilter(filter));
-    }
+  if (ImGui::DragFloat("intensity", &l.intensity, 0.1f, 0.0f, 1e4f)) {
+    changed |= model.setIntensity(l.intensity);
   }
+  if (ImGui::DragFloat("range", &l.range, 0.05f, 0.01f, 1e3f)) changed |= model.setRange(l.range);
+  if (l.type != LightType::Point && ImGui::DragFloat("radius", &l.radius, 0.005f, 0.0f, 100.0f)) {
+    changed |= model.setRadius(l.radius);
+  }
+  if (l.type == LightType::Tube) {
+    if (ImGui::DragFloat("length", &l.length, 0.01f, 0.0f, 100.0f)) {
+      changed |= model.setLength(l.length);
+    }
+    if (ImGui::DragFloat3("axis", &l.axis.x, 0.01f, -1.0f, 1.0f)) changed |= model.setAxis(l.axis);
+  }
+  return changed;
+}
+
+// Random lights replacing or appended to the scene's (halfvec/scene/light_generator.hpp).
+bool drawLightGenerator(LightsPanelModel& model) {
+  bool changed = false;
   if (ImGui::CollapsingHeader("Generate random lights")) {
     LightGenerator& g = model.generator;
     ImGui::SliderInt("count", &g.count, 1, 4096);
@@ -225,6 +194,46 @@ bool drawLightsContents(LightsPanelModel& model) {
       changed = true;
     }
   }
+  return changed;
+}
+}  // namespace
+
+bool drawLightsContents(LightsPanelModel& model) {
+  bool changed = false;
+  ImGui::Text("%zu lights", model.count());
+  bool first = true;
+  for (LightType t : {LightType::Point, LightType::Sphere, LightType::Tube}) {
+    const std::string label = "+ " + std::string(toString(t));
+    if (!first) ImGui::SameLine();
+    first = false;
+    if (ImGui::SmallButton(label.c_str())) {
+      model.add(t);
+      changed = true;
+    }
+  }
+  pushLabelColumn({"type", "position", "color", "intensity", "range", "radius", "length", "axis",
+                   "shadows", "shadow filter", "count", "point", "sphere", "tube", "box min",
+                   "box max", "seed"});
+  if (model.count() > 0) {
+    drawLightTable(model);
+    if (const Light* cur = model.current()) {
+      changed |= drawLightFields(model, *cur);
+      bool shadows = cur->shadows;
+      if (ImGui::Checkbox("shadows", &shadows)) changed |= model.setShadows(shadows);
+      if (ImGui::Button("Remove")) changed |= model.remove(model.selected());
+      ImGui::SameLine();
+    }
+    if (ImGui::Button("Remove all")) {
+      model.clear();
+      changed = true;
+    }
+    // One filter for every shadowed light (settings.shadow_filter; docs/lights.md "Shadows").
+    int filter = int(model.shadowFilter());
+    if (nameCombo("shadow filter", &filter, enumNames<ShadowFilter>())) {
+      changed |= model.setShadowFilter(ShadowFilter(filter));
+    }
+  }
+  changed |= drawLightGenerator(model);
   ImGui::PopItemWidth();
   return changed;
 }
