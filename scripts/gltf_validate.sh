@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Cross-checks the glTF loader against the Khronos glTF Validator (issue 29): runs both on every
+# Cross-checks the glTF loader against the Khronos glTF Validator: runs both on every
 # .gltf/.glb under ../shared/assets and tests/fuzz, and prints each file where they disagree:
 #   validator errors but halfvec loads it, or no validator error but halfvec rejects it.
 # The validator (npm gltf-validator, pinned) is installed by this script into

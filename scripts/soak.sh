@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Soak test (issue 18), about 30 minutes on llvmpipe:
+# Soak test, about 30 minutes on llvmpipe:
 #  1. HV_SOAK_FRAMES (default 3000) frames of many_lights in one process and HV_SOAK_RELOADS
 #     (default 300) headless reloads of the glTF sample through the viewer's SceneReloader, with
 #     RSS and live GL objects (tests/app/test_soak.cpp, the suite runs short versions);

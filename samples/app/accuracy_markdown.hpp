@@ -18,14 +18,14 @@ std::string row(const std::vector<std::string>& cells);
 std::string headerRow(const std::vector<std::string>& cells);
 
 // The one-screen summary at the top: worst and typical error of every method per light type and
-// term, and the issue's goals checked.
+// term, and the goals checked.
 std::string summaryMarkdown(const eval::SphereAccuracy& sphere, const eval::TubeAccuracy& tube,
                             const eval::PointLightAccuracy& point,
                             const eval::AmbientAccuracy& ambient);
 std::string pointLightMarkdown(const eval::PointLightAccuracy& a);
 std::string sphereMarkdown(const eval::SphereAccuracy& a);
 std::string tubeMarkdown(const eval::TubeAccuracy& a);
-// Item 4 of issue 14: the LTC modes when the scene's V or D differs from the fitted lobe.
+// The LTC modes when the scene's V or D differs from the fitted lobe.
 std::string otherBrdfMarkdown(const eval::SphereAccuracy& sphere, const eval::TubeAccuracy& tube);
 std::string ambientMarkdown(const eval::AmbientAccuracy& a);
 // `heat_dir`: the folder name of the heat maps relative to the document.

@@ -1,4 +1,4 @@
-// Hostile command lines (issue 18): --size parsed strictly, and outputs that appear whole or not
+// Hostile command lines: --size parsed strictly, and outputs that appear whole or not
 // at all (render, reference): an output that cannot be written fails the command, before the
 // render, and leaves none of that run's outputs, nor a temporary file.
 #include <gtest/gtest.h>
@@ -185,7 +185,7 @@ std::string slurp(const fs::path& p) {
 
 }  // namespace
 
-// Issue 29: `render scene.json --out scene.json` overwrote the scene with the PNG and
+// Regression: `render scene.json --out scene.json` overwrote the scene with the PNG and
 // `compare a.png b.png --heatmap a.png` an input with the heat map, exit 0. An output that is
 // an input of the same command (by path, hard link or symlink) fails before any work, and the
 // input is left as it was.
@@ -233,7 +233,7 @@ TEST(CliHostile, AnOutputOverAnInputIsRefused) {
   EXPECT_EQ(slurp(dir / "b.png"), png);
 }
 
-// Issue 29: `--out /dev/full` replaced the device node with a regular file, exit 0. On a private
+// Regression: `--out /dev/full` replaced the device node with a regular file, exit 0. On a private
 // device (mknod with /dev/null's and /dev/full's numbers): /dev/null takes the image and stays a
 // device; /dev/full fails the run (exit 1) and the other outputs are not written.
 TEST(CliHostile, DeviceOutputsAreWrittenNotReplaced) {
@@ -322,7 +322,7 @@ std::string halfvec() {
 
 }  // namespace
 
-// Issue 29: every run printed "program binary cache ... rejected by the driver (stale?)". Found:
+// Regression: every run printed "program binary cache ... rejected by the driver (stale?)". Found:
 // llvmpipe's binaries depend on the number of CPUs the process may use, which the key did not
 // hold, so a run under another CPU set (taskset, a scheduler's cgroup) was handed binaries the
 // driver refuses. Now each CPU set has entries of its own: no rejection, even with --verbose, and
@@ -347,7 +347,7 @@ TEST(CliHostile, ProgramBinaryCacheIsNotRejectedUnderAnotherCpuSet) {
   EXPECT_NE(out.find(" 0 misses"), std::string::npos) << out;
 }
 
-// Issue 29: a scene at the documented light budget (kMaxSceneLights = 1,048,576 lights) took 84 s
+// Regression: a scene at the documented light budget (kMaxSceneLights = 1,048,576 lights) took 84 s
 // at 64x36, 81 s in the emitter pass, which drew every light. It must render in under 10 s of CPU
 // time (every thread of the process: at most 10 s of wall time on an idle machine, whatever the
 // load of a shared one).

@@ -1,4 +1,4 @@
-// Soak (issue 18): many frames of many_lights in one process, and many hot reloads of the glTF
+// Soak: many frames of many_lights in one process, and many hot reloads of the glTF
 // sample through the viewer's SceneReloader, recording memory and live GL objects. Nothing may
 // grow once warmed up: live GL objects constant, and the largest heap in use after warm-up within
 // 2% (+ 4 MB for the short runs) of the largest during it. The heap in use (mallinfo2: bytes in
@@ -9,7 +9,7 @@
 // without any memory being lost. The driver frees a replaced scene's textures some frames
 // late, so a reload sample may hold one more scene's textures: that is allowed for, once. Peaks are
 // compared, not single samples (the driver frees the previous scene's objects late). The suite runs
-// short versions; scripts/soak.sh runs the issue's counts (HV_SOAK_FRAMES=3000,
+// short versions; scripts/soak.sh runs the long counts (HV_SOAK_FRAMES=3000,
 // HV_SOAK_RELOADS=300) and the viewer itself under Xvfb.
 #include <gtest/gtest.h>
 

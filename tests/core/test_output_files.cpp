@@ -141,7 +141,7 @@ bool has(const std::string& s, const std::string& what) {
 
 }  // namespace
 
-// Issue 29: `--out /dev/full` replaced the device node with a regular file, exit 0. A character
+// Regression: `--out /dev/full` replaced the device node with a regular file, exit 0. A character
 // device is written directly (its node stays), and a failed device write fails the commit
 // before any file was replaced.
 TEST(OutputFiles, CharacterDevicesAreWrittenNotReplaced) {
@@ -197,7 +197,7 @@ TEST(OutputFiles, SymlinkDestinationReplacesItsTarget) {
   EXPECT_EQ(slurp(d / "real.png"), "new");
 }
 
-// Issue 29: `render scene.json --out scene.json` overwrote the scene. An output that is an input
+// Regression: `render scene.json --out scene.json` overwrote the scene. An output that is an input
 // (the same path, a hard link or a symlink of it) is refused when added, either order.
 TEST(OutputFiles, AnInputCannotBeAnOutput) {
   const fs::path d = freshDir("inputs");
@@ -229,7 +229,7 @@ TEST(OutputFiles, AnInputCannotBeAnOutput) {
   EXPECT_EQ(slurp(d / "other.json"), "x");
 }
 
-// Issue 29: every SIGKILL left a ".NAME.XXXXXX" temporary beside the output, never cleaned up.
+// Regression: every SIGKILL left a ".NAME.XXXXXX" temporary beside the output, never cleaned up.
 // A run killed outright cannot remove its temporaries, but its lock on them goes with it: the
 // next run writing the same destination removes them, and never one a live run holds.
 TEST(OutputFilesDeathTest, AKilledRunsTemporaryIsRemovedByTheNext) {

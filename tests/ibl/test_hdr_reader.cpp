@@ -151,7 +151,7 @@ TEST(HdrReader, MixedScanlineEncodingsDecodeExactly) {
 }
 
 TEST(HdrReader, DeclaredSizeMustFitTheData) {
-  // The file: an RLE raster declaring 18918 x 9459 (4.9 GB decoded): over the limit.
+  // A reported file: an RLE raster declaring 18918 x 9459 (4.9 GB decoded): over the limit.
   std::string e = errorOf(hdrFile(18918, 9459, std::string(1 << 16, '\x7f')));
   EXPECT_NE(e.find("kMaxHdrWidth"), std::string::npos) << e;
   // Within the limit, but a few bytes cannot hold 16384 x 8192 pixels: rejected before

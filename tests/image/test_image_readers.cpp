@@ -179,7 +179,7 @@ TEST(ImageReaders, PfmDeclaredSizeMustFitTheData) {
   EXPECT_NE(e.find("bad header"), std::string::npos) << e;
 }
 
-// Issue 29: a directory or /dev/zero as an input reported "file not found" (and /dev/zero, read
+// Regression: a directory or /dev/zero as an input reported "file not found" (and /dev/zero, read
 // through, would not end). Each image reader names what the path is, at once; a FIFO is not
 // waited on.
 TEST(ImageReaders, SpecialFilesAreNamedForWhatTheyAre) {

@@ -168,7 +168,7 @@ TEST(LightPass, TiledEqualsBruteForceWith4096Lights) {
   EXPECT_GT(mean / tiled.px.size(), 0.01) << "lights should light the plane";
 }
 
-// 65,536 lights (the "no small fixed cap" case): the culled tile lists outgrow the
+// 65,536 lights (no small fixed cap): the culled tile lists outgrow the
 // initial index list (grown before the fill from the CPU bound, no cap), and the tiled image still
 // equals the sum of every light evaluated on the CPU (hv::glsl::evaluateLight over all 65,536
 // lights) at sampled pixels. Tolerance: 3e-3 relative + 1e-5 (RGBA16F target: 2^-11 relative, plus

@@ -1,4 +1,4 @@
-// Hostile glTF/GLB files (issue 18): offsets and counts near 2^64, node chains deeper than any
+// Hostile glTF/GLB files: offsets and counts near 2^64, node chains deeper than any
 // stack, node graphs that reuse nodes into billions of instances, images that decode into
 // gigabytes, broken GLB containers. Each must be rejected with a SceneError that names the file
 // and the element, leaving the scene unchanged (how fast: scripts/fuzz.sh replays them timed).
@@ -309,7 +309,7 @@ TEST(GltfHostile, DeepJsonIsRejected) {
   EXPECT_TRUE(has(e, "max_json_depth")) << e;
 }
 
-// Issue 29: a 1e38 translation and an all-zero matrix were rejected with errors about
+// Regression: a 1e38 translation and an all-zero matrix were rejected with errors about
 // "/camera/...", a camera the user never wrote (the framing of the model's bounds), and a node
 // with scale 0 (valid glTF) was refused. Now: an out-of-range transform is reported at the node,
 // by index and name; a singular one (scale 0) hides the node's mesh, with one warning.

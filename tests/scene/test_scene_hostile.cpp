@@ -1,4 +1,4 @@
-// Hostile scene files and overrides (issue 18): values that pass a check in double but break as
+// Hostile scene files and overrides: values that pass a check in double but break as
 // the float they are stored in, a few KB of JSON asking for gigabytes, numbers beyond double range,
 // override indices beyond size_t. Each must give a SceneError naming the file and the JSON path.
 #include <gtest/gtest.h>
@@ -35,7 +35,7 @@ bool has(const std::string& s, const std::string& what) {
 }  // namespace
 
 TEST(SceneHostile, ValuesAreValidatedAsTheFloatTheyBecome) {
-  // The issue's ten cases that rendered with exit 0 and a broken image, and the sphere radius
+  // Ten cases that once rendered with exit 0 and a broken image, and the sphere radius
   // whose error named neither file nor field.
   const struct {
     const char* json;
@@ -192,7 +192,7 @@ std::pair<std::string, std::string> fileErrors(const fs::path& path) {
 
 }  // namespace
 
-// Issue 29: 100,000 nested '[' (195 KB) crashed with SIGSEGV; 50,000 too. Scene JSON nesting is
+// Regression: 100,000 nested '[' (195 KB) crashed with SIGSEGV; 50,000 too. Scene JSON nesting is
 // bounded as glTF's is (kMaxSceneJsonDepth), with the position of the first level too deep.
 TEST(SceneHostile, DeepNestingIsRejectedWithItsPosition) {
   for (size_t depth : {size_t(65), size_t(50000), size_t(100000)}) {
@@ -215,7 +215,7 @@ TEST(SceneHostile, DeepNestingIsRejectedWithItsPosition) {
   EXPECT_TRUE(has(opened, "deep.json: line 1, column 65: JSON nesting")) << opened;
 }
 
-// Issue 29: `1e400` printed nlohmann's text without file or position when the scene was opened
+// Regression: `1e400` printed nlohmann's text without file or position when the scene was opened
 // by `halfvec render`. Both readers now say FILE: line L, column C.
 TEST(SceneHostile, ParseErrorsOfFilesNameFileLineAndColumn) {
   const fs::path d = hostileDir("parse");
@@ -235,7 +235,7 @@ TEST(SceneHostile, ParseErrorsOfFilesNameFileLineAndColumn) {
   }
 }
 
-// Issue 29: a symlink to /dev/zero grew past 3.9 GB; a FIFO hung; a directory reported "file not
+// Regression: a symlink to /dev/zero grew past 3.9 GB; a FIFO hung; a directory reported "file not
 // found". Each is refused by what it is, at once.
 TEST(SceneHostile, SpecialFilesAsTheSceneAreRefused) {
   const fs::path d = hostileDir("special");
@@ -261,7 +261,7 @@ TEST(SceneHostile, SpecialFilesAsTheSceneAreRefused) {
   EXPECT_TRUE(has(e, "/objects/0/gltf") && has(e, "is a directory")) << e;
 }
 
-// Issue 29: `exposure: 1e-6`, the documented minimum, was rejected ("expected a number in
+// Regression: `exposure: 1e-6`, the documented minimum, was rejected ("expected a number in
 // [1e-06, 1e+06], got 1e-06"): the float nearest 1e-6 is below the double. Bounds compare as
 // floats; just past them is still refused.
 TEST(SceneHostile, DocumentedBoundsAreAccepted) {

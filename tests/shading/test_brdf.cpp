@@ -182,7 +182,7 @@ double shadeWhite(const hv::Light& l, const g::Surface& s, const glm::vec3& V) {
          (double(l.intensity) * falloff);
 }
 
-// Issue 14 item 8: D_GGX near the mirror direction against Karis 2013 eq. 2 evaluated in double
+// D_GGX near the mirror direction against Karis 2013 eq. 2 evaluated in double
 // precision from the same (float) vectors. The specular lobe of a white metal (F = 1) is computed
 // by evaluateBrdf and by the point light (the light pass's code path: H from V + L, NoH, |N x H|^2)
 // at roughness 0.045-0.1, V at elevations 10-90 degrees, L within 0-3 alpha of the mirror direction

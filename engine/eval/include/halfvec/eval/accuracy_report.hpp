@@ -102,7 +102,7 @@ std::vector<MethodSummary> summarizeSphere(const SphereAccuracy& a, bool straddl
 std::vector<MethodSummary> summarizeTube(const TubeAccuracy& a);
 
 // The fraction of a method's configurations within `tol` of the reference at the peak (|E/R - 1|)
-// and over the views (|bias|), restricted by `use` (e.g. the goal grid); count = how many.
+// and over the views (|bias|), restricted by `use` (e.g. a goal's grid); count = how many.
 struct GoalCheck {
   size_t count = 0, within = 0;
   double worst_peak = 0.0, worst_bias = 0.0;  // largest |peak - 1| and |bias|

@@ -1,4 +1,4 @@
-// Cost of the light methods (issue 14, item 6): the light pass of one scene rendered once per
+// Cost of the light methods: the light pass of one scene rendered once per
 // method (RenderSettings of the sphere / tube modes), frames interleaved so that load from other
 // processes hits every method alike, median light-pass GPU ms and light-pixel evaluations per
 // second. `halfvec bench --methods` prints it per light type. Needs a current GL context.

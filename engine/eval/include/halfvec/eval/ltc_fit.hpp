@@ -1,4 +1,4 @@
-// Fitting the LTC table of shaders/common/ltc.glsl to the engine's own specular lobe (issue 14):
+// Fitting the LTC table of shaders/common/ltc.glsl to the engine's own specular lobe:
 // GGX D x height-correlated Smith V x cos, F = 1, evaluated with the terms of brdf.glsl compiled
 // as C++. Per cell of (roughness, N.V): the magnitude n_f and the Fresnel weight integral are
 // integrated (not fitted); the widths a_x, a_y, the skew s of M and the tilt of its axis (started
