@@ -1,0 +1,122 @@
+// The shadows section of `halfvec accuracy` (eval/shadow_accuracy.hpp) on a tiny grid: the
+// penumbra's 10%-90% width grows with the light's radius and with the receiver's distance from
+// the occluder in the engine (pcss) and in the reference with visibility rays, pcss stays near
+// the reference, and a point light's hard shadow boundary agrees with the traced one within one
+// pixel.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "halfvec/eval/engine_aov.hpp"
+#include "halfvec/eval/shadow_accuracy.hpp"
+#include "halfvec/platform/context.hpp"
+#include "halfvec/reference/reference.hpp"
+#include "halfvec/render/renderer.hpp"
+
+using namespace hv;
+using namespace hv::eval;
+
+namespace {
+
+const ShadowFilterError& pcss(const ShadowCaseResult& r) {
+  return r.filters.back();
+}
+
+}  // namespace
+
+// A synthetic profile: 0 up to 1 m, a linear ramp to 1 at 2 m: the 10%-90% width is 0.8 m.
+TEST(ShadowAccuracy, PenumbraWidthOfALinearRamp) {
+  ShadowProfile p;
+  for (int k = 0; k < 300; ++k) {
+    const float rho = 0.01f * (float(k) + 0.5f);
+    p.rho.push_back(rho);
+    p.unlit.push_back(2.0);
+    p.shadowed.push_back(2.0 * std::clamp(double(rho) - 1.0, 0.0, 1.0));
+    p.pixels.push_back(k % 7 == 3 ? 0 : 5);  // bins without pixels are skipped
+  }
+  EXPECT_NEAR(penumbraWidth(p), 0.8, 0.011);
+  // Never dark: no umbra in view, no width.
+  for (double& v : p.shadowed) v = std::max(v, 0.5);
+  EXPECT_TRUE(std::isnan(penumbraWidth(p)));
+}
+
+TEST(ShadowAccuracy, PenumbraWidensWithRadiusAndDistanceInEngineAndReference) {
+  auto ctx = createHeadlessContext();
+  ShadowCaseOptions o;
+  o.size = 96;
+  o.samples = 16;
+  double ref[2][2], eng[2][2];
+  const float radii[2] = {0.1f, 0.25f}, heights[2] = {0.5f, 1.2f};
+  for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      const ShadowCaseResult r = measureShadowCase({radii[i], 0.0f, {1, 0, 0}, heights[j]}, o);
+      ref[i][j] = r.reference_width;
+      eng[i][j] = pcss(r).width;
+      std::printf(
+          "r %.2f h %.1f: width ref %.4f pcss %.4f m (pixel %.4f m); mean rel: hard %.3f pcf "
+          "%.3f pcss %.3f, penumbra pcss %.3f, worst pcss %.3f\n",
+          double(radii[i]), double(heights[j]), ref[i][j], eng[i][j], r.pixel_metres,
+          r.filters[0].mean_rel, r.filters[1].mean_rel, pcss(r).mean_rel, pcss(r).penumbra_mean_rel,
+          pcss(r).worst_rel);
+      ASSERT_TRUE(std::isfinite(ref[i][j]) && std::isfinite(eng[i][j]));
+      ASSERT_GT(r.penumbra_pixels, 50u);
+      // The goal of the full grid (10%), with room for this grid's 16 samples per pixel.
+      EXPECT_LT(pcss(r).mean_rel, 0.15);
+    }
+  }
+  for (const auto* w : {&ref, &eng}) {
+    const char* who = w == &ref ? "reference" : "pcss";
+    for (int j = 0; j < 2; ++j) EXPECT_GT((*w)[1][j], 1.3 * (*w)[0][j]) << who << " radius";
+    for (int i = 0; i < 2; ++i) EXPECT_GT((*w)[i][1], 1.3 * (*w)[i][0]) << who << " height";
+  }
+}
+
+// A point light, `hard`: a floor pixel is shadowed in the engine where the reference's shadow
+// ray (exact for a point: no noise) is blocked, up to one pixel at the boundary.
+TEST(ShadowAccuracy, PointLightHardBoundaryWithinOnePixelOfTheReference) {
+  auto ctx = createHeadlessContext();
+  const int n = 128;
+  const Scene s = shadowCaseScene({0.0f, 0.0f, {1, 0, 0}, 1.0f}, ShadowFilter::Hard, 2048);
+  render::Renderer r;
+  r.setScene(s);
+  const ImageRGBf E = renderEngineAovs(r, n, n)[size_t(ReferenceAov::DirectDiffuse)];
+  const GBufferReadback g = r.readGBuffer();
+  ReferenceOptions ro;
+  ro.samples = 1;
+  ro.visibility = true;
+  const ImageRGBf on = renderReference(s, g, ro)[ReferenceAov::DirectDiffuse];
+  ro.visibility = false;
+  const ImageRGBf off = renderReference(s, g, ro)[ReferenceAov::DirectDiffuse];
+  // -1: not lit by the light (the occluder's underside, off the frame); 0 lit; 1 shadowed.
+  auto state = [](const ImageRGBf& img, const ImageRGBf& unlit, size_t i) {
+    const float u = unlit.px[i].x;
+    return u > 0.0f ? (img.px[i].x < 0.5f * u ? 1 : 0) : -1;
+  };
+  size_t shadowed = 0, differ = 0, beyond = 0;
+  for (int y = 0; y < n; ++y) {
+    for (int x = 0; x < n; ++x) {
+      const size_t i = size_t(y) * n + size_t(x);
+      const int t = state(on, off, i);
+      if (t < 0) continue;
+      shadowed += t == 1;
+      if (state(E, off, i) == t) continue;
+      ++differ;
+      bool near = false;
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int xx = x + dx, yy = y + dy;
+          if (xx < 0 || yy < 0 || xx >= n || yy >= n) continue;
+          const int u = state(on, off, size_t(yy) * n + size_t(xx));
+          near = near || (u >= 0 && u != t);
+        }
+      }
+      beyond += !near;
+    }
+  }
+  std::printf("point, hard: %zu shadowed pixels in the reference, %zu differ, %zu beyond one\n",
+              shadowed, differ, beyond);
+  EXPECT_GT(shadowed, 1000u);
+  EXPECT_EQ(beyond, 0u);
+}
