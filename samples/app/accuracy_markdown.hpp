@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "halfvec/eval/accuracy_report.hpp"
+#include "halfvec/eval/shadow_accuracy.hpp"
 
 namespace hv::app {
 
@@ -28,6 +29,8 @@ std::string tubeMarkdown(const eval::TubeAccuracy& a);
 // The LTC modes when the scene's V or D differs from the fitted lobe.
 std::string otherBrdfMarkdown(const eval::SphereAccuracy& sphere, const eval::TubeAccuracy& tube);
 std::string ambientMarkdown(const eval::AmbientAccuracy& a);
+// The shadows section: each filter against the reference with visibility rays.
+std::string shadowsMarkdown(const eval::ShadowAccuracy& a);
 // `heat_dir`: the folder name of the heat maps relative to the document.
 std::string scenesMarkdown(const std::vector<eval::SceneAccuracy>& scenes,
                            const std::string& heat_dir);

@@ -34,8 +34,8 @@ struct ShadowCaseOptions {
   int threads = 0;
 };
 
-// The scene of a case (matte white floor, grey occluder, no environment, inverse-square falloff),
-// its light casting shadows with `filter`.
+// The scene of a case (matte white floor, grey occluder, no environment, inverse-square falloff,
+// the most accurate sphere and tube diffuse methods), its light casting shadows with `filter`.
 Scene shadowCaseScene(const ShadowCase& c, ShadowFilter filter, int map_size);
 
 // The profile of a shadow along +x: per bin of distance from the shadow's center (one pixel's
@@ -53,22 +53,26 @@ struct ShadowProfile {
 double penumbraWidth(const ShadowProfile& p);
 
 // The engine (one filter) against the reference over a case's floor pixels that are not umbra
-// in both (lit and penumbra: either value at least 2% of the unshadowed reference).
+// in both (lit and penumbra: the engine's value at least 2% of the engine's unshadowed value, or
+// the reference's of the reference's without visibility).
 struct ShadowFilterError {
   ShadowFilter filter = ShadowFilter::Pcss;
   double mean_rel = 0.0;           // sum |E - R| / sum R over lit and penumbra pixels
   double penumbra_mean_rel = 0.0;  // the same over penumbra pixels (either between 2% and 98%)
   double worst_rel = 0.0;          // largest |E - R| / R of a profile bin with R >= 10% unlit
   float worst_rho = 0.0f;          // where (metres from the shadow's center)
-  double width = 0.0;              // the engine's penumbra width (penumbraWidth)
-  ShadowProfile profile;
+  double width = 0.0;              // penumbraWidth of `profile`
+  ShadowProfile profile;           // shadowed over the engine's own unshadowed frame
 };
 struct ShadowCaseResult {
   ShadowCase c;
   size_t pixels = 0, penumbra_pixels = 0;  // of the reference
   double reference_width = 0.0;
   double reference_noise = 0.0;  // the reference's pixel_noise over the pixels (LitStats)
-  double pixel_metres = 0.0;     // a pixel's footprint on the floor
+  // The engine without shadows against the reference without visibility, over the floor pixels:
+  // the shading's own error (the shadowed frames' penumbra widths are relative to that frame).
+  double unshadowed_mean_rel = 0.0;
+  double pixel_metres = 0.0;  // a pixel's footprint on the floor
   ShadowProfile reference_profile;
   std::vector<ShadowFilterError> filters;  // hard, pcf, pcss
 };
