@@ -148,12 +148,15 @@ float shadowVisibility(vec3 Lpos, float far, float layer, float radius, vec3 axi
     vec2 radii = vec2(HV_SHADOW_PCF_RADIUS * texel);
 #else
     vec2 ext = emitterExtent(D, axis, radius, len, u, v);
-    // Blocker search (Fernando 2005, step 1): the mean distance of the texels nearer than the
-    // receiver, over the emitter's extent seen from the receiver.
+    // Blocker search (Fernando 2005, step 1), over the emitter's extent seen from the receiver:
+    // the farthest texel nearer than the receiver, not the paper's mean. The penumbra is cast by
+    // the occluder's silhouette as seen from the light, and a convex occluder's silhouette is
+    // the farthest part of it in the search region: the mean, pulled towards the light by the
+    // occluder's near side, widens the penumbra (docs/accuracy.md, "Shadows").
     float search = clamp(HV_PCSS_SEARCH_SCALE * ext.x / d, HV_SHADOW_PCF_RADIUS * texel,
                          HV_SHADOW_MAX_FILTER);
     float blockers = 0.0f;
-    float blocker_sum = 0.0f;
+    float blocker_far = 0.0f;
     for (int i = 0; i < n; i += HV_PCSS_SEARCH_STEP) {
       vec2 o = vogelTap(i, HV_SHADOW_TAPS) * search;
       vec3 dir = normalize(D + u * o.x + v * o.y);
@@ -161,10 +164,10 @@ float shadowVisibility(vec3 Lpos, float far, float layer, float radius, vec3 axi
       float z = textureLod(t_shadow_depth, vec4(dir, layer), 0.0f).r * far;
       float b = step(z, t - bias);
       blockers += b;
-      blocker_sum += b * z;
+      blocker_far = max(blocker_far, b * z);
     }
     // Penumbra (step 2) from the emitter's half-extents, at least PCF's radius.
-    float zb = blocker_sum / max(blockers, 1.0f);
+    float zb = blocker_far;
     vec2 radii = clamp(vec2(pcssPenumbraAngle(d, zb, ext.x), pcssPenumbraAngle(d, zb, ext.y)),
                        vec2(HV_SHADOW_PCF_RADIUS * texel), vec2(HV_SHADOW_MAX_FILTER));
     // No blocker: lit, nothing to filter.
