@@ -1,5 +1,6 @@
 // `halfvec trade`: the speed/accuracy trade report of a scene (halfvec/eval/trade.hpp,
 // docs/trade.md).
+#include <algorithm>
 #include <cmath>
 #include <chrono>
 #include <cstdio>
@@ -45,6 +46,9 @@ Options:
   --no-cache          recompute the reference (and do not store it)
   --cache DIR         reference cache folder (default: <halfvec cache>/reference)
   --threads N         reference worker threads (default: all cores)
+  --visibility on|off the reference traces shadow and environment visibility rays (on) or
+                      integrates the shading alone (off); default: on for a scene with a
+                      shadowed light, off otherwise (the mode is part of the cache key)
 )";
 
 constexpr const char* kDocIntro =
@@ -156,6 +160,7 @@ struct TradeArgs {
   std::string report, doc;
   eval::TradeOptions opt;
   bool size_given = false, help = false;
+  int visibility = -1;  // --visibility: 1 on, 0 off, -1 per scene (on with a shadowed light)
 };
 
 // --max-error, --max-ms: a bound of 0 admits nothing.
@@ -212,6 +217,11 @@ TradeArgs parseTradeArgs(const Args& args) {
       t.opt.cache_dir = value();
     } else if (a == "--threads") {
       t.opt.threads = positiveInt(a, value());
+    } else if (a == "--visibility") {
+      const std::string v = value();
+      if (v != "on" && v != "off")
+        throw UsageError{"--visibility expects on or off, got '" + v + "'"};
+      t.visibility = v == "on" ? 1 : 0;
     } else if (!a.empty() && a[0] == '-') {
       throw UsageError{"unknown option '" + a + "'"};
     } else {
@@ -255,13 +265,17 @@ int cmdTrade(const Args& args) {
     if (!report.empty())
       run.dir = scenes.size() > 1 ? (fs::path(report) / stem(scenes[k])).string() : report;
     o.report_dir = run.dir;
+    const bool shadowed = std::any_of(loaded[k].lights.begin(), loaded[k].lights.end(),
+                                      [](const Light& l) { return l.shadows; });
+    o.visibility = t.visibility < 0 ? shadowed : t.visibility == 1;
     const double elapsed = std::chrono::duration<double>(Clock::now() - t_start).count();
     std::string left;  // from the scenes done so far
     if (k > 0)
       left = ", about " + std::to_string(int(elapsed / double(k) * double(scenes.size() - k))) +
              " s left";
-    std::fprintf(stderr, "trade: scene %zu of %zu: %s (%.0f s elapsed%s)\n", k + 1, scenes.size(),
-                 scenes[k].c_str(), elapsed, left.c_str());
+    std::fprintf(stderr, "trade: scene %zu of %zu: %s, visibility %s (%.0f s elapsed%s)\n", k + 1,
+                 scenes.size(), scenes[k].c_str(), o.visibility ? "on" : "off", elapsed,
+                 left.c_str());
     run.report = eval::runTrade(loaded[k], o);
     if (run.dir.empty()) {
       std::fputs(tradeMarkdown(run.report, "", 1).c_str(), stdout);

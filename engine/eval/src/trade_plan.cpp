@@ -38,6 +38,17 @@ void boolRow(std::vector<TradeConfig>& out, const char* key, const RenderSetting
   out.push_back(c);
 }
 
+// An integer (settings.shadow_map_size): half and twice the scene's value, within its range.
+void intRows(std::vector<TradeConfig>& out, const char* key, const RenderSettings& base, int pf,
+             int RenderSettings::*field, const SettingInfo& info, const char* group) {
+  for (const int v : {base.*field / 2, base.*field * 2}) {
+    if (v == base.*field || double(v) < info.lo || double(v) > info.hi) continue;
+    TradeConfig c{std::string(key) + "=" + std::to_string(v), group, base, pf, {}};
+    c.settings.*field = v;
+    out.push_back(c);
+  }
+}
+
 }  // namespace
 
 RenderSettings truthSettings(const RenderSettings& s) {
@@ -92,6 +103,8 @@ TradePlan tradePlan(const Scene& scene, int max_brute_force_lights) {
     }
     if constexpr (std::is_same_v<T, bool>) {
       boolRow(c, row.key, b, pf, row.member, row.info.trade_group);
+    } else if constexpr (std::is_same_v<T, int>) {
+      intRows(c, row.key, b, pf, row.member, row.info, row.info.trade_group);
     } else if constexpr (std::is_enum_v<T>) {
       enumRows(c, row.key, b, pf, row.member, row.info.trade_group);
     }

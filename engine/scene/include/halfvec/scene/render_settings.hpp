@@ -219,7 +219,8 @@ struct SettingInfo {
                  .pass = SettingPass::Light, .trade = true, .trade_group = "lights"}))             \
   X(int, shadow_map_size, 1024, "shadow_map_size",                                                 \
     (SettingInfo{.lo = 16, .hi = 2048, .feature = SettingFeature::ShadowedLights,                  \
-                 .define = "HV_SHADOW_MAP_SIZE", .pass = SettingPass::Light}))                     \
+                 .define = "HV_SHADOW_MAP_SIZE", .pass = SettingPass::Light, .trade = true,        \
+                 .trade_group = "lights"}))                                                        \
   /* every feature compiled in, chosen at run time (docs/variants.md) */                           \
   X(bool, uber, false, "uber", (SettingInfo{}))
 // clang-format on
