@@ -34,11 +34,17 @@ float mipToRoughness(float mip, float maxMip) {
 // rough metal plane facing the camera), not from where its lobe does. Lagarde & de Rousiers 2014,
 // "Moving Frostbite to Physically Based Rendering 3.0", section 4.9.3, listing 22
 // (getSpecularDominantDir), fitted to GGX with height-correlated Smith: the direction is
-// lerp(N, R, s (sqrt(s) + alpha)), s = 1 - alpha (their "roughness" is alpha). Normalized here, so
-// that the C++ callers get a unit vector (a cube lookup would not need it).
+// lerp(N, R, f), f = s (sqrt(s) + alpha), s = 1 - alpha (their "roughness" is alpha). At the glossy
+// end the fit's shift away from R is linear in alpha (1 - f ~ alpha / 2), while a lobe of width
+// ~alpha times N.L has its peak moved by ~alpha^2 tan(theta): for a mirror-like lobe the fit moves
+// a sun's glint by about its own width. Below alpha = 0.1 (roughness 0.32) the shift is therefore
+// faded out linearly, so it is quadratic in alpha there; above, the listing is unchanged (measured:
+// docs/ibl.md). Normalized here, so that the C++ callers get a unit vector (a cube lookup would
+// not need it).
 vec3 specularDominantDirection(vec3 N, vec3 R, float alpha) {
   float s = saturate(1.0f - alpha);
   float f = s * (sqrt(s) + alpha);
+  f = 1.0f - (1.0f - f) * saturate(alpha * 10.0f);
   return normalize(mix(N, R, f));
 }
 

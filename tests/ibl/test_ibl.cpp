@@ -143,8 +143,11 @@ TEST(IblMath, DominantDirectionGoesFromRToN) {
   }
   // Listing 22's factor at alpha = 0.25: s (sqrt(s) + alpha) with s = 0.75 is 0.8370.
   const glm::vec3 d = g::specularDominantDirection(N, R, 0.25f);
-  const glm::vec3 lerp = glm::normalize(N + 0.83701f * (R - N));
-  EXPECT_TRUE(near(d, lerp));
+  EXPECT_TRUE(near(d, glm::normalize(N + 0.837019f * (R - N))));
+  // Below alpha = 0.1 the listing's shift from R is faded out linearly: at alpha = 0.05 the factor
+  // is 1 - (1 - 0.95 (sqrt(0.95) + 0.05)) * 0.5 = 0.9867 (the listing's alone: 0.9735).
+  const glm::vec3 glossy = g::specularDominantDirection(N, R, 0.05f);
+  EXPECT_TRUE(near(glossy, glm::normalize(N + 0.986723f * (R - N))));
 }
 
 // The ambient terms' combination (ibl.glsl), shared by the ambient pass and the reference: the
