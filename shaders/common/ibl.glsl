@@ -6,6 +6,11 @@
 
 #include "math.glsl"
 #include "brdf.glsl"
+#include "setting_values.glsl"
+
+#ifndef HV_IBL_DIRECTION
+#define HV_IBL_DIRECTION HV_IBL_DIRECTION_DOMINANT
+#endif
 
 // --- Prefiltered radiance: roughness <-> mip ------------------------------------------------
 // Mip 0 is the unfiltered environment (roughness 0); the last mip holds roughness 1. The mapping
@@ -19,6 +24,38 @@ float roughnessToMip(float roughness, float maxMip) {
 float mipToRoughness(float mip, float maxMip) {
   if (maxMip <= 0.0f) return 0.0f;
   return 1.0f - sqrt(saturate(1.0f - mip / maxMip));
+}
+
+// --- Prefiltered radiance: the direction it is read along -----------------------------------
+// The prefilter assumes n = v = r (Karis 2013 eq. 7), so its lobe is centred on R. The lobe of a
+// rough BRDF times NoL is not: its peak moves from R towards N as roughness grows (the
+// off-specular peak), and at roughness 1 it is nearly the cosine lobe around N. Read along R, a
+// rough surface takes the environment from where R points (the ground, for the lower half of a
+// rough metal plane facing the camera), not from where its lobe does. Lagarde & de Rousiers 2014,
+// "Moving Frostbite to Physically Based Rendering 3.0", section 4.9.3, listing 22
+// (getSpecularDominantDir), fitted to GGX with height-correlated Smith: the direction is
+// lerp(N, R, f), f = s (sqrt(s) + alpha), s = 1 - alpha (their "roughness" is alpha). At the glossy
+// end the fit's shift away from R is linear in alpha (1 - f ~ alpha / 2), while a lobe of width
+// ~alpha times N.L has its peak moved by ~alpha^2 tan(theta): for a mirror-like lobe the fit moves
+// a sun's glint by about its own width. Below alpha = 0.1 (roughness 0.32) the shift is therefore
+// faded out linearly, so it is quadratic in alpha there; above, the listing is unchanged (measured:
+// docs/ibl.md). Normalized here, so that the C++ callers get a unit vector (a cube lookup would
+// not need it).
+vec3 specularDominantDirection(vec3 N, vec3 R, float alpha) {
+  float s = saturate(1.0f - alpha);
+  float f = s * (sqrt(s) + alpha);
+  f = 1.0f - (1.0f - f) * saturate(alpha * 10.0f);
+  return normalize(mix(N, R, f));
+}
+
+// The direction the prefiltered radiance is read along for a surface of normal N, mirror direction
+// R and alpha (RenderSettings::ibl_direction: the dominant direction, or R as in Karis 2013).
+vec3 prefilteredDirection(vec3 N, vec3 R, float alpha) {
+#if HV_IBL_DIRECTION == HV_IBL_DIRECTION_REFLECT
+  return R;
+#else
+  return specularDominantDirection(N, R, alpha);
+#endif
 }
 
 // --- Split-sum specular ---------------------------------------------------------------------

@@ -64,6 +64,12 @@
 #define HV_SHADOW_FILTER_PCF 1
 #define HV_SHADOW_FILTER_PCSS 2
 
+// ibl_direction (HV_IBL_DIRECTION): the direction the prefiltered radiance is read along, the
+// dominant direction of the specular lobe (Lagarde & de Rousiers 2014, section 4.9.3) or the
+// mirror direction R (Karis 2013).
+#define HV_IBL_DIRECTION_DOMINANT 0
+#define HV_IBL_DIRECTION_REFLECT 1
+
 // gamma (HV_GAMMA): gamma 2.2 or exact sRGB (IEC 61966-2-1).
 #define HV_GAMMA_22 0
 #define HV_GAMMA_SRGB 1

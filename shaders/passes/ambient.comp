@@ -91,7 +91,7 @@ void main() {
   float NoV = clamp(dot(N, V), 1e-4, 1.0);
   vec3 R = reflect(-V, N);
   if (!background) {
-    dir = R;
+    dir = prefilteredDirection(N, R, s.alpha);
     lod = roughnessToMip(s.roughness, u_env.x);
   }
 #endif

@@ -122,6 +122,34 @@ TEST(IblMath, MipRoughnessInverseAndFinite) {
   EXPECT_NEAR(g::specularOcclusion(1.0f, 1.0f, 0.25f), 1.0f, 1e-6f);  // no AO -> no occlusion
 }
 
+// The dominant direction of Lagarde & de Rousiers 2014 (listing 22): R for a mirror, N at alpha 1,
+// in between it moves monotonically from R to N in the plane of N and R, and it is a unit vector.
+// The default lookup (prefilteredDirection, no HV_IBL_DIRECTION define) is that direction.
+TEST(IblMath, DominantDirectionGoesFromRToN) {
+  const glm::vec3 N(0.0f, 0.0f, 1.0f);
+  const glm::vec3 V = glm::normalize(glm::vec3(0.9f, 0.0f, 0.2f));  // grazing: N.V = 0.22
+  const glm::vec3 R = glm::reflect(-V, N);
+  auto near = [](glm::vec3 a, glm::vec3 b) { return glm::length(a - b) < 1e-5f; };
+  EXPECT_TRUE(near(g::specularDominantDirection(N, R, 0.0f), R));
+  EXPECT_TRUE(near(g::specularDominantDirection(N, R, 1.0f), N));
+  float previous = -1.0f;
+  for (float alpha = 0.0f; alpha <= 1.0f; alpha += 0.0625f) {
+    const glm::vec3 d = g::specularDominantDirection(N, R, alpha);
+    EXPECT_NEAR(glm::length(d), 1.0f, 1e-5f);
+    EXPECT_NEAR(d.y, 0.0f, 1e-6f);  // in the plane of N and R
+    EXPECT_GE(glm::dot(d, N), previous - 1e-6f) << alpha;
+    previous = glm::dot(d, N);
+    EXPECT_TRUE(near(g::prefilteredDirection(N, R, alpha), d));
+  }
+  // Listing 22's factor at alpha = 0.25: s (sqrt(s) + alpha) with s = 0.75 is 0.8370.
+  const glm::vec3 d = g::specularDominantDirection(N, R, 0.25f);
+  EXPECT_TRUE(near(d, glm::normalize(N + 0.837019f * (R - N))));
+  // Below alpha = 0.1 the listing's shift from R is faded out linearly: at alpha = 0.05 the factor
+  // is 1 - (1 - 0.95 (sqrt(0.95) + 0.05)) * 0.5 = 0.9867 (the listing's alone: 0.9735).
+  const glm::vec3 glossy = g::specularDominantDirection(N, R, 0.05f);
+  EXPECT_TRUE(near(glossy, glm::normalize(N + 0.986723f * (R - N))));
+}
+
 // The ambient terms' combination (ibl.glsl), shared by the ambient pass and the reference: the
 // diffuse is Lambert times irradiance occluded by the cavity, and the specular's factor is each
 // enabled factor alone, or their product.

@@ -43,6 +43,7 @@ HV_ENUM_NAMES(ToneMap, "reinhard", "reinhard_luminance", "none", "pbr_neutral", 
 HV_ENUM_NAMES(Gamma, "gamma22", "srgb");
 HV_ENUM_NAMES(EnvBrdf, "table", "analytic");
 HV_ENUM_NAMES(Irradiance, "sh9", "cubemap");
+HV_ENUM_NAMES(IblDirection, "dominant", "reflect");
 HV_ENUM_NAMES(ShadowFilter, "hard", "pcf", "pcss");
 
 #undef HV_ENUM_NAMES

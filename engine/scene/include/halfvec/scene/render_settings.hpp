@@ -62,6 +62,10 @@ enum class TubeDiffuse : uint8_t {
 enum class Culling : uint8_t { Tiled = 0, BruteForce = 1 };
 enum class EnvBrdf : uint8_t { Table = 0, Analytic = 1 };
 enum class Irradiance : uint8_t { SH9 = 0, Cubemap = 1 };
+enum class IblDirection : uint8_t {
+  Dominant = HV_IBL_DIRECTION_DOMINANT,
+  Reflect = HV_IBL_DIRECTION_REFLECT
+};
 enum class ToneMap : uint8_t {
   Reinhard = HV_TONEMAP_REINHARD,
   ReinhardLuminance = HV_TONEMAP_REINHARD_LUMINANCE,
@@ -208,6 +212,11 @@ struct SettingInfo {
     (SettingInfo{.feature = SettingFeature::AmbientIbl, .define = "HV_IRRADIANCE_CUBEMAP",         \
                  .pass = SettingPass::Ambient, .trade = true, .trade_group = "environment",        \
                  .label = "irradiance", .needs_set_scene = true}))                                 \
+  /* dominant direction (Lagarde & de Rousiers 2014) or R (Karis 2013); docs/ibl.md */             \
+  X(IblDirection, ibl_direction, IblDirection::Dominant, "ibl_direction",                          \
+    (SettingInfo{.feature = SettingFeature::AmbientIbl, .define = "HV_IBL_DIRECTION",              \
+                 .pass = SettingPass::Ambient, .trade = true, .trade_group = "environment",        \
+                 .label = "IBL direction"}))                                                       \
   X(bool, specular_occlusion, false, "specular_occlusion",                                         \
     (SettingInfo{.feature = SettingFeature::AmbientIbl, .define = "HV_SPECULAR_OCCLUSION",         \
                  .pass = SettingPass::Ambient, .trade = true, .trade_group = "environment",        \
