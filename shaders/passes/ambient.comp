@@ -180,7 +180,7 @@ void main() {
 #if HV_AO_SPECULAR == HV_AO_SPECULAR_LAGARDE
     specular_vis = specularOcclusion(NoV, vis, s.alpha);
 #elif HV_AO_SPECULAR == HV_AO_SPECULAR_CONE
-    specular_vis = specularOcclusionCone(safeNormalize(ao.yzw), R, vis, s.alpha);
+    specular_vis = specularOcclusionCone(safeNormalize(ao.yzw), N, R, vis, s.alpha);
 #endif
     // The occlusion replaces the cavity in ambientDiffuse (it holds the cavity already).
     Surface open_s = s;

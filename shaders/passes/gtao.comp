@@ -37,18 +37,23 @@ vec3 viewPosition(vec2 px, float d) {
 
 // The cosine of the highest horizon along `dir` (pixels) from P seen from V, over the samples
 // at distances t_k = (k + offset) / steps x radius_px; -1 (no occluder) where none is nearer
-// than the radius. Background and off-screen samples occlude nothing.
+// than the radius. Background and off-screen samples occlude nothing. The depth is read with
+// bilinear filtering at the exact point on the slice's line: reversed-Z depth is near / z, affine
+// in screen space on a plane, so a plane's samples lie exactly on it and in the slice (a texel
+// centre would leave the slice by up to half a texel, which the max over samples turns into
+// false occlusion at grazing angles).
 float horizonCos(vec2 px, vec2 dir, float radius_px, float offset, vec3 P, vec3 V) {
   const int steps = aoSteps(HV_AO_QUALITY);
   float best = -1.0;
   float r2 = u_ao.x * u_ao.x;
+  vec2 size = vec2(u_viewport.xy);
   for (int k = 0; k < steps; ++k) {
     // At least one pixel out, so that the first step never reads the pixel itself.
     float t = max((float(k) + offset) / float(steps) * radius_px, float(k + 1));
-    vec2 s = floor(px + dir * t) + 0.5;
-    if (s.x < 0.0 || s.y < 0.0 || s.x >= float(u_viewport.x) || s.y >= float(u_viewport.y)) break;
-    float d = texelFetch(t_depth, ivec2(s), 0).r;
-    vec3 delta = viewPosition(floor(s), max(d, 1e-30)) - P;
+    vec2 s = px + 0.5 + dir * t;
+    if (s.x < 0.5 || s.y < 0.5 || s.x > size.x - 0.5 || s.y > size.y - 0.5) break;
+    float d = textureLod(t_depth, s / size, 0.0).r;
+    vec3 delta = viewPosition(s - 0.5, max(d, 1e-30)) - P;
     float l2 = dot(delta, delta);
     if (d > 0.0 && l2 < r2 && l2 > 0.0) best = max(best, dot(delta, V) * inversesqrt(l2));
   }
@@ -74,13 +79,20 @@ void main() {
   const int dirs = aoDirections(HV_AO_QUALITY);
   float visibility = 0.0;
   vec3 bent = vec3(0.0);
+  float open_sum = 0.0;
+  // The slices turn uniformly about V (eq. 9 integrates over that rotation): `ortho`, the slice's
+  // direction across V, runs over the plane normal to V from T (the screen's x axis made normal
+  // to V). Uniform screen-space angles would not be uniform about V off the image's centre (the
+  // open plane then came out 1-9% dark, more at grazing angles).
+  vec3 T = normalize(vec3(1.0, 0.0, 0.0) - V.x * V);
+  vec3 Bt = cross(V, T);
   for (int i = 0; i < dirs; ++i) {
     float phi = (float(i) + noise.x) * PI / float(dirs);
-    vec2 dir = vec2(cos(phi), sin(phi));
-    vec3 d3 = vec3(dir, 0.0);
-    // The slice: the plane through V and the screen direction; `ortho` is its axis across V.
-    vec3 ortho = normalize(d3 - dot(d3, V) * V);
+    vec3 ortho = T * cos(phi) + Bt * sin(phi);
     vec3 axis = cross(ortho, V);
+    // The screen direction of the slice: the derivative of the projection at P along `ortho`
+    // (square pixels: x and y scale alike), so that the march stays in the slice's plane.
+    vec2 dir = normalize(vec2(ortho.x * -P.z + P.x * ortho.z, ortho.y * -P.z + P.y * ortho.z));
     vec3 proj_n = N - axis * dot(N, axis);
     float proj_len = length(proj_n);
     float cos_n = clamp(dot(proj_n, V) / max(proj_len, 1e-6), -1.0, 1.0);
@@ -92,13 +104,22 @@ void main() {
     h1 = gtaoClampHigh(h1, n);
     float slice = proj_len * gtaoSliceVisibility(h0, h1, n);
     visibility += slice;
-    // Bent normal: the slice's mid-horizon direction, weighted by what the slice sees.
+    // Bent normal: the slice's mid-horizon direction weighted by what the slice sees, minus the
+    // same for open horizons (mid-angle n, weight proj_len (cos n + n sin n)): the sum alone leans
+    // towards V even on an open plane, its difference from the open sum is what the occluders
+    // turn (added to N below).
     float hb = 0.5 * (h0 + h1);
-    bent += (V * cos(hb) + ortho * sin(hb)) * slice;
+    float open_w = proj_len * (cos(n) + n * sin(n));
+    bent += (V * cos(hb) + ortho * sin(hb)) * slice - (V * cos(n) + ortho * sin(n)) * open_w;
+    open_sum += open_w;
   }
-  visibility = clamp(visibility / float(dirs), 0.0, 1.0);
+  // Not clamped to 1 here: a single slice's share can exceed 1 (eq. 10 is 1 only on average over
+  // the slices), and clamping before the denoise averages the 4x4 rotations would bias every
+  // surface seen at a grazing angle dark (the open plane by up to 4%); ao_denoise.comp clamps.
+  visibility = max(visibility / float(dirs), 0.0);
   // View to world: the view matrix is a rotation and a translation (lookAt).
-  vec3 B = dot(bent, bent) > 1e-12 ? normalize(transpose(mat3(u_view)) * bent)
-                                   : octDecode(texelFetch(t_normal, px, 0).xy);
+  vec3 Bv = safeNormalize(N + bent / max(open_sum, 1e-6));
+  vec3 B = dot(Bv, Bv) > 0.5 ? transpose(mat3(u_view)) * Bv
+                             : octDecode(texelFetch(t_normal, px, 0).xy);
   imageStore(i_ao, q, vec4(visibility, -P.z, octEncode(B)));
 }

@@ -41,10 +41,19 @@ GLuint AoPass::run(const PassContext& ctx, const GBufferView& gbuffer,
   glUseProgram(gtao);
   glProgramUniform4f(gtao, HV_LOC_AO_PARAMS, settings.ao_radius, float(scale), float(w), float(h));
   bindGBuffer(gbuffer, ctx.nearest);
+  // The horizon search filters depth bilinearly (gtao.comp, horizonCos); texelFetch ignores it.
+  if (!linear_) {
+    linear_ = gl::createSampler("ao depth bilinear");
+    glSamplerParameteri(linear_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glSamplerParameteri(linear_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(linear_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(linear_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
+  glBindSampler(HV_UNIT_DEPTH, linear_.id());
   glBindImageTexture(HV_IMAGE_AO, raw_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   glDispatchCompute(groups_x, groups_y, 1);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-  unbindGBuffer();
+  glBindSampler(HV_UNIT_DEPTH, ctx.nearest);
   const GLuint denoise = ctx.programs.get(denoise_);
   glUseProgram(denoise);
   glProgramUniform4f(denoise, HV_LOC_AO_PARAMS, settings.ao_radius, float(scale), float(w),
@@ -55,6 +64,7 @@ GLuint AoPass::run(const PassContext& ctx, const GBufferView& gbuffer,
   glDispatchCompute(groups_x, groups_y, 1);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
   glBindSampler(HV_UNIT_AO, 0);
+  unbindGBuffer();
   glBindImageTexture(HV_IMAGE_AO, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   glUseProgram(0);
   return denoised_.id();

@@ -174,6 +174,7 @@ class AoPass {
  private:
   gl::ProgramDesc gtao_, denoise_;
   gl::Texture raw_, denoised_;
+  gl::Sampler linear_;  // bilinear depth for the horizon search
   int width_ = 0, height_ = 0;
 };
 
