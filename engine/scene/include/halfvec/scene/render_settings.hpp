@@ -244,7 +244,7 @@ struct SettingInfo {
   X(AoResolution, ao_resolution, AoResolution::Half, "ao_resolution",                              \
     (SettingInfo{.feature = SettingFeature::ScreenSpaceAo, .define = "HV_AO_HALF_RESOLUTION",      \
                  .pass = SettingPass::Ao, .label = "AO resolution"}))                              \
-  X(AoSpecular, ao_specular, AoSpecular::Cone, "ao_specular",                                      \
+  X(AoSpecular, ao_specular, AoSpecular::Lagarde, "ao_specular",                                   \
     (SettingInfo{.feature = SettingFeature::ScreenSpaceAo, .define = "HV_AO_SPECULAR",             \
                  .pass = SettingPass::Ambient, .label = "AO specular occlusion"}))                 \
   /* Jimenez et al. 2016 section 5: interreflection from albedo (the reference has none) */      \
