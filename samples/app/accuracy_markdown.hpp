@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "halfvec/eval/accuracy_report.hpp"
+#include "halfvec/eval/occlusion_accuracy.hpp"
 #include "halfvec/eval/shadow_accuracy.hpp"
 
 namespace hv::app {
@@ -34,5 +35,7 @@ std::string shadowsMarkdown(const eval::ShadowAccuracy& a);
 // `heat_dir`: the folder name of the heat maps relative to the document.
 std::string scenesMarkdown(const std::vector<eval::SceneAccuracy>& scenes,
                            const std::string& heat_dir);
+// Screen-space ambient and specular occlusion against the reference with visibility.
+std::string occlusionMarkdown(const eval::OcclusionAccuracy& a);
 
 }  // namespace hv::app

@@ -47,6 +47,9 @@
 // and with depth comparison (shaders/common/shadows.glsl, engine/render/src/shadow_pass.cpp).
 #define HV_UNIT_SHADOW_DEPTH 8
 #define HV_UNIT_SHADOW_COMPARE 9
+// Ambient pass with `ao: gtao`: the AO pass's output (ao_denoise.comp); unit 4 is free there. The
+// AO pass's denoise reads the raw AO on the same unit.
+#define HV_UNIT_AO 4
 // Tone map: the HDR target.
 #define HV_UNIT_HDR 0
 // G-buffer pass: a material's textures on units HV_UNIT_MATERIAL_TEXTURES + 0..4 (base color,
@@ -57,6 +60,7 @@
 // ---- Image units -------------------------------------------------------------------------------
 #define HV_IMAGE_HDR 0    // the RGBA16F accumulation target the compute passes add into
 #define HV_IMAGE_FLOOR 1  // the floor pass's scratch target (DebugOptions::floor_pass)
+#define HV_IMAGE_AO 2     // the AO pass's targets: raw (gtao.comp), then denoised (ao_denoise.comp)
 
 // ---- Uniform locations (explicit, so the C++ never looks a name up) ------------------------------
 #define HV_LOC_MODEL 0          // gbuffer.vert: object to world
@@ -64,6 +68,7 @@
 #define HV_LOC_CULL_BATCH 0     // light_cull.comp: lights [x, y), mask words per group
 #define HV_LOC_SHADOW_VIEW_PROJ 3  // shadow.vert: the cube face's view-projection
 #define HV_LOC_SHADOW_LIGHT 4      // shadow.frag: light center, 1 / far
+#define HV_LOC_AO_PARAMS 5         // gtao.comp, ao_denoise.comp: radius (m), scale, AO size
 
 // ---- FrameBlock::counts.w bits (hv::render::FrameFlag), set for the per-term debug views -------
 #define HV_FRAME_NO_BACKGROUND 1u  // background pixels stay black (ambient.comp)

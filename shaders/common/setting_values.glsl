@@ -74,4 +74,21 @@
 #define HV_GAMMA_22 0
 #define HV_GAMMA_SRGB 1
 
+// ao (HV_AO): screen-space ambient occlusion, none or ground-truth-based (Jimenez et al. 2016;
+// docs/ambient-occlusion.md).
+#define HV_AO_NONE 0
+#define HV_AO_GTAO 1
+// ao_quality (HV_AO_QUALITY): directions x steps per side of the horizon search (ao.glsl).
+#define HV_AO_QUALITY_LOW 0
+#define HV_AO_QUALITY_MEDIUM 1
+#define HV_AO_QUALITY_HIGH 2
+// ao_resolution (HV_AO_HALF_RESOLUTION): the AO buffer at the frame's size or half of it.
+#define HV_AO_RESOLUTION_FULL 0
+#define HV_AO_RESOLUTION_HALF 1
+// ao_specular (HV_AO_SPECULAR): specular occlusion with `ao: gtao`: none, Lagarde & de Rousiers
+// 2014 (from the visibility and roughness) or the cone-cone form (Jimenez et al. 2016, section 6:
+// bent normal).
+#define HV_AO_SPECULAR_NONE 0
+#define HV_AO_SPECULAR_LAGARDE 1
+#define HV_AO_SPECULAR_CONE 2
 #endif  // HV_SETTING_VALUES_GLSL

@@ -34,6 +34,19 @@
 #ifndef HV_SPECULAR_OCCLUSION
 #define HV_SPECULAR_OCCLUSION 0
 #endif
+// Screen-space ambient occlusion (settings.ao; docs/ambient-occlusion.md): HV_AO 1 reads the AO
+// pass's output (visibility, view distance, bent normal) on HV_UNIT_AO; it occludes ambient
+// diffuse (with the cavity: combineOcclusion; optionally through the multi-bounce fit) and ambient
+// specular (HV_AO_SPECULAR: none, Lagarde & de Rousiers 2014, or the cone-cone form).
+#ifndef HV_AO
+#define HV_AO 0
+#endif
+#ifndef HV_AO_SPECULAR
+#define HV_AO_SPECULAR HV_AO_SPECULAR_LAGARDE
+#endif
+#ifndef HV_AO_MULTI_BOUNCE
+#define HV_AO_MULTI_BOUNCE 0
+#endif
 // Term mask: bit 1 ambient diffuse, bit 2 ambient specular; a term left out is 0 (per-term
 // images, `halfvec render --aov`). Background pixels are drawn whatever the mask, unless
 // u_counts.w has HV_FRAME_NO_BACKGROUND (per-term debug views).
@@ -55,6 +68,49 @@ layout(std140, binding = HV_UBO_ENVIRONMENT) uniform EnvironmentBlock {
   vec4 u_sh[9];      // radiance SH9 (ibl.glsl order)
   vec4 u_env;        // max mip, env BRDF table size, 1 = environment present, unused
 };
+
+#if HV_AO && HV_HAS_DEFAULT_LIT && HV_ENVIRONMENT
+#include "../common/ao.glsl"
+layout(binding = HV_UNIT_DEPTH) uniform sampler2D t_depth;
+layout(binding = HV_UNIT_AO) uniform sampler2D t_ao;
+
+// The AO of pixel px (x: visibility, yzw: world bent normal). At full resolution its texel; at
+// half, the four nearest texels with bilinear weights times a depth weight (the denoise's 5% of
+// the distance), so that an edge does not take the occlusion of the surface across it; where no
+// texel is within that, the nearest in distance.
+vec4 aoAt(ivec2 px) {
+  ivec2 size = textureSize(t_ao, 0);
+  if (size.x >= int(u_viewport.x)) {
+    vec4 a = texelFetch(t_ao, px, 0);
+    return vec4(a.x, octDecode(a.zw));
+  }
+  float dist = u_near_params.x / max(texelFetch(t_depth, px, 0).r, 1e-30);
+  // Texel q holds pixel 2q (gtao.comp), at q + 0.25 in texel units: pixel px sits at px / 2.
+  vec2 f = vec2(px) * 0.5;
+  ivec2 b = ivec2(floor(f));
+  vec2 t = f - floor(f);
+  vec4 sum = vec4(0.0);
+  float wsum = 0.0;
+  vec4 nearest = vec4(1.0, 0.0, 0.0, 0.0);
+  float nearest_diff = 1e30;
+  for (int j = 0; j < 2; ++j) {
+    for (int i = 0; i < 2; ++i) {
+      vec4 a = texelFetch(t_ao, clamp(b + ivec2(i, j), ivec2(0), size - 1), 0);
+      vec4 v = vec4(a.x, octDecode(a.zw));
+      float diff = abs(a.y - dist);
+      float wb = (i == 1 ? t.x : 1.0 - t.x) * (j == 1 ? t.y : 1.0 - t.y);
+      float w = wb * clamp(1.0 - diff / dist * 20.0, 0.0, 1.0);
+      sum += v * w;
+      wsum += w;
+      if (diff < nearest_diff) {
+        nearest_diff = diff;
+        nearest = v;
+      }
+    }
+  }
+  return wsum > 1e-4 ? sum / wsum : nearest;
+}
+#endif
 
 void main() {
   ivec2 px = ivec2(gl_GlobalInvocationID.xy);
@@ -107,14 +163,36 @@ void main() {
     for (int i = 0; i < 9; ++i) sh[i] = u_sh[i].rgb;
     vec3 E = evalSH9Irradiance(sh, N);
 #endif
-    vec3 diffuse = ambientDiffuse(s, E);
 #if HV_ENV_BRDF_ANALYTIC
     vec2 ab = EnvBRDFApproxScaleBias(s.roughness, NoV);
 #else
     vec2 ab = texture(t_env_brdf, vec2(NoV, s.roughness)).rg;
 #endif
+#if HV_AO
+    vec4 ao = aoAt(px);
+    float vis = combineOcclusion(s.cavity, ao.x);
+#if HV_AO_MULTI_BOUNCE
+    vec3 diffuse_vis = gtaoMultiBounce(vis, s.diffuse_color);
+#else
+    vec3 diffuse_vis = vec3(vis);
+#endif
+    float specular_vis = 1.0;
+#if HV_AO_SPECULAR == HV_AO_SPECULAR_LAGARDE
+    specular_vis = specularOcclusion(NoV, vis, s.alpha);
+#elif HV_AO_SPECULAR == HV_AO_SPECULAR_CONE
+    specular_vis = specularOcclusionCone(safeNormalize(ao.yzw), N, R, vis, s.alpha);
+#endif
+    // The occlusion replaces the cavity in ambientDiffuse (it holds the cavity already).
+    Surface open_s = s;
+    open_s.cavity = 1.0;
+    vec3 diffuse = ambientDiffuse(open_s, E) * diffuse_vis;
+    vec3 specular = ambientSpecular(s, radiance, ab, NoV, HV_ENERGY_COMPENSATION != 0, false) *
+                    specular_vis;
+#else
+    vec3 diffuse = ambientDiffuse(s, E);
     vec3 specular = ambientSpecular(s, radiance, ab, NoV, HV_ENERGY_COMPENSATION != 0,
                                     HV_SPECULAR_OCCLUSION != 0);
+#endif
 #if (HV_AMBIENT_TERMS & 1) == 0
     diffuse = vec3(0.0);
 #endif

@@ -79,8 +79,31 @@ std::vector<Geometry> geometries() {
 struct Option {
   std::string name;
   std::function<void(RenderSettings&)> apply;
-  bool shadows = false;  // the light casts shadows (the spheres shadow each other)
+  bool shadows = false;    // the light casts shadows (the spheres shadow each other)
+  bool occlusion = false;  // the screen-space AO scene (addOcclusionScene)
 };
+
+// What screen-space AO needs to meet its edge cases: an environment to occlude, a floor the
+// lower spheres rest on that runs out to the horizon (depths down to the far end of float
+// precision beside the background's 0), and a sphere cut by the near plane at the image's edge
+// (depths up to 1 and beyond).
+void addOcclusionScene(Scene& s) {
+  s.environment.kind = EnvironmentKind::Uniform;
+  s.environment.color = glm::vec3(1.0f);
+  s.environment.cube_size = 16;
+  s.environment.prefilter_samples = 16;
+  Material floor;
+  floor.base_color = glm::vec3(0.8f);
+  floor.roughness = 0.5f;
+  addMeshObject(s, makePlane(1e5f, 1e5f), floor, {0.0f, -2.1f, 0.0f});
+  Material near;
+  near.metallic = 1.0f;
+  near.roughness = 0.0f;
+  // 1 cm across, its centre on the near plane in the upper right corner of the view: the plane
+  // cuts it on screen.
+  addMeshObject(s, makeSphere(0.01f, 32, 16), near,
+                s.camera.position + glm::vec3(0.02f, 0.015f, -s.camera.near_plane));
+}
 
 std::vector<Option> options(bool small) {
   std::vector<Option> o = {{"default", [](RenderSettings&) {}}};
@@ -124,6 +147,32 @@ std::vector<Option> options(bool small) {
   }
   o.push_back(
       {"shadows, shadow_map_size=16", [](RenderSettings& s) { s.shadow_map_size = 16; }, true});
+  // Screen-space AO (docs/ambient-occlusion.md) on its edge-case scene: each specular occlusion,
+  // full resolution with the multi-bounce fit, and radii far below and far above the scene.
+  for (AoSpecular so : {AoSpecular::Cone, AoSpecular::Lagarde, AoSpecular::None}) {
+    o.push_back({"ao=gtao, ao_specular=" + std::string(toString(so)),
+                 [so](RenderSettings& s) {
+                   s.ao = AmbientOcclusion::Gtao;
+                   s.ao_specular = so;
+                 },
+                 false, true});
+  }
+  o.push_back({"ao=gtao, full, high, multi-bounce",
+               [](RenderSettings& s) {
+                 s.ao = AmbientOcclusion::Gtao;
+                 s.ao_resolution = AoResolution::Full;
+                 s.ao_quality = AoQuality::High;
+                 s.ao_multi_bounce = true;
+               },
+               false, true});
+  for (float radius : {1e-4f, 1e4f}) {
+    o.push_back({"ao=gtao, ao_radius=" + std::string(radius < 1.0f ? "1e-4" : "1e4"),
+                 [radius](RenderSettings& s) {
+                   s.ao = AmbientOcclusion::Gtao;
+                   s.ao_radius = radius;
+                 },
+                 false, true});
+  }
   if (small) {
     // CI: the options whose code paths differ most (physical falloff divides by d^2 alone).
     std::vector<Option> keep;
@@ -133,7 +182,7 @@ std::vector<Option> options(bool small) {
           x.name == "sphere_diffuse=horizon_correct" ||
           x.name == "tube_specular=smallest_angle_eq18" || x.name == "d=beckmann" ||
           x.name == "diffuse=burley" || x.name == "ltc (all three)" ||
-          x.name == "shadows, shadow_filter=pcss") {
+          x.name == "shadows, shadow_filter=pcss" || x.name == "ao=gtao, ao_specular=cone") {
         keep.push_back(x);
       }
     }
@@ -154,6 +203,7 @@ std::vector<StabilityRow> runStabilitySweep(
         StabilityRow row{std::string(toString(type)), g.name, opt.name};
         for (float roughness : {0.0f, 1.0f}) {
           Scene scene = baseScene(roughness);
+          if (opt.occlusion) addOcclusionScene(scene);
           opt.apply(scene.settings);
           Light l;
           l.type = type;

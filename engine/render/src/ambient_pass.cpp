@@ -84,11 +84,16 @@ void runAmbientPass(const PassContext& ctx, const AmbientPassInput& in, GLuint h
   glUseProgram(prog);
   bindGBuffer(in.gbuffer, ctx.nearest);
   in.environment.bind(in.gbuffer.base_cavity);
+  if (in.ao) {
+    glBindTextureUnit(HV_UNIT_AO, in.ao);
+    glBindSampler(HV_UNIT_AO, ctx.nearest);
+  }
   glBindImageTexture(HV_IMAGE_HDR, hdr, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
   glDispatchCompute((width + kTileSize - 1) / kTileSize, (height + kTileSize - 1) / kTileSize, 1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   unbindGBuffer();
   in.environment.unbind();
+  if (in.ao) glBindSampler(HV_UNIT_AO, 0);
   glBindImageTexture(HV_IMAGE_HDR, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
   glUseProgram(0);
 }

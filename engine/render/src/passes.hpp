@@ -152,10 +152,31 @@ struct AmbientPassInput {
   GBufferView gbuffer;
   const GpuEnvironment& environment;
   const gl::ProgramDesc& program;  // Renderer::ambientProgram()
+  GLuint ao = 0;                   // AoPass::run's target when the key has `ao: gtao`
 };
 // Adds the image-based light into `hdr` and draws the environment on background pixels.
 void runAmbientPass(const PassContext& ctx, const AmbientPassInput& in, GLuint hdr, int width,
                     int height);
+
+// ---- Screen-space ambient occlusion (ao_pass.cpp) ----------------------------------------------
+// GTAO (Jimenez et al. 2016) at full or half resolution: the horizon search (gtao.comp), then the
+// edge-keeping denoise (ao_denoise.comp), one timed pass "ao". In: the G-buffer's normal and
+// depth. Out: an RGBA16F target of (visibility, view distance, octahedral world bent normal),
+// which the ambient pass reads on HV_UNIT_AO.
+class AoPass {
+ public:
+  // The programs of the key (aoDefines); call when the key changes.
+  void setVariant(const VariantKey& key, const Scene& scene);
+  // Returns the denoised AO target (owned by the pass, valid until the next run).
+  GLuint run(const PassContext& ctx, const GBufferView& gbuffer, const RenderSettings& settings,
+             int width, int height);
+
+ private:
+  gl::ProgramDesc gtao_, denoise_;
+  gl::Texture raw_, denoised_;
+  gl::Sampler linear_;  // bilinear depth for the horizon search
+  int width_ = 0, height_ = 0;
+};
 
 // ---- Tone map and debug views (tonemap_pass.cpp) -----------------------------------------------
 struct TonemapPassInput {

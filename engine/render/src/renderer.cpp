@@ -131,6 +131,7 @@ void Renderer::refreshVariants() {
   }
   ambient_desc_ = {"ambient", {{GL_COMPUTE_SHADER, "passes/ambient.comp"}}, {}};
   ambient_desc_.defines = toDefineSet(ambientDefines(key_, *scene_), &ambient_desc_.reasons);
+  passes_->ao.setVariant(key_, *scene_);
   // The light passes build their own descriptions from lightingDefines(); their reasons go to
   // the cache's table.
   const auto light = lightDefines(key_, *scene_);
@@ -238,7 +239,8 @@ FrameStats Renderer::render(int width, int height, DebugView view,
   // Without an environment the ambient pass would add nothing: the background is black, the HDR
   // target's clear value (docs/performance.md "Passes of the frame").
   if (p.environment->present()) {
-    runAmbientPass(ctx, {gbuffer, *p.environment, ambient_desc_}, t.hdr.id(), width, height);
+    const GLuint ao = key_.ao ? p.ao.run(ctx, gbuffer, key_.settings, width, height) : 0u;
+    runAmbientPass(ctx, {gbuffer, *p.environment, ambient_desc_, ao}, t.hdr.id(), width, height);
   }
   emitterPass(view);
   const bool post = postPassesActive(view);

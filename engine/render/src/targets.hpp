@@ -29,6 +29,7 @@ struct Renderer::Passes {
   LightCulling culling;
   LightPass light;
   ShadowMaps shadows;
+  AoPass ao;
   std::unique_ptr<GpuEnvironment> environment;
 };
 

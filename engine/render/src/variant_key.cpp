@@ -84,6 +84,8 @@ bool featurePresent(SettingFeature f, const VariantKey& k) {
       return k.ambientIbl();
     case SettingFeature::ShadowedLights:
       return k.shadows;
+    case SettingFeature::ScreenSpaceAo:
+      return k.ao;
   }
   return true;
 }
@@ -103,6 +105,8 @@ std::string featureAbsentReason(SettingFeature f, const VariantKey& k) {
       return k.hasEnvironment() ? "no default_lit material" : "no environment";
     case SettingFeature::ShadowedLights:
       return "no shadowed lights";
+    case SettingFeature::ScreenSpaceAo:
+      return k.ambientIbl() ? "ao is none" : "no ambient IBL";
   }
   return "";
 }
@@ -122,6 +126,8 @@ const char* featureInvalid(SettingFeature f) {
       return "ambient IBL options without ambient IBL (no environment or no lit material)";
     case SettingFeature::ShadowedLights:
       return "shadow options without shadowed lights";
+    case SettingFeature::ScreenSpaceAo:
+      return "ambient occlusion options without ao: gtao";
   }
   return "";
 }
@@ -136,6 +142,8 @@ bool superseded(Supersede r, const RenderSettings& s) {
       return s.sphere_specular == SphereSpecular::Ltc;
     case Supersede::TubeLtc:
       return s.tube_specular == TubeSpecular::Ltc;
+    case Supersede::Gtao:
+      return s.ao == AmbientOcclusion::Gtao;
   }
   return false;
 }
@@ -150,6 +158,8 @@ const char* supersedeReason(Supersede r) {
       return "the LTC sphere specular has none";
     case Supersede::TubeLtc:
       return "the LTC tube specular has none";
+    case Supersede::Gtao:
+      return "with ao gtao, ao_specular occludes the ambient specular";
   }
   return "";
 }
@@ -164,6 +174,8 @@ const char* supersedeInvalid(Supersede r) {
       return "sphere normalization with the LTC sphere specular";
     case Supersede::TubeLtc:
       return "tube normalization with the LTC tube specular";
+    case Supersede::Gtao:
+      return "cavity specular occlusion with ao gtao";
   }
   return "";
 }
@@ -198,7 +210,7 @@ std::string VariantKey::text() const {
          (models.empty() ? std::string("none") : models) + "; environment " +
          std::string(toString(environment)) + "; " + std::to_string(material_variants.size()) +
          " material variant" + (material_variants.size() == 1 ? "" : "s") + "; " +
-         (uber ? "uber" : "specialized") + (shadows ? "; shadows" : "");
+         (uber ? "uber" : "specialized") + (shadows ? "; shadows" : "") + (ao ? "; gtao" : "");
 }
 
 VariantKey deriveVariantKey(const Scene& scene) {
@@ -237,6 +249,7 @@ VariantKey deriveVariantKey(const Scene& scene) {
     k.material_variants = {allMaterialFeatures()};
     for (size_t i = 0; i < scene.materials.size(); ++i) k.material_variant[i] = drawn[i] ? 0 : -1;
   }
+  k.ao = scene.settings.ao == AmbientOcclusion::Gtao && k.ambientIbl();
   k.settings = canonicalSettings(scene.settings, k);
   return k;
 }
@@ -248,9 +261,9 @@ std::vector<std::string> validateKey(const VariantKey& k) {
   if (!k.hasEnvironment() && s.irradiance == Irradiance::Cubemap) {
     bad.push_back("irradiance cubemap without an environment");
   }
-  for (SettingFeature f :
-       {SettingFeature::Lights, SettingFeature::SphereLights, SettingFeature::TubeLights,
-        SettingFeature::AmbientIbl, SettingFeature::ShadowedLights}) {
+  for (SettingFeature f : {SettingFeature::Lights, SettingFeature::SphereLights,
+                           SettingFeature::TubeLights, SettingFeature::AmbientIbl,
+                           SettingFeature::ShadowedLights, SettingFeature::ScreenSpaceAo}) {
     if (featurePresent(f, k)) continue;
     bool changed = false;
     forEachSetting([&](const auto& row) {
@@ -474,6 +487,10 @@ std::vector<KeyDefine> ambientDefines(const VariantKey& k, const Scene& scene) {
                                       : "term mask " + std::to_string(int(s.ambient_terms)) +
                                             " (render --aov, per-term debug view)"});
   return out;
+}
+
+std::vector<KeyDefine> aoDefines(const VariantKey& k, const Scene& scene) {
+  return settingKeyDefines(k, scene, SettingPass::Ao);
 }
 
 std::vector<KeyDefine> toneMapDefines(const VariantKey& k, const Scene& scene) {

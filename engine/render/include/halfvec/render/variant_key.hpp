@@ -57,6 +57,9 @@ struct VariantKey {
   // A light casts shadows (Light::shadows): the light programs contain the shadow lookup
   // (shaders/common/shadows.glsl) and the frame starts with the shadow-map pass.
   bool shadows = false;
+  // `settings.ao: gtao` where the ambient pass lights a default_lit material: the frame has the AO
+  // pass (shaders/passes/gtao.comp) and the ambient pass reads its output.
+  bool ao = false;
   // The distinct feature sets, one G-buffer program each, and each material's index into it.
   std::vector<MaterialFeatures> material_variants;
   std::vector<int> material_variant;
@@ -103,6 +106,8 @@ std::vector<KeyDefine> gbufferDefines(const VariantKey& key, size_t variant, con
 std::vector<KeyDefine> lightDefines(const VariantKey& key, const Scene& scene);
 // Ambient pass: environment presence, shading models, the IBL options.
 std::vector<KeyDefine> ambientDefines(const VariantKey& key, const Scene& scene);
+// The AO pass's defines (gtao.comp, ao_denoise.comp): the settings table's SettingPass::Ao rows.
+std::vector<KeyDefine> aoDefines(const VariantKey& key, const Scene& scene);
 // Tone map pass: the output transform's settings.
 std::vector<KeyDefine> toneMapDefines(const VariantKey& key, const Scene& scene);
 

@@ -45,6 +45,10 @@ HV_ENUM_NAMES(EnvBrdf, "table", "analytic");
 HV_ENUM_NAMES(Irradiance, "sh9", "cubemap");
 HV_ENUM_NAMES(IblDirection, "dominant", "reflect");
 HV_ENUM_NAMES(ShadowFilter, "hard", "pcf", "pcss");
+HV_ENUM_NAMES(AmbientOcclusion, "none", "gtao");
+HV_ENUM_NAMES(AoQuality, "low", "medium", "high");
+HV_ENUM_NAMES(AoResolution, "full", "half");
+HV_ENUM_NAMES(AoSpecular, "none", "lagarde", "cone");
 
 #undef HV_ENUM_NAMES
 

@@ -80,6 +80,20 @@ enum class ShadowFilter : uint8_t {
   Pcf = HV_SHADOW_FILTER_PCF,
   Pcss = HV_SHADOW_FILTER_PCSS
 };
+// Screen-space ambient occlusion (docs/ambient-occlusion.md): none, or GTAO (Jimenez, Wu, Pesce,
+// Jarabo 2016), its quality (directions x steps), resolution and specular occlusion.
+enum class AmbientOcclusion : uint8_t { None = HV_AO_NONE, Gtao = HV_AO_GTAO };
+enum class AoQuality : uint8_t {
+  Low = HV_AO_QUALITY_LOW,
+  Medium = HV_AO_QUALITY_MEDIUM,
+  High = HV_AO_QUALITY_HIGH
+};
+enum class AoResolution : uint8_t { Full = HV_AO_RESOLUTION_FULL, Half = HV_AO_RESOLUTION_HALF };
+enum class AoSpecular : uint8_t {
+  None = HV_AO_SPECULAR_NONE,
+  Lagarde = HV_AO_SPECULAR_LAGARDE,
+  Cone = HV_AO_SPECULAR_CONE
+};
 
 // What part of a scene makes a setting change code. Without it the variant key resets the setting
 // to its default (canonicalSettings), the manifest says why, and a key that holds another value is
@@ -91,6 +105,7 @@ enum class SettingFeature : uint8_t {
   TubeLights,      // tube lights
   AmbientIbl,      // an environment lighting a default_lit material
   ShadowedLights,  // a light with `shadows: true`
+  ScreenSpaceAo,   // `ao: gtao` where the ambient pass lights a default_lit material
 };
 
 // Another setting that makes this one change no code, and the value it then takes in the key.
@@ -99,10 +114,11 @@ enum class Supersede : uint8_t {
   RemapInapplicable,  // brdf.v is not Schlick-GGX: the remap has nothing to remap (Karis eq. 4)
   SphereLtc,          // sphere_specular ltc: it has no representative-point normalization
   TubeLtc,            // tube_specular ltc: likewise
+  Gtao,               // ao gtao: ao_specular occludes the ambient specular instead
 };
 
 // Which pass's program the setting's define goes to.
-enum class SettingPass : uint8_t { None, Light, Ambient, ToneMap };
+enum class SettingPass : uint8_t { None, Light, Ambient, ToneMap, Ao };
 
 // The descriptive columns of a row. Numbers: [lo, hi] (integers compare as integers, floats as
 // the float they are stored in). `define` is the shader define; its value is the enum's value, the
@@ -219,8 +235,31 @@ struct SettingInfo {
                  .label = "IBL direction"}))                                                       \
   X(bool, specular_occlusion, false, "specular_occlusion",                                         \
     (SettingInfo{.feature = SettingFeature::AmbientIbl, .define = "HV_SPECULAR_OCCLUSION",         \
-                 .pass = SettingPass::Ambient, .trade = true, .trade_group = "environment",        \
+                 .pass = SettingPass::Ambient, .superseded_by = Supersede::Gtao,                   \
+                 .superseded_value = false, .trade = true, .trade_group = "environment",           \
                  .label = "specular occlusion"}))                                                  \
+  /* Screen-space ambient occlusion (docs/ambient-occlusion.md) */                                 \
+  X(AmbientOcclusion, ao, AmbientOcclusion::None, "ao",                                            \
+    (SettingInfo{.feature = SettingFeature::AmbientIbl, .define = "HV_AO",                         \
+                 .pass = SettingPass::Ambient, .trade = true, .trade_group = "occlusion",          \
+                 .label = "ambient occlusion"}))                                                   \
+  /* metres: the horizon search's reach, and the distance beyond which nothing occludes */          \
+  X(float, ao_radius, 1.0f, "ao_radius",                                                           \
+    (SettingInfo{.lo = 0.0, .hi = 1e4, .lo_open = true,                                            \
+                 .feature = SettingFeature::ScreenSpaceAo}))                                       \
+  X(AoQuality, ao_quality, AoQuality::Medium, "ao_quality",                                        \
+    (SettingInfo{.feature = SettingFeature::ScreenSpaceAo, .define = "HV_AO_QUALITY",              \
+                 .pass = SettingPass::Ao, .label = "AO quality"}))                                 \
+  X(AoResolution, ao_resolution, AoResolution::Half, "ao_resolution",                              \
+    (SettingInfo{.feature = SettingFeature::ScreenSpaceAo, .define = "HV_AO_HALF_RESOLUTION",      \
+                 .pass = SettingPass::Ao, .label = "AO resolution"}))                              \
+  X(AoSpecular, ao_specular, AoSpecular::Lagarde, "ao_specular",                                   \
+    (SettingInfo{.feature = SettingFeature::ScreenSpaceAo, .define = "HV_AO_SPECULAR",             \
+                 .pass = SettingPass::Ambient, .label = "AO specular occlusion"}))                 \
+  /* Jimenez et al. 2016 section 5: interreflection from albedo (the reference has none) */      \
+  X(bool, ao_multi_bounce, false, "ao_multi_bounce",                                               \
+    (SettingInfo{.feature = SettingFeature::ScreenSpaceAo, .define = "HV_AO_MULTI_BOUNCE",         \
+                 .pass = SettingPass::Ambient, .label = "AO multi-bounce"}))                       \
   /* Shadows (docs/lights.md, "Shadows"); the face size sets how many lights the atlas holds */     \
   /* no label: the Lights panel picks the filter */                                                \
   X(ShadowFilter, shadow_filter, ShadowFilter::Pcss, "shadow_filter",                              \

@@ -1,0 +1,73 @@
+// The AO pass (passes.hpp, AoPass): GTAO's horizon search, then its denoise, at full or half
+// resolution (settings.ao_resolution), timed together as "ao".
+#include "passes.hpp"
+#include "pipeline_state.hpp"
+
+namespace hv::render {
+
+namespace {
+gl::DefineSet defineSet(const std::vector<KeyDefine>& defs,
+                        std::map<std::string, std::string>& reasons) {
+  gl::DefineSet d;
+  for (const KeyDefine& k : defs) {
+    d.push_back({k.name, k.value});
+    reasons[k.name] = k.why;
+  }
+  return d;
+}
+}  // namespace
+
+void AoPass::setVariant(const VariantKey& key, const Scene& scene) {
+  gtao_ = {"gtao", {{GL_COMPUTE_SHADER, "passes/gtao.comp"}}, {}};
+  denoise_ = {"ao denoise", {{GL_COMPUTE_SHADER, "passes/ao_denoise.comp"}}, {}};
+  gtao_.defines = defineSet(aoDefines(key, scene), gtao_.reasons);
+}
+
+GLuint AoPass::run(const PassContext& ctx, const GBufferView& gbuffer,
+                   const RenderSettings& settings, int width, int height) {
+  gl::ScopedPass pass(ctx.timer, "ao");
+  applyState(PipelineState{});
+  const int scale = settings.ao_resolution == AoResolution::Half ? 2 : 1;
+  const int w = (width + scale - 1) / scale, h = (height + scale - 1) / scale;
+  if (w != width_ || h != height_ || !raw_) {
+    raw_ = gl::createTexture2D("ao raw (visibility, distance, bent normal)", GL_RGBA16F, w, h);
+    denoised_ = gl::createTexture2D("ao denoised", GL_RGBA16F, w, h);
+    width_ = w;
+    height_ = h;
+  }
+  const GLuint groups_x = GLuint((w + kTileSize - 1) / kTileSize);
+  const GLuint groups_y = GLuint((h + kTileSize - 1) / kTileSize);
+  const GLuint gtao = ctx.programs.get(gtao_);
+  glUseProgram(gtao);
+  glProgramUniform4f(gtao, HV_LOC_AO_PARAMS, settings.ao_radius, float(scale), float(w), float(h));
+  bindGBuffer(gbuffer, ctx.nearest);
+  // The horizon search filters depth bilinearly (gtao.comp, horizonCos); texelFetch ignores it.
+  if (!linear_) {
+    linear_ = gl::createSampler("ao depth bilinear");
+    glSamplerParameteri(linear_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glSamplerParameteri(linear_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(linear_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(linear_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
+  glBindSampler(HV_UNIT_DEPTH, linear_.id());
+  glBindImageTexture(HV_IMAGE_AO, raw_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  glDispatchCompute(groups_x, groups_y, 1);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  glBindSampler(HV_UNIT_DEPTH, ctx.nearest);
+  const GLuint denoise = ctx.programs.get(denoise_);
+  glUseProgram(denoise);
+  glProgramUniform4f(denoise, HV_LOC_AO_PARAMS, settings.ao_radius, float(scale), float(w),
+                     float(h));
+  glBindTextureUnit(HV_UNIT_AO, raw_.id());
+  glBindSampler(HV_UNIT_AO, ctx.nearest);
+  glBindImageTexture(HV_IMAGE_AO, denoised_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  glDispatchCompute(groups_x, groups_y, 1);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  glBindSampler(HV_UNIT_AO, 0);
+  unbindGBuffer();
+  glBindImageTexture(HV_IMAGE_AO, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  glUseProgram(0);
+  return denoised_.id();
+}
+
+}  // namespace hv::render

@@ -1,0 +1,125 @@
+#version 450 core
+// Ground-truth-based ambient occlusion (Jimenez, Wu, Pesce, Jarabo 2016, "Practical Real-Time
+// Strategies for Accurate Indirect Occlusion"), the AO pass's first half: per AO texel, a horizon
+// search in the depth buffer along a few screen directions (slices) within a world-space radius,
+// the cosine-weighted visibility of each slice by eq. 10 with the projected normal, and a bent
+// normal. Out (raw, HV_IMAGE_AO): visibility, view distance, bent normal (world, octahedral); the
+// denoise (ao_denoise.comp) averages the 4x4 rotation pattern away. Math: common/ao.glsl.
+#include "../common/frame.glsl"
+#include "../common/gbuffer.glsl"
+#include "../common/ao.glsl"
+
+// Specialization (the settings table's SettingPass::Ao rows; docs/variants.md).
+//   HV_AO_QUALITY: directions x steps (aoDirections / aoSteps).
+//   HV_AO_HALF_RESOLUTION 1|0: one AO texel per 2x2 pixels (the pixel at its lower left).
+#ifndef HV_AO_QUALITY
+#define HV_AO_QUALITY HV_AO_QUALITY_MEDIUM
+#endif
+#ifndef HV_AO_HALF_RESOLUTION
+#define HV_AO_HALF_RESOLUTION 1
+#endif
+
+layout(local_size_x = HV_TILE_SIZE, local_size_y = HV_TILE_SIZE) in;
+
+layout(binding = HV_UNIT_NORMAL) uniform sampler2D t_normal;
+layout(binding = HV_UNIT_DEPTH) uniform sampler2D t_depth;
+layout(rgba16f, binding = HV_IMAGE_AO) uniform writeonly image2D i_ao;
+// x: radius (m), y: pixels per AO texel, zw: the AO target's size.
+layout(location = HV_LOC_AO_PARAMS) uniform vec4 u_ao;
+
+// View-space position of the full-resolution pixel px at reversed-Z depth d (> 0): the infinite
+// projection gives the distance along the view axis as near / d (frame_data.cpp).
+vec3 viewPosition(vec2 px, float d) {
+  vec2 ndc = (px + 0.5) / vec2(u_viewport.xy) * 2.0 - 1.0;
+  float z = u_near_params.x / d;
+  return vec3(ndc.x * z / u_proj[0][0], ndc.y * z / u_proj[1][1], -z);
+}
+
+// The cosine of the highest horizon along `dir` (pixels) from P seen from V, over the samples
+// at distances t_k = (k + offset) / steps x radius_px; -1 (no occluder) where none is nearer
+// than the radius. Background and off-screen samples occlude nothing. The depth is read with
+// bilinear filtering at the exact point on the slice's line: reversed-Z depth is near / z, affine
+// in screen space on a plane, so a plane's samples lie exactly on it and in the slice (a texel
+// centre would leave the slice by up to half a texel, which the max over samples turns into
+// false occlusion at grazing angles).
+float horizonCos(vec2 px, vec2 dir, float radius_px, float offset, vec3 P, vec3 V) {
+  const int steps = aoSteps(HV_AO_QUALITY);
+  float best = -1.0;
+  float r2 = u_ao.x * u_ao.x;
+  vec2 size = vec2(u_viewport.xy);
+  for (int k = 0; k < steps; ++k) {
+    // At least one pixel out, so that the first step never reads the pixel itself.
+    float t = max((float(k) + offset) / float(steps) * radius_px, float(k + 1));
+    vec2 s = px + 0.5 + dir * t;
+    if (s.x < 0.5 || s.y < 0.5 || s.x > size.x - 0.5 || s.y > size.y - 0.5) break;
+    float d = textureLod(t_depth, s / size, 0.0).r;
+    vec3 delta = viewPosition(s - 0.5, max(d, 1e-30)) - P;
+    float l2 = dot(delta, delta);
+    if (d > 0.0 && l2 < r2 && l2 > 0.0) best = max(best, dot(delta, V) * inversesqrt(l2));
+  }
+  return best;
+}
+
+void main() {
+  ivec2 q = ivec2(gl_GlobalInvocationID.xy);
+  if (q.x >= int(u_ao.z) || q.y >= int(u_ao.w)) return;
+  ivec2 px = q * int(u_ao.y);
+  float d = texelFetch(t_depth, px, 0).r;
+  if (d <= 0.0) {  // background: nothing to occlude (the ambient pass draws the environment)
+    imageStore(i_ao, q, vec4(1.0, 0.0, 0.0, 0.0));
+    return;
+  }
+  vec3 P = viewPosition(vec2(px), d);
+  vec3 V = normalize(-P);
+  vec3 N = normalize(mat3(u_view) * octDecode(texelFetch(t_normal, px, 0).xy));
+  // The radius projected to pixels at this depth: r x P11 / z in NDC, half the height per unit.
+  float radius_px = u_ao.x * u_proj[1][1] / -P.z * 0.5 * float(u_viewport.y);
+  radius_px = min(radius_px, float(u_viewport.y));
+  vec2 noise = gtaoNoise(q.x, q.y);
+  const int dirs = aoDirections(HV_AO_QUALITY);
+  float visibility = 0.0;
+  vec3 bent = vec3(0.0);
+  float open_sum = 0.0;
+  // The slices turn uniformly about V (eq. 9 integrates over that rotation): `ortho`, the slice's
+  // direction across V, runs over the plane normal to V from T (the screen's x axis made normal
+  // to V). Uniform screen-space angles would not be uniform about V off the image's centre (the
+  // open plane then came out 1-9% dark, more at grazing angles).
+  vec3 T = normalize(vec3(1.0, 0.0, 0.0) - V.x * V);
+  vec3 Bt = cross(V, T);
+  for (int i = 0; i < dirs; ++i) {
+    float phi = (float(i) + noise.x) * PI / float(dirs);
+    vec3 ortho = T * cos(phi) + Bt * sin(phi);
+    vec3 axis = cross(ortho, V);
+    // The screen direction of the slice: the derivative of the projection at P along `ortho`
+    // (square pixels: x and y scale alike), so that the march stays in the slice's plane.
+    vec2 dir = normalize(vec2(ortho.x * -P.z + P.x * ortho.z, ortho.y * -P.z + P.y * ortho.z));
+    vec3 proj_n = N - axis * dot(N, axis);
+    float proj_len = length(proj_n);
+    float cos_n = clamp(dot(proj_n, V) / max(proj_len, 1e-6), -1.0, 1.0);
+    float n = (dot(proj_n, ortho) >= 0.0 ? 1.0 : -1.0) * acos(cos_n);
+    // Clamped: a rounded cosine just above 1 would make acos NaN.
+    float h1 = acos(clamp(horizonCos(vec2(px), dir, radius_px, noise.y, P, V), -1.0, 1.0));
+    float h0 = -acos(clamp(horizonCos(vec2(px), -dir, radius_px, noise.y, P, V), -1.0, 1.0));
+    h0 = gtaoClampLow(h0, n);
+    h1 = gtaoClampHigh(h1, n);
+    float slice = proj_len * gtaoSliceVisibility(h0, h1, n);
+    visibility += slice;
+    // Bent normal: the slice's mid-horizon direction weighted by what the slice sees, minus the
+    // same for open horizons (mid-angle n, weight proj_len (cos n + n sin n)): the sum alone leans
+    // towards V even on an open plane, its difference from the open sum is what the occluders
+    // turn (added to N below).
+    float hb = 0.5 * (h0 + h1);
+    float open_w = proj_len * (cos(n) + n * sin(n));
+    bent += (V * cos(hb) + ortho * sin(hb)) * slice - (V * cos(n) + ortho * sin(n)) * open_w;
+    open_sum += open_w;
+  }
+  // Not clamped to 1 here: a single slice's share can exceed 1 (eq. 10 is 1 only on average over
+  // the slices), and clamping before the denoise averages the 4x4 rotations would bias every
+  // surface seen at a grazing angle dark (the open plane by up to 4%); ao_denoise.comp clamps.
+  visibility = max(visibility / float(dirs), 0.0);
+  // View to world: the view matrix is a rotation and a translation (lookAt).
+  vec3 Bv = safeNormalize(N + bent / max(open_sum, 1e-6));
+  vec3 B = dot(Bv, Bv) > 0.5 ? transpose(mat3(u_view)) * Bv
+                             : octDecode(texelFetch(t_normal, px, 0).xy);
+  imageStore(i_ao, q, vec4(visibility, -P.z, octEncode(B)));
+}
