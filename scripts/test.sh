@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Runs the whole test suite: installs what is missing, builds (warnings are errors), runs CTest.
+# Runs the whole test suite: installs what is missing, builds every target (warnings are errors;
+# what scripts/render.sh built is reused), runs CTest.
 # Tests that need ../shared/assets report "skipped" with the reason when it is absent.
 set -euo pipefail
 cd "$(dirname "$0")/.."

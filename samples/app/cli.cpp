@@ -194,9 +194,51 @@ void applyProgramDefaults() {
 #endif
 }
 
+namespace {
+
+// "X,Y,Z" as the JSON array of a --set override; each coordinate within the scene's +-1e6 m.
+std::string vec3Option(const std::string& option, const std::string& v) {
+  std::string out = "[";
+  size_t start = 0;
+  for (int k = 0; k < 3; ++k) {
+    const size_t comma = v.find(',', start);
+    if ((k < 2) != (comma != std::string::npos)) {
+      throw UsageError{option + " expects X,Y,Z (three numbers), got '" + v + "'"};
+    }
+    const std::string part = v.substr(start, k < 2 ? comma - start : std::string::npos);
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.9g", double(floatInRange(option, part, -1e6f, 1e6f)));
+    if (k) out += ',';
+    out += buf;
+    start = comma + 1;
+  }
+  return out + "]";
+}
+
+}  // namespace
+
 bool takeSceneOption(const Args& args, size_t& i, SceneOpenOptions& options, bool& print_scene) {
   const std::string& a = args[i];
-  if (a == "--env") {
+  if (a == "--camera-position" || a == "--camera-target") {
+    const std::string key = a == "--camera-position" ? "position" : "target";
+    options.overrides.push_back("camera." + key + "=" + vec3Option(a, optionValue(args, i)));
+  } else if (a == "--fov") {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.9g",
+                  double(floatInRange(a, optionValue(args, i), 0.01f, 179.9f)));
+    options.overrides.push_back(std::string("camera.fov_y_deg=") + buf);
+  } else if (a == "--no-key-light") {
+    options.key_light = false;
+  } else if (a == "--look") {
+    const std::string v = optionValue(args, i);
+    if (v == "gltf") {
+      options.look = Look::Gltf;
+    } else if (v == "scene") {
+      options.look = Look::Scene;
+    } else {
+      throw UsageError{"--look expects gltf or scene, got '" + v + "'"};
+    }
+  } else if (a == "--env") {
     options.environment_hdr = optionValue(args, i);
   } else if (a == "--camera") {
     const std::string v = optionValue(args, i);

@@ -33,7 +33,14 @@ Options:
                         or --set lights.0.intensity=50 (repeatable; VALUE is JSON)
   --env FILE.hdr        replace the scene's environment with this equirectangular HDR
   --camera N            a model's own camera N (glTF cameras, in node order) instead of framing
-  --print-scene         print the scene JSON (for a model: the one made for it) and exit
+  --print-scene         print the scene JSON (for a model: the one made for it; --set,
+                        --look and the camera options applied) and exit
+  --camera-position X,Y,Z  camera position (= --set camera.position=[X,Y,Z])
+  --camera-target X,Y,Z    camera target (= --set camera.target=[X,Y,Z])
+  --fov DEG             vertical field of view in degrees (= --set camera.fov_y_deg=DEG)
+  --no-key-light        a model without the default key light (image-based lighting only)
+  --look gltf|scene     gltf: the glTF viewers' conventions (no key light, PBR Neutral tone
+                        map, sRGB output, no dither; --set applies after it); default scene
   --aa fxaa|none        post-process anti-aliasing of the 8-bit image (default fxaa; the HDR
                         image of --hdr is never anti-aliased)
   --emitters on|off     draw sphere and tube lights as emissive geometry of their color (default

@@ -43,7 +43,14 @@ Options:
   --env FILE.hdr        replace the scene's environment with this HDR
   --camera N            a model's own camera N instead of the automatic framing
   --set PATH=VALUE      override a scene field (as render --set; repeatable)
-  --print-scene         print the scene JSON (for a model: the one made for it) and exit
+  --print-scene         print the scene JSON (for a model: the one made for it; --set,
+                        --look and the camera options applied) and exit
+  --camera-position X,Y,Z  camera position (= --set camera.position=[X,Y,Z])
+  --camera-target X,Y,Z    camera target (= --set camera.target=[X,Y,Z])
+  --fov DEG             vertical field of view in degrees (= --set camera.fov_y_deg=DEG)
+  --no-key-light        a model without the default key light (image-based lighting only)
+  --look gltf|scene     gltf: the glTF viewers' conventions (no key light, PBR Neutral tone
+                        map, sRGB output, no dither; --set applies after it); default scene
   --frames N            quit after N frames (for tests and timing)
   --screenshot FILE.png after the last frame, save the window (scene + side bar)
   --click X,Y           scripted left click at window pixel X,Y on the first frame (picks there)

@@ -68,15 +68,17 @@ float floatInRange(const std::string& option, const std::string& v, float lo, fl
 void takeScenePath(const std::string& arg, std::string& scene);
 
 // Options of the commands that open a scene or a model (render, view): --env FILE.hdr,
-// --camera N, --set PATH=VALUE, --print-scene. Returns true when args[i] was one of them (i then
-// points at its last value); throws UsageError for a bad value.
+// --camera N, --set PATH=VALUE, --print-scene, --camera-position X,Y,Z, --camera-target X,Y,Z,
+// --fov DEG (the three as --set camera.* overrides, in order with the --set ones),
+// --no-key-light, --look gltf|scene. Returns true when args[i] was one of them (i then points at
+// its last value); throws UsageError for a bad value.
 bool takeSceneOption(const Args& args, size_t& i, SceneOpenOptions& options, bool& print_scene);
 
 // "; did you mean "depth"? (one of: none, basecolor, ...)" for an unknown --view name.
 std::string debugViewSuggestion(const std::string& typed);
 
 // --print-scene: writes to stdout the scene JSON `path` opens as (a model's synthesized scene,
-// --env applied; --set overrides are not applied to the printout), in the sample scenes' style.
+// --env, --look and the --set overrides applied), in the sample scenes' style.
 int printScene(const std::string& path, const SceneOpenOptions& options);
 
 // Declares every file a scene run reads as an input of `outputs` (OutputFiles::protectInput), so

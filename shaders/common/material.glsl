@@ -10,6 +10,8 @@
 #define HV_MAT_NORMAL_TEX 4u
 #define HV_MAT_OCCLUSION_TEX 8u
 #define HV_MAT_EMISSIVE_TEX 16u
+#define HV_MAT_VERTEX_COLOR_BIT 32u  // multiply base colour and alpha by the vertex colour
+#define HV_MAT_TEX_TRANSFORM_BIT 64u  // some texture has a KHR_texture_transform
 #define HV_ALPHA_OPAQUE 0u
 #define HV_ALPHA_MASK 1u
 
@@ -20,6 +22,10 @@ struct GpuMaterial {
   vec4 extra;       // normal scale, occlusion strength, emissive texcoord set, unused
   uvec4 texcoords;  // texcoord set of base color, metal-rough, normal, occlusion
   uvec4 flags;      // texture bits, alpha mode, shading-model ID, unused
+  // KHR_texture_transform per texture (base color, metal-rough, normal, occlusion, emissive):
+  // uv_linear[i] = textureTransformLinear (common/texture_transform.glsl), uv_offset[i].xy.
+  vec4 uv_linear[5];
+  vec4 uv_offset[5];
 };
 
 // The draw's material: GpuScene keeps every material in one buffer and the G-buffer pass binds the

@@ -4,7 +4,9 @@
 //   HV_MAT_RUNTIME_FLAGS 1|0: 1 = test each material's flags at run time (uber); 0 = every
 //     material drawn with the program has exactly the features switched on (no tests).
 //   HV_MAT_BASE_COLOR_MAP, HV_MAT_METAL_ROUGH_MAP, HV_MAT_NORMAL_MAP, HV_MAT_OCCLUSION_MAP,
-//   HV_MAT_EMISSIVE, HV_MAT_EMISSIVE_MAP, HV_MAT_ALPHA_MASK, HV_MAT_DOUBLE_SIDED, HV_MAT_UV1 1|0.
+//   HV_MAT_EMISSIVE, HV_MAT_EMISSIVE_MAP, HV_MAT_ALPHA_MASK, HV_MAT_DOUBLE_SIDED, HV_MAT_UV1,
+//   HV_MAT_VERTEX_COLOR (COLOR_0 multiplies base colour and alpha), HV_MAT_TEX_TRANSFORM
+//   (KHR_texture_transform) 1|0.
 #ifndef HV_MATERIAL_FEATURES_GLSL
 #define HV_MATERIAL_FEATURES_GLSL
 
@@ -37,6 +39,12 @@
 #endif
 #ifndef HV_MAT_UV1
 #define HV_MAT_UV1 1
+#endif
+#ifndef HV_MAT_VERTEX_COLOR
+#define HV_MAT_VERTEX_COLOR 1
+#endif
+#ifndef HV_MAT_TEX_TRANSFORM
+#define HV_MAT_TEX_TRANSFORM 1
 #endif
 
 #endif

@@ -5,6 +5,7 @@
 #include "../common/frame.glsl"
 #include "../common/gbuffer.glsl"
 #include "../common/material.glsl"
+#include "../common/texture_transform.glsl"
 
 layout(binding = HV_UNIT_MATERIAL_TEXTURES + 0) uniform sampler2D t_base_color;  // sRGB texture: sampled linear
 layout(binding = HV_UNIT_MATERIAL_TEXTURES + 1) uniform sampler2D t_metal_rough;
@@ -19,6 +20,9 @@ layout(location = 1) in vec4 v_tangent;
 layout(location = 2) in vec2 v_uv0;
 #if HV_MAT_UV1
 layout(location = 3) in vec2 v_uv1;
+#endif
+#if HV_MAT_VERTEX_COLOR
+layout(location = 4) in vec4 v_color;
 #endif
 
 layout(location = 0) out vec4 o_base_cavity;  // SRGB8_ALPHA8
@@ -42,11 +46,27 @@ vec2 uvSet(uint set) { return v_uv0; }
 #define HV_MAT_MASKED true
 #endif
 
+// The UV of texture `slot` (0 base color .. 4 emissive, GpuMaterial's order) from set `set`,
+// through its KHR_texture_transform when the material has one.
+vec2 texUv(uint slot, uint set) {
+  vec2 uv = uvSet(set);
+#if HV_MAT_TEX_TRANSFORM
+  GpuMaterial m = u_material;
+  if (HV_MAT_USES(HV_MAT_TEX_TRANSFORM_BIT)) {
+    uv = applyTextureTransform(uv, m.uv_linear[slot], m.uv_offset[slot].xy);
+  }
+#endif
+  return uv;
+}
+
 void main() {
   GpuMaterial m = u_material;
   vec4 base = m.base_color;
 #if HV_MAT_BASE_COLOR_MAP
-  if (HV_MAT_USES(HV_MAT_BASE_COLOR_TEX)) base *= texture(t_base_color, uvSet(m.texcoords.x));
+  if (HV_MAT_USES(HV_MAT_BASE_COLOR_TEX)) base *= texture(t_base_color, texUv(0u, m.texcoords.x));
+#endif
+#if HV_MAT_VERTEX_COLOR
+  if (HV_MAT_USES(HV_MAT_VERTEX_COLOR_BIT)) base *= v_color;  // glTF 2.0 3.9.2: COLOR_0 multiplies
 #endif
 #if HV_MAT_ALPHA_MASK
   if (HV_MAT_MASKED && base.a < m.params.w) discard;
@@ -56,7 +76,7 @@ void main() {
   float roughness = m.params.y;
 #if HV_MAT_METAL_ROUGH_MAP
   if (HV_MAT_USES(HV_MAT_METAL_ROUGH_TEX)) {
-    vec4 mr = texture(t_metal_rough, uvSet(m.texcoords.y));
+    vec4 mr = texture(t_metal_rough, texUv(1u, m.texcoords.y));
     metallic *= mr.b;   // glTF: B = metallic
     roughness *= mr.g;  //       G = roughness
   }
@@ -64,7 +84,7 @@ void main() {
   float cavity = m.params.z;
 #if HV_MAT_OCCLUSION_MAP
   if (HV_MAT_USES(HV_MAT_OCCLUSION_TEX)) {
-    float ao = texture(t_occlusion, uvSet(m.texcoords.w)).r;
+    float ao = texture(t_occlusion, texUv(3u, m.texcoords.w)).r;
     cavity *= 1.0 + m.extra.y * (ao - 1.0);  // glTF occlusion strength
   }
 #endif
@@ -80,7 +100,7 @@ void main() {
     if (tl > 1e-8) {
       t /= tl;
       vec3 b = cross(n, t) * (v_tangent.w < 0.0 ? -1.0 : 1.0);
-      vec3 tn = texture(t_normal, uvSet(m.texcoords.z)).xyz * 2.0 - 1.0;
+      vec3 tn = texture(t_normal, texUv(2u, m.texcoords.z)).xyz * 2.0 - 1.0;
       tn.xy *= m.extra.x;  // glTF normalTexture.scale
       vec3 mapped = t * tn.x + b * tn.y + n * tn.z;
       float ml = length(mapped);
@@ -92,7 +112,7 @@ void main() {
 #if HV_MAT_EMISSIVE
   vec3 emissive = m.emissive.rgb;
 #if HV_MAT_EMISSIVE_MAP
-  if (HV_MAT_USES(HV_MAT_EMISSIVE_TEX)) emissive *= texture(t_emissive, uvSet(m.extra.z > 0.5 ? 1u : 0u)).rgb;
+  if (HV_MAT_USES(HV_MAT_EMISSIVE_TEX)) emissive *= texture(t_emissive, texUv(4u, m.extra.z > 0.5 ? 1u : 0u)).rgb;
 #endif
 #else
   vec3 emissive = vec3(0.0);

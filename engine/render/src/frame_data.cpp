@@ -4,6 +4,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "halfvec/shading/shading.hpp"
+
 namespace hv::render {
 
 GpuMaterial packMaterial(const Material& m) {
@@ -20,6 +22,14 @@ GpuMaterial packMaterial(const Material& m) {
   if (m.normal_tex.valid()) bits |= kNormalTex;
   if (m.occlusion_tex.valid()) bits |= kOcclusionTex;
   if (m.emissive_tex.valid()) bits |= kEmissiveTex;
+  if (m.vertex_color) bits |= kVertexColor;
+  const TextureRef* refs[5] = {&m.base_color_tex, &m.metallic_roughness_tex, &m.normal_tex,
+                               &m.occlusion_tex, &m.emissive_tex};
+  for (int i = 0; i < 5; ++i) {
+    g.uv_linear[i] = glsl::textureTransformLinear(refs[i]->uv_scale, refs[i]->uv_rotation);
+    g.uv_offset[i] = glm::vec4(refs[i]->uv_offset, 0.0f, 0.0f);
+    if (refs[i]->valid() && refs[i]->transformed()) bits |= kTexTransform;
+  }
   g.flags = glm::uvec4(bits, m.alpha_mode == AlphaMode::Mask ? 1u : 0u,
                        static_cast<uint32_t>(m.model), 0u);
   return g;

@@ -45,7 +45,7 @@ GpuScene::GpuScene(const Scene& scene) : scene_(&scene) {
   };
   for (Attr a : {Attr{0, 3, offsetof(Vertex, position)}, Attr{1, 3, offsetof(Vertex, normal)},
                  Attr{2, 4, offsetof(Vertex, tangent)}, Attr{3, 2, offsetof(Vertex, uv0)},
-                 Attr{4, 2, offsetof(Vertex, uv1)}}) {
+                 Attr{4, 2, offsetof(Vertex, uv1)}, Attr{5, 4, offsetof(Vertex, color)}}) {
     glEnableVertexArrayAttrib(vao, a.loc);
     glVertexArrayAttribFormat(vao, a.loc, a.size, GL_FLOAT, GL_FALSE,
                               static_cast<GLuint>(a.offset));

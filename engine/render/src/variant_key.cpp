@@ -10,8 +10,8 @@
 
 namespace hv::render {
 
-const std::array<MaterialFeatureField, 9>& materialFeatureFields() {
-  static const std::array<MaterialFeatureField, 9> fields = {{
+const std::array<MaterialFeatureField, 11>& materialFeatureFields() {
+  static const std::array<MaterialFeatureField, 11> fields = {{
       {"HV_MAT_BASE_COLOR_MAP", "base_color_map", &MaterialFeatures::base_color_map},
       {"HV_MAT_METAL_ROUGH_MAP", "metal_rough_map", &MaterialFeatures::metal_rough_map},
       {"HV_MAT_NORMAL_MAP", "normal_map", &MaterialFeatures::normal_map},
@@ -21,6 +21,8 @@ const std::array<MaterialFeatureField, 9>& materialFeatureFields() {
       {"HV_MAT_ALPHA_MASK", "alpha_mask", &MaterialFeatures::alpha_mask},
       {"HV_MAT_DOUBLE_SIDED", "double_sided", &MaterialFeatures::double_sided},
       {"HV_MAT_UV1", "uv1", &MaterialFeatures::uv1},
+      {"HV_MAT_VERTEX_COLOR", "vertex_color", &MaterialFeatures::vertex_color},
+      {"HV_MAT_TEX_TRANSFORM", "tex_transform", &MaterialFeatures::tex_transform},
   }};
   return fields;
 }
@@ -35,7 +37,7 @@ std::string MaterialFeatures::text() const {
   return t.empty() ? "none" : t;
 }
 
-MaterialFeatures materialFeatures(const Material& m) {
+MaterialFeatures materialFeatures(const Material& m, bool colored_mesh) {
   MaterialFeatures f;
   f.base_color_map = m.base_color_tex.valid();
   f.metal_rough_map = m.metallic_roughness_tex.valid();
@@ -52,6 +54,12 @@ MaterialFeatures materialFeatures(const Material& m) {
           (f.normal_map && m.normal_tex.texcoord == 1) ||
           (f.occlusion_map && m.occlusion_tex.texcoord == 1) ||
           (f.emissive_map && m.emissive_tex.texcoord == 1);
+  f.vertex_color = colored_mesh && m.vertex_color;
+  f.tex_transform = (f.base_color_map && m.base_color_tex.transformed()) ||
+                    (f.metal_rough_map && m.metallic_roughness_tex.transformed()) ||
+                    (f.normal_map && m.normal_tex.transformed()) ||
+                    (f.occlusion_map && m.occlusion_tex.transformed()) ||
+                    (f.emissive_map && m.emissive_tex.transformed());
   return f;
 }
 
@@ -225,10 +233,15 @@ VariantKey deriveVariantKey(const Scene& scene) {
   k.environment = scene.environment.kind;
   // Only materials that are drawn count.
   std::vector<bool> drawn(scene.materials.size(), false);
+  std::vector<bool> colored(scene.materials.size(), false);  // drawn on a mesh with COLOR_0
   for (const Object& o : scene.objects) {
     for (int mi : o.meshes) {
-      const int mat = scene.meshes.at(size_t(mi)).material;
-      if (mat >= 0 && size_t(mat) < drawn.size()) drawn[size_t(mat)] = true;
+      const Mesh& mesh = scene.meshes.at(size_t(mi));
+      const int mat = mesh.material;
+      if (mat >= 0 && size_t(mat) < drawn.size()) {
+        drawn[size_t(mat)] = true;
+        if (mesh.has_colors) colored[size_t(mat)] = true;
+      }
     }
   }
   k.material_variant.assign(scene.materials.size(), -1);
@@ -238,7 +251,7 @@ VariantKey deriveVariantKey(const Scene& scene) {
     k.unlit |= m.model == ShadingModel::Unlit;
     k.default_lit |= m.model == ShadingModel::DefaultLit;
     if (k.uber) continue;
-    const MaterialFeatures f = materialFeatures(m);
+    const MaterialFeatures f = materialFeatures(m, colored[i]);
     auto it = std::find(k.material_variants.begin(), k.material_variants.end(), f);
     if (it == k.material_variants.end()) it = k.material_variants.insert(it, f);
     k.material_variant[i] = int(it - k.material_variants.begin());

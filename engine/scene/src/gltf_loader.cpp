@@ -291,11 +291,18 @@ class Importer {
   void warn(const std::string& msg) const { sceneWarning(path_ + ": " + msg, opt_.warnings); }
 
   void run(const glm::mat4& transform) {
-    for (const std::string& ext : m_.extensionsRequired) {
-      if (ext != "KHR_materials_pbrSpecularGlossiness" && ext != "KHR_mesh_quantization") {
-        fail("extensionsRequired", "unsupported required extension " + ext);
+    for (size_t i = 0; i < m_.extensionsRequired.size(); ++i) {
+      const std::string& ext = m_.extensionsRequired[i];
+      if (!honoured(ext)) {
+        fail(idx("extensionsRequired", i), "the required extension " + ext +
+                                               " is not supported (supported: " + honouredList() +
+                                               ")");
       }
     }
+    for (size_t i = 0; i < m_.extensionsUsed.size(); ++i) {
+      noteExtension(m_.extensionsUsed[i], idx("extensionsUsed", i));
+    }
+    checkUnsupportedStructure();
     if (opt_.material_override < 0) {
       for (size_t i = 0; i < m_.images.size(); ++i) importImage(int(i));
       for (size_t i = 0; i < m_.materials.size(); ++i) importMaterial(int(i));
@@ -324,6 +331,22 @@ class Importer {
     for (int r : roots) visit(r, transform, roots_el);
   }
 
+  // Extensions the importer reads. KHR_materials_pbrSpecularGlossiness is approximated (with a
+  // warning of its own), the others are honoured in full.
+  static bool honoured(const std::string& ext) {
+    for (const char* h : kHonouredExtensions)
+      if (ext == h) return true;
+    return false;
+  }
+  static std::string honouredList() {
+    std::string t;
+    for (const char* h : kHonouredExtensions) {
+      if (!t.empty()) t += ", ";
+      t += h;
+    }
+    return t;
+  }
+
   std::vector<ImageData> images;
   std::vector<Material> materials;
   std::vector<Mesh> meshes;
@@ -331,6 +354,76 @@ class Importer {
   std::vector<GltfCamera> cameras;
 
  private:
+  static constexpr const char* kHonouredExtensions[] = {
+      "KHR_materials_emissive_strength", "KHR_materials_pbrSpecularGlossiness",
+      "KHR_mesh_quantization", "KHR_texture_transform"};
+
+  // ---- what is not imported: one warning per extension, attribute or feature -----------------
+  // An extension the importer does not read, used at `el`: one warning per name per file, where
+  // it is first seen (extensionsUsed, or the object of a file that forgot to declare it).
+  void noteExtension(const std::string& ext, const std::string& el) {
+    if (honoured(ext) || !warned_.insert("extension " + ext).second) return;
+    warn(el + ": extension " + ext + " is not supported; ignored (the model renders without it)");
+  }
+  void noteExtensions(const tinygltf::ExtensionMap& exts, const std::string& el) {
+    for (const auto& [name, value] : exts) noteExtension(name, el + ".extensions");
+  }
+  void warnOnce(const std::string& key, const std::string& msg) {
+    if (warned_.insert(key).second) warn(msg);
+  }
+  // Skins, animations and morph targets are not applied: the rest pose is drawn.
+  void checkUnsupportedStructure() {
+    if (!m_.skins.empty()) {
+      warnOnce("skins", "skins: " + std::to_string(m_.skins.size()) +
+                            " skin(s) not applied (skinning is not supported); the bind pose is "
+                            "drawn");
+    }
+    if (!m_.animations.empty()) {
+      warnOnce("animations", "animations: " + std::to_string(m_.animations.size()) +
+                                 " animation(s) not played (not supported); the static pose is "
+                                 "drawn");
+    }
+    for (size_t i = 0; i < m_.nodes.size(); ++i)
+      noteExtensions(m_.nodes[i].extensions, idx("nodes", i));
+    for (size_t i = 0; i < m_.textures.size(); ++i) {
+      noteExtensions(m_.textures[i].extensions, idx("textures", i));
+    }
+    for (size_t i = 0; i < m_.images.size(); ++i)
+      noteExtensions(m_.images[i].extensions, idx("images", i));
+    for (size_t i = 0; i < m_.samplers.size(); ++i) {
+      noteExtensions(m_.samplers[i].extensions, idx("samplers", i));
+    }
+    for (size_t i = 0; i < m_.cameras.size(); ++i) {
+      noteExtensions(m_.cameras[i].extensions, idx("cameras", i));
+    }
+    for (size_t i = 0; i < m_.scenes.size(); ++i)
+      noteExtensions(m_.scenes[i].extensions, idx("scenes", i));
+    for (size_t i = 0; i < m_.meshes.size(); ++i) {
+      const tinygltf::Mesh& gm = m_.meshes[i];
+      noteExtensions(gm.extensions, idx("meshes", i));
+      for (size_t pi = 0; pi < gm.primitives.size(); ++pi) {
+        const tinygltf::Primitive& p = gm.primitives[pi];
+        const std::string el = idx("meshes", i) + ".primitives[" + std::to_string(pi) + "]";
+        noteExtensions(p.extensions, el);
+        if (!p.targets.empty()) {
+          warnOnce("targets", el + ".targets: morph targets are not applied (not supported); "
+                                   "the base shape is drawn");
+        }
+        for (const auto& [name, acc] : p.attributes) {
+          if (name == "POSITION" || name == "NORMAL" || name == "TANGENT" || name == "TEXCOORD_0" ||
+              name == "TEXCOORD_1" || name == "COLOR_0") {
+            continue;
+          }
+          warnOnce("attribute " + name,
+                   el + ".attributes." + name + ": attribute not supported; ignored" +
+                       (name.rfind("JOINTS_", 0) == 0 || name.rfind("WEIGHTS_", 0) == 0
+                            ? " (skinning is not supported)"
+                            : ""));
+        }
+      }
+    }
+  }
+
   // ---- accessors ---------------------------------------------------------------------------
   // The bytes of bufferView `view_index`, checked against its buffer; `ref` names the reference.
   std::pair<const uint8_t*, size_t> viewBytes(int view_index, const std::string& ref) const {
@@ -587,11 +680,48 @@ class Importer {
     return float(x);
   }
 
-  TextureRef texture(int tex_index, int texcoord, const std::string& el) {
+  // A number of an extension's object (`v` has `key`), finite, else an error naming `el.key`.
+  float extNumber(const tinygltf::Value& v, const char* key, const std::string& el) const {
+    const tinygltf::Value& x = v.Get(key);
+    if (!x.IsNumber()) fail(el + "." + key, "expected a number");
+    return finite(x.GetNumberAsDouble(), el + "." + key);
+  }
+  glm::vec2 extVec2(const tinygltf::Value& v, const char* key, const std::string& el) const {
+    const tinygltf::Value& x = v.Get(key);
+    if (!x.IsArray() || x.ArrayLen() != 2 || !x.Get(0).IsNumber() || !x.Get(1).IsNumber()) {
+      fail(el + "." + key, "expected an array of 2 numbers");
+    }
+    return {finite(x.Get(0).GetNumberAsDouble(), el + "." + key),
+            finite(x.Get(1).GetNumberAsDouble(), el + "." + key)};
+  }
+
+  // KHR_texture_transform on a textureInfo (`exts` its extensions): offset, rotation, scale and
+  // the texCoord that replaces the textureInfo's own.
+  void textureTransform(const tinygltf::ExtensionMap& exts, TextureRef& r, int& texcoord,
+                        const std::string& el) {
+    noteExtensions(exts, el);
+    const auto it = exts.find("KHR_texture_transform");
+    if (it == exts.end()) return;
+    const tinygltf::Value& v = it->second;
+    const std::string xel = el + ".extensions.KHR_texture_transform";
+    if (!v.IsObject()) fail(xel, "expected an object");
+    if (v.Has("offset")) r.uv_offset = extVec2(v, "offset", xel);
+    if (v.Has("rotation")) r.uv_rotation = extNumber(v, "rotation", xel);
+    if (v.Has("scale")) r.uv_scale = extVec2(v, "scale", xel);
+    if (v.Has("texCoord")) {
+      const tinygltf::Value& tc = v.Get("texCoord");
+      if (!tc.IsInt()) fail(xel + ".texCoord", "expected an integer");
+      texcoord = tc.GetNumberAsInt();
+    }
+  }
+
+  TextureRef texture(int tex_index, int texcoord, const tinygltf::ExtensionMap& exts,
+                     const std::string& el) {
     TextureRef r;
     if (tex_index < 0) return r;
     if (tex_index >= int(m_.textures.size())) fail(el, "texture index out of range");
     const tinygltf::Texture& t = m_.textures[size_t(tex_index)];
+    textureTransform(exts, r, texcoord, el);
     if (texcoord < 0 || texcoord > 1)
       fail(el, "texCoord " + std::to_string(texcoord) + " not supported (0 or 1)");
     r.texcoord = texcoord;
@@ -653,25 +783,43 @@ class Importer {
     }
     m.metallic = finite(pbr.metallicFactor, el + ".pbrMetallicRoughness.metallicFactor");
     m.roughness = finite(pbr.roughnessFactor, el + ".pbrMetallicRoughness.roughnessFactor");
+    for (const auto& [name, value] : g.extensions) {
+      if (name != "KHR_materials_pbrSpecularGlossiness") noteExtension(name, el + ".extensions");
+    }
+    noteExtensions(pbr.extensions, el + ".pbrMetallicRoughness");
     m.base_color_tex = texture(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
-                               el + ".baseColorTexture");
+                               pbr.baseColorTexture.extensions, el + ".baseColorTexture");
     m.metallic_roughness_tex =
         texture(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
-                el + ".metallicRoughnessTexture");
-    m.normal_tex = texture(g.normalTexture.index, g.normalTexture.texCoord, el + ".normalTexture");
+                pbr.metallicRoughnessTexture.extensions, el + ".metallicRoughnessTexture");
+    m.normal_tex = texture(g.normalTexture.index, g.normalTexture.texCoord,
+                           g.normalTexture.extensions, el + ".normalTexture");
     m.normal_tex.scale = finite(g.normalTexture.scale, el + ".normalTexture.scale");
-    m.occlusion_tex =
-        texture(g.occlusionTexture.index, g.occlusionTexture.texCoord, el + ".occlusionTexture");
+    m.occlusion_tex = texture(g.occlusionTexture.index, g.occlusionTexture.texCoord,
+                              g.occlusionTexture.extensions, el + ".occlusionTexture");
     m.occlusion_tex.scale = finite(g.occlusionTexture.strength, el + ".occlusionTexture.strength");
-    m.emissive_tex =
-        texture(g.emissiveTexture.index, g.emissiveTexture.texCoord, el + ".emissiveTexture");
+    m.emissive_tex = texture(g.emissiveTexture.index, g.emissiveTexture.texCoord,
+                             g.emissiveTexture.extensions, el + ".emissiveTexture");
     if (g.emissiveFactor.size() == 3) {
       const std::string f = el + ".emissiveFactor";
-      // glTF 2.0: each in [0, 1] (KHR_materials_emissive_strength, which scales it, is not read).
+      // glTF 2.0: each in [0, 1]; KHR_materials_emissive_strength scales it past 1.
       m.emissive =
           glm::clamp(glm::vec3(finite(g.emissiveFactor[0], f), finite(g.emissiveFactor[1], f),
                                finite(g.emissiveFactor[2], f)),
                      0.0f, 1.0f);
+    }
+    if (auto es = g.extensions.find("KHR_materials_emissive_strength"); es != g.extensions.end()) {
+      const std::string xel = el + ".extensions.KHR_materials_emissive_strength";
+      if (!es->second.IsObject()) fail(xel, "expected an object");
+      if (es->second.Has("emissiveStrength")) {
+        const float k = extNumber(es->second, "emissiveStrength", xel);
+        if (k < 0.0f) fail(xel + ".emissiveStrength", "expected >= 0, got " + fmtFloat(k));
+        m.emissive *= k;
+        // The product stays a radiance the HDR target holds (frame.glsl clamps at HV_HDR_MAX).
+        if (!std::isfinite(m.emissive.x + m.emissive.y + m.emissive.z)) {
+          fail(xel + ".emissiveStrength", "emissive radiance overflows");
+        }
+      }
     }
     m.double_sided = g.doubleSided;
     if (g.alphaMode == "MASK") {
@@ -708,8 +856,13 @@ class Importer {
       if (v.Has("diffuseTexture")) {
         const auto& t = v.Get("diffuseTexture");
         const int index = t.Has("index") ? t.Get("index").GetNumberAsInt() : -1;
-        const int tc = t.Has("texCoord") ? t.Get("texCoord").GetNumberAsInt() : 0;
-        m.base_color_tex = texture(index, tc, el + ".diffuseTexture");
+        int tc = t.Has("texCoord") ? t.Get("texCoord").GetNumberAsInt() : 0;
+        tinygltf::ExtensionMap exts;
+        if (t.Has("extensions") && t.Get("extensions").IsObject()) {
+          const tinygltf::Value& e = t.Get("extensions");
+          for (const std::string& key : e.Keys()) exts[key] = e.Get(key);
+        }
+        m.base_color_tex = texture(index, tc, exts, el + ".diffuseTexture");
       }
       if (!warned_specgloss_) {
         warn(
@@ -727,8 +880,13 @@ class Importer {
   int defaultMaterial() {
     if (opt_.material_override >= 0) return opt_.material_override;
     if (default_material_ < 0) {
+      // glTF 2.0, 3.9.6: a primitive without a material uses every default of a material:
+      // baseColorFactor 1, metallicFactor 1, roughnessFactor 1.
       Material m;
       m.name = "gltf default";
+      m.base_color = glm::vec3(1.0f);
+      m.metallic = 1.0f;
+      m.roughness = 1.0f;
       materials.push_back(m);
       default_material_ = int(materials.size()) - 1;
     }
@@ -792,6 +950,15 @@ class Importer {
                            {kF, kUB, kUS, kB, kS}, true);
       }
     }
+    // glTF 2.0 3.7.2.1: COLOR_0 is VEC3 or VEC4 of float, or normalized unsigned byte/short;
+    // linear RGB(A), multiplying the base colour (and alpha).
+    std::vector<float> col;
+    size_t col_comps = 0;
+    if (attr("COLOR_0") >= 0) {
+      col = readFloats(attr("COLOR_0"), el + ".COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4},
+                       {kF, kUB, kUS}, true);
+      col_comps = accessor(attr("COLOR_0"), el + ".COLOR_0").type == TINYGLTF_TYPE_VEC3 ? 3 : 4;
+    }
     auto sizeCheck = [&](const std::vector<float>& v, size_t comps, const char* what) {
       if (!v.empty() && v.size() != n * comps) {
         fail(el + "." + what, "count differs from POSITION count " + std::to_string(n));
@@ -801,6 +968,7 @@ class Importer {
     sizeCheck(tan, 4, "TANGENT");
     sizeCheck(uv[0], 2, "TEXCOORD_0");
     sizeCheck(uv[1], 2, "TEXCOORD_1");
+    sizeCheck(col, col_comps, "COLOR_0");
 
     std::vector<uint32_t> ind;
     if (p.indices >= 0) {
@@ -868,6 +1036,7 @@ class Importer {
     }
     Mesh mesh;
     mesh.material = material;
+    mesh.has_colors = !col.empty();
     auto vertex = [&](size_t i) {
       Vertex v;
       v.position = glm::make_vec3(&pos[i * 3]);
@@ -882,6 +1051,11 @@ class Importer {
       }
       if (!uv[0].empty()) v.uv0 = glm::make_vec2(&uv[0][i * 2]);
       if (!uv[1].empty()) v.uv1 = glm::make_vec2(&uv[1][i * 2]);
+      if (!col.empty()) {
+        const float* c = &col[i * col_comps];
+        // Float colours outside [0, 1] are invalid glTF: clamped, as a base colour is.
+        v.color = glm::clamp(glm::vec4(c[0], c[1], c[2], col_comps == 4 ? c[3] : 1.0f), 0.0f, 1.0f);
+      }
       return v;
     };
     if (has_normal) {
@@ -1122,6 +1296,7 @@ class Importer {
   std::vector<uint64_t> mesh_triangles_;  // per glTF mesh, all imported primitives
   int default_material_ = -1;
   bool warned_specgloss_ = false;
+  std::set<std::string> warned_;  // what was warned about (checkUnsupportedStructure)
   std::vector<std::vector<int>> mesh_map_;
 };
 

@@ -79,6 +79,30 @@ Camera modelCamera(const GltfCamera& c, const Bounds& bounds) {
   return cam;
 }
 
+// Makes `o` equal to `j`, keeping `o`'s key order (keys only in `j` are appended).
+void mergeInOrder(ojson& o, const nlohmann::json& j) {
+  if (o.is_object() && j.is_object()) {
+    for (auto it = o.begin(); it != o.end();) {
+      if (!j.contains(it.key())) {
+        it = o.erase(it);
+      } else {
+        ++it;
+      }
+    }
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      if (o.contains(it.key())) {
+        mergeInOrder(o[it.key()], it.value());
+      } else {
+        o[it.key()] = ojson::parse(it.value().dump());
+      }
+    }
+  } else if (o.is_array() && j.is_array() && o.size() == j.size()) {
+    for (size_t i = 0; i < j.size(); ++i) mergeInOrder(o[i], j[i]);
+  } else {
+    o = ojson::parse(j.dump());
+  }
+}
+
 }  // namespace
 
 bool isModelPath(const std::string& path) {
@@ -160,8 +184,8 @@ Light keyLight(const Bounds& bounds) {
   return l;
 }
 
-ojson modelSceneJson(const std::string& model_path, int camera,
-                     std::vector<std::string>* warnings) {
+ojson modelSceneJson(const std::string& model_path, int camera, std::vector<std::string>* warnings,
+                     bool key_light) {
   const std::string abs = fs::absolute(model_path).lexically_normal().string();
   std::vector<GltfCamera> cameras;
   const Scene geometry = loadGeometry(abs, cameras, warnings);
@@ -196,11 +220,13 @@ ojson modelSceneJson(const std::string& model_path, int camera,
   const std::string stem = fs::path(model_path).stem().string();
 
   ojson j;
-  j["description"] = "Made by halfvec for " + fs::path(model_path).filename().string() +
-                     (camera >= 0 ? ": the model's camera " + std::to_string(camera)
-                                  : ": the bounds framed from a three-quarter view") +
-                     ", the default key light (a sphere light above left of the camera), the "
-                     "procedural sky (docs/scene-format.md, \"Models opened by path\").";
+  j["description"] =
+      "Made by halfvec for " + fs::path(model_path).filename().string() +
+      (camera >= 0 ? ": the model's camera " + std::to_string(camera)
+                   : ": the bounds framed from a three-quarter view") +
+      (key_light ? ", the default key light (a sphere light above left of the camera)"
+                 : ", no light of its own") +
+      ", the procedural sky (docs/scene-format.md, \"Models opened by path\").";
   ojson c;
   c["position"] = vec3Json(cam.position);
   c["target"] = vec3Json(cam.target);
@@ -210,27 +236,46 @@ ojson modelSceneJson(const std::string& model_path, int camera,
   c["far"] = cam.far_plane;
   j["camera"] = c;
   j["objects"] = ojson::array({ojson{{"name", stem}, {"gltf", abs}}});
-  j["lights"] = ojson::array({ojson{{"type", "sphere"},
-                                    {"position", vec3Json(key.position)},
-                                    {"color", vec3Json(key.color)},
-                                    {"intensity", key.intensity},
-                                    {"radius", key.radius},
-                                    {"range", key.range},
-                                    {"shadows", key.shadows}}});
+  j["lights"] = ojson::array();
+  if (key_light) {
+    j["lights"].push_back(ojson{{"type", "sphere"},
+                                {"position", vec3Json(key.position)},
+                                {"color", vec3Json(key.color)},
+                                {"intensity", key.intensity},
+                                {"radius", key.radius},
+                                {"range", key.range},
+                                {"shadows", key.shadows}});
+  }
   j["environment"] = ojson{{"type", "sky"}};
   return j;
+}
+
+std::vector<std::string> lookOverrides(Look look) {
+  switch (look) {
+    case Look::Gltf:
+      return {"settings.tone_map=\"pbr_neutral\"", "settings.gamma=\"srgb\"",
+              "settings.dither=false"};
+    default:
+      return {};
+  }
 }
 
 ojson sceneJsonFor(const std::string& path, const SceneOpenOptions& options,
                    std::vector<std::string>* warnings) {
   ojson j;
   if (isModelPath(path)) {
-    j = modelSceneJson(path, options.camera, warnings);
+    j = modelSceneJson(path, options.camera, warnings,
+                       options.key_light && options.look != Look::Gltf);
   } else {
     if (options.camera >= 0) {
       throw SceneError(path +
                        ": --camera selects a glTF model's camera; a scene file has one "
                        "camera (edit its \"camera\")");
+    }
+    if (!options.key_light) {
+      throw SceneError(path +
+                       ": --no-key-light drops the light added to a glTF model; a scene file's "
+                       "lights are its own (edit its \"lights\")");
     }
     // The same checks as loadScene: a regular file within kMaxSceneFileBytes, nesting bounded,
     // parse errors with file, line and column.
@@ -263,15 +308,22 @@ ojson sceneJsonFor(const std::string& path, const SceneOpenOptions& options,
     env["path"] = hdr;
     j["environment"] = env;
   }
+  std::vector<std::string> overrides = lookOverrides(options.look);
+  overrides.insert(overrides.end(), options.overrides.begin(), options.overrides.end());
+  if (!overrides.empty()) {
+    // applyOverride edits plain (key-sorted) JSON; the result is merged back into the file's
+    // order, new keys after the existing ones.
+    nlohmann::json plain = nlohmann::json::parse(j.dump());
+    for (const std::string& o : overrides) applyOverride(plain, o, path);
+    mergeInOrder(j, plain);
+  }
   return j;
 }
 
 Scene openScene(const std::string& path, const SceneOpenOptions& options,
                 std::vector<std::string>* warnings) {
   const ojson ordered = sceneJsonFor(path, options, warnings);
-  nlohmann::json j = nlohmann::json::parse(ordered.dump());
-  for (const std::string& o : options.overrides) applyOverride(j, o, path);
-  return parseScene(j, path, warnings);
+  return parseScene(nlohmann::json::parse(ordered.dump()), path, warnings);
 }
 
 }  // namespace hv

@@ -36,8 +36,9 @@ Camera parseCamera(const Ctx& ctx, const json& j) {
 }
 
 Material parseMaterial(const Ctx& ctx, const json& j, const std::string& ptr, bool allow_name) {
-  std::vector<std::string_view> keys = {"base_color", "metallic",      "roughness",   "cavity",
-                                        "emissive",   "shading_model", "double_sided"};
+  std::vector<std::string_view> keys = {"base_color",   "metallic",    "roughness",
+                                        "cavity",       "emissive",    "shading_model",
+                                        "double_sided", "vertex_color"};
   if (allow_name) keys.push_back("name");
   Obj o(ctx, j, ptr, keys);
   Material m;
@@ -49,6 +50,7 @@ Material parseMaterial(const Ctx& ctx, const json& j, const std::string& ptr, bo
   m.cavity = o.num("cavity", m.cavity, kUnit);
   m.emissive = o.vec3("emissive", m.emissive, kNonNeg);
   m.double_sided = o.boolean("double_sided", m.double_sided);
+  m.vertex_color = o.boolean("vertex_color", m.vertex_color);
   if (o.has("shading_model")) {
     m.model = o.enumeration<ShadingModel>("shading_model", m.model);
     if (m.model == ShadingModel::Background) {

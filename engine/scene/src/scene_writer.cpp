@@ -369,6 +369,7 @@ void materialEdits(const Scene& loaded, const Scene& edited, Collector& c) {
     c.field(p + "/emissive", a.emissive, b.emissive, vec3(b.emissive));
     c.field(p + "/shading_model", a.model, b.model, name(b.model));
     c.field(p + "/double_sided", a.double_sided, b.double_sided, b.double_sided);
+    c.field(p + "/vertex_color", a.vertex_color, b.vertex_color, b.vertex_color);
   }
 }
 

@@ -40,16 +40,20 @@ struct alignas(16) GpuMaterial {
   glm::vec4 emissive;
   glm::vec4 extra;  // normal scale, occlusion strength, emissive texcoord set
   glm::uvec4 texcoords;
-  glm::uvec4 flags;  // texture bits, alpha mode, shading model, unused
+  glm::uvec4 flags;        // texture bits, alpha mode, shading model, unused
+  glm::vec4 uv_linear[5];  // KHR_texture_transform per texture (material.glsl)
+  glm::vec4 uv_offset[5];
 };
-static_assert(sizeof(GpuMaterial) == 96, "GpuMaterial must match std140 layout");
+static_assert(sizeof(GpuMaterial) == 256, "GpuMaterial must match std140 layout");
 
 enum MaterialFlag : uint32_t {
   kBaseColorTex = 1,
   kMetalRoughTex = 2,
   kNormalTex = 4,
   kOcclusionTex = 8,
-  kEmissiveTex = 16
+  kEmissiveTex = 16,
+  kVertexColor = 32,   // HV_MAT_VERTEX_COLOR_BIT
+  kTexTransform = 64,  // HV_MAT_TEX_TRANSFORM_BIT
 };
 
 GpuMaterial packMaterial(const Material& m);

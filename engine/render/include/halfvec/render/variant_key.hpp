@@ -27,6 +27,8 @@ struct MaterialFeatures {
   bool alpha_mask = false;       // alpha_mode mask: alpha test and discard
   bool double_sided = false;     // back faces are drawn and flip the normal
   bool uv1 = false;              // an enabled map reads TEXCOORD_1 (else only TEXCOORD_0 exists)
+  bool vertex_color = false;     // a mesh drawn with it has COLOR_0 and the material uses it
+  bool tex_transform = false;    // an enabled map has a KHR_texture_transform
 
   auto operator<=>(const MaterialFeatures&) const = default;
   // Compact text of the enabled features, e.g. "base_color_map+normal_map"; "none" if none.
@@ -39,11 +41,11 @@ struct MaterialFeatureField {
   const char* name;    // normal_map
   bool MaterialFeatures::*member;
 };
-const std::array<MaterialFeatureField, 9>& materialFeatureFields();
+const std::array<MaterialFeatureField, 11>& materialFeatureFields();
 
 // The features a material uses, after the rules above (emissive map only with emissive,
 // occlusion map only with strength != 0, uv1 only if an enabled map reads set 1).
-MaterialFeatures materialFeatures(const Material& m);
+MaterialFeatures materialFeatures(const Material& m, bool colored_mesh = false);
 // Every feature on: the uber G-buffer program, which reads the material flags at run time.
 MaterialFeatures allMaterialFeatures();
 

@@ -4,12 +4,16 @@
 // TRIANGLE_STRIP and TRIANGLE_FAN (strips and fans converted to lists; POINTS and LINES are
 // validated, then skipped with a warning); 8/16/32-bit indices and non-indexed primitives;
 // POSITION, NORMAL (flat normals generated when missing), TANGENT (generated, tangents.hpp, when
-// missing), TEXCOORD_0/1 (float or normalized integer); metal/rough materials with all five
-// textures, texCoord sets, samplers, factors, doubleSided, alphaMode MASK + alphaCutoff. BLEND is
-// imported as opaque with one warning per material. KHR_materials_pbrSpecularGlossiness is
-// approximated (diffuse -> base color, roughness = 1 - glossiness, metallic = 0, with a warning);
-// KHR_mesh_quantization is supported by the generic accessor reader. Any other extension in
-// extensionsRequired is an error.
+// missing), TEXCOORD_0/1 (float or normalized integer), COLOR_0 (VEC3/VEC4 of float or normalized
+// unsigned byte/short; Vertex::color); metal/rough materials with all five textures, texCoord
+// sets, samplers, factors, doubleSided, alphaMode MASK + alphaCutoff; KHR_texture_transform
+// (TextureRef::uv_*), KHR_materials_emissive_strength. BLEND is imported as opaque with one
+// warning per material. KHR_materials_pbrSpecularGlossiness is approximated (diffuse -> base
+// color, roughness = 1 - glossiness, metallic = 0, with a warning); KHR_mesh_quantization is
+// supported by the generic accessor reader. Everything else is skipped with one warning per file
+// naming it (every other extension, wherever it is used; other attributes; morph targets, skins,
+// animations: docs/gltf.md); an extension the loader cannot honour in extensionsRequired is an
+// error naming it.
 //
 // Validation is strict and atomic: on any error a SceneError naming the file and the element
 // (`accessors[3].byteOffset`, `nodes[7].children`) is thrown and `scene` is left unchanged.
@@ -34,7 +38,7 @@ namespace hv {
 // Budgets per glTF file. A file that exceeds one is rejected with an error naming the element
 // where it went over and the limit. The defaults allow models far larger than the samples (the
 // 1.04M-triangle dense_geometry scene, 4K textures) while keeping a hostile file to a few GB of
-// memory and a few seconds: about 1 GB of vertices (56 bytes each), 2 GB of RGBA8 images (twice,
+// memory and a few seconds: about 1.2 GB of vertices (72 bytes each), 2 GB of RGBA8 images (twice,
 // while decoding), node instances bounded so that a small file reusing nodes cannot expand into
 // billions of objects.
 struct GltfLimits {

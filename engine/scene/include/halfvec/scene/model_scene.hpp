@@ -6,7 +6,8 @@
 //    kFramingFill of the frame, centered; near and far from the bounds; or, with
 //    SceneOpenOptions::camera, one of the model's own cameras;
 //  - environment: the procedural sky (or SceneOpenOptions::environment_hdr);
-//  - the default key light (keyLight): a sphere light above and to the left of the camera.
+//  - the default key light (keyLight): a sphere light above and to the left of the camera, unless
+//    SceneOpenOptions::key_light is false or the look is Look::Gltf.
 // The synthesized scene is plain scene JSON (modelSceneJson), so `--print-scene` prints exactly
 // what is rendered and a user can start a scene file from it.
 #pragma once
@@ -27,11 +28,26 @@ inline constexpr float kFramingFovDeg = 45.0f;        // vertical
 inline constexpr float kFramingAspect = 16.0f / 9.0f;
 inline constexpr float kFramingFill = 0.95f;  // the bounds' projection spans 85% of the frame
 
+// A set of conventions applied to the scene before the overrides (--look).
+enum class Look : uint8_t {
+  Scene,  // the scene's own settings (a model: the engine's defaults and the key light)
+  // The glTF viewers' conventions (Khronos glTF Sample Viewer, three.js): no added light (models:
+  // no key light; image-based lighting only), Khronos PBR Neutral tone mapping, the sRGB transfer
+  // function, no dither.
+  Gltf,
+};
+
 struct SceneOpenOptions {
   std::vector<std::string> overrides;  // "json.path=value" (loadScene), applied last
   std::string environment_hdr;  // non-empty: this .hdr replaces the scene's environment (--env)
   int camera = -1;              // >= 0: the model's camera N (models only; --camera)
+  bool key_light = true;        // models: add the default key light (--no-key-light: false)
+  Look look = Look::Scene;      // --look
 };
+
+// The overrides a look stands for, in the order they are applied ("settings.tone_map=..."); the
+// key light of Look::Gltf is left out by sceneJsonFor, not by an override.
+std::vector<std::string> lookOverrides(Look look);
 
 // True for .gltf and .glb (any case).
 bool isModelPath(const std::string& path);
@@ -68,11 +84,13 @@ Light keyLight(const Bounds& bounds);
 // glTF object with its absolute path, the key light, the sky. Loads the model's geometry to
 // measure it; throws SceneError for a file that does not load or an out-of-range camera index.
 nlohmann::ordered_json modelSceneJson(const std::string& model_path, int camera = -1,
-                                      std::vector<std::string>* warnings = nullptr);
+                                      std::vector<std::string>* warnings = nullptr,
+                                      bool key_light = true);
 
 // The JSON `openScene` loads for `path`: the scene file's own (or modelSceneJson for a model),
-// with options.environment_hdr applied. Throws SceneError (unreadable file, invalid JSON,
-// --camera with a scene file).
+// with options.environment_hdr, the look and then options.overrides applied, in the key order of
+// the file (`--print-scene` prints it). Throws SceneError (unreadable file, invalid JSON,
+// --camera or --no-key-light with a scene file, an override that cannot be applied).
 nlohmann::ordered_json sceneJsonFor(const std::string& path, const SceneOpenOptions& options = {},
                                     std::vector<std::string>* warnings = nullptr);
 

@@ -51,7 +51,15 @@ struct TextureRef {
   int texcoord = 0;  // 0 or 1
   Sampler sampler;
   float scale = 1.0f;  // normalTexture.scale / occlusionTexture.strength
+  // KHR_texture_transform: uv' = T(offset) * R(rotation) * S(scale) * uv, rotation in radians
+  // counter-clockwise in UV space (the extension's matrix order).
+  glm::vec2 uv_offset{0.0f};
+  float uv_rotation = 0.0f;
+  glm::vec2 uv_scale{1.0f};
   bool valid() const { return image >= 0; }
+  bool transformed() const {
+    return uv_offset != glm::vec2(0.0f) || uv_rotation != 0.0f || uv_scale != glm::vec2(1.0f);
+  }
 };
 
 enum class AlphaMode : uint8_t { Opaque, Mask, Blend };
@@ -72,6 +80,9 @@ struct Material {
   float alpha_cutoff = 0.5f;
   float base_alpha = 1.0f;
   bool double_sided = false;
+  // Multiply base colour and alpha by the mesh's vertex colour (glTF COLOR_0) where it has one;
+  // a scene file can switch it off per material ("vertex_color": false).
+  bool vertex_color = true;
   TextureRef base_color_tex;          // sRGB
   TextureRef metallic_roughness_tex;  // B = metallic, G = roughness
   TextureRef normal_tex;
@@ -85,6 +96,7 @@ struct Vertex {
   glm::vec4 tangent{1.0f, 0.0f, 0.0f, 1.0f};  // w = handedness
   glm::vec2 uv0{0.0f};
   glm::vec2 uv1{0.0f};
+  glm::vec4 color{1.0f};  // linear RGBA (glTF COLOR_0); white where the mesh has none
 };
 
 // Triangle list in object space.
@@ -92,7 +104,8 @@ struct Mesh {
   std::string name;
   std::vector<Vertex> vertices;
   std::vector<uint32_t> indices;
-  int material = 0;  // index into Scene::materials
+  int material = 0;         // index into Scene::materials
+  bool has_colors = false;  // vertices carry a COLOR_0 (else every Vertex::color is white)
 };
 
 struct Object {

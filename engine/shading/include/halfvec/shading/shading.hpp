@@ -28,6 +28,7 @@ namespace {
 #include "halfvec/shaders/common/tonemap.glsl"
 #include "halfvec/shaders/common/fxaa.glsl"
 #include "halfvec/shaders/common/emitter.glsl"
+#include "halfvec/shaders/common/texture_transform.glsl"
 }  // namespace
 }  // namespace hv::glsl
 #pragma GCC diagnostic pop
