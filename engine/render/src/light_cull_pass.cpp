@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstring>
+#include <optional>
 
 #include "passes.hpp"
 #include "pipeline_state.hpp"
@@ -15,6 +16,17 @@ static_assert(sizeof(glsl::CullBatch) == 16, "CullBatch: 4 uints, std140");
 
 namespace {
 constexpr size_t kTileHeaderUints = HV_TILE_LIST_HEADER_UINTS;
+
+// A stage's own timer when `on` (Input::stage_timers), else nothing.
+class StageTimer {
+ public:
+  StageTimer(gl::PassTimer& timer, bool on, const char* name) {
+    if (on) pass_.emplace(timer, name);
+  }
+
+ private:
+  std::optional<gl::ScopedPass> pass_;
+};
 // Upper bound of the (tile, light) pairs the culling can find: the sum of the lights' tile
 // rectangles (sphereTileRect, the function the GPU runs), each widened by one tile on every side
 // so that rounding differences between the two compilers cannot make it smaller than the GPU's.
@@ -107,7 +119,10 @@ void LightCulling::ensureBuffers(size_t tiles, size_t groups, size_t lights, siz
 // dispatches (a pipeline stall on a GPU) and, if the list was too small, the list grown to it
 // and the culling run again.
 TileListView LightCulling::run(const PassContext& ctx, FrameUniforms& frame, const Input& in) {
-  gl::ScopedPass pass(ctx.timer, "light_cull");
+  // One timer for the pass, or with Input::stage_timers one per stage instead (the timer does not
+  // nest: the frame's total is the sum of its timers).
+  std::optional<gl::ScopedPass> pass;
+  if (!in.stage_timers) pass.emplace(ctx.timer, "light_cull");
   applyState(PipelineState{});
   const FrameBlock& f = frame.block;
   const size_t tiles = size_t(f.viewport.z) * f.viewport.w;
@@ -177,11 +192,19 @@ TileListView LightCulling::run(const PassContext& ctx, FrameUniforms& frame, con
   auto cull = [&] {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_TILE_INDICES, indices_.id());
     const GLuint bin = stage("light_cull_bin");
-    dispatch(stage("light_cull_bounds"), 0, false);  // also sets the list's total to 0
+    {
+      const StageTimer t(ctx.timer, in.stage_timers, "light_cull_bounds");
+      dispatch(stage("light_cull_bounds"), 0, false);  // also sets the list's total to 0
+    }
     if (fused) {
-      dispatch(bin, 1, true);
+      {
+        const StageTimer t(ctx.timer, in.stage_timers, "light_cull_bin");
+        dispatch(bin, 1, true);
+      }
+      const StageTimer t(ctx.timer, in.stage_timers, "light_cull_tiles");
       dispatch(stage("light_cull_tiles"), 1, false);
-    } else {
+    } else {  // batches: binning and walks interleave, timed together
+      const StageTimer t(ctx.timer, in.stage_timers, "light_cull_batches");
       const GLuint count = stage("light_cull_count"), fill = stage("light_cull_fill");
       for (size_t b = 0; b < batches; ++b) {
         dispatch(bin, 1 + b, true);

@@ -86,6 +86,7 @@ class LightCulling {
     const std::vector<glm::vec4>* cull_spheres = nullptr;  // world bounding spheres per light
     size_t bound_limit = size_t(32) << 20;                 // DebugOptions::tile_bound_limit
     size_t batch_lights = 0;                               // DebugOptions::cull_batch_lights
+    bool stage_timers = false;                             // DebugOptions::cull_stage_timers
   };
   // Builds the lists for `frame`; updates frame.block.counts.y (list capacity) when it grows.
   TileListView run(const PassContext& ctx, FrameUniforms& frame, const Input& in);
