@@ -1,5 +1,6 @@
 // Light pass on the GPU: the same shared code as the CPU (hv::glsl::evaluateLight) at read-back
 // G-buffer pixels, and tiled culling equal to the brute-force baseline.
+#include <algorithm>
 #include <cmath>
 #include <random>
 
