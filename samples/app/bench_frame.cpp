@@ -11,6 +11,7 @@
 #include "halfvec/eval/bench.hpp"
 #include "halfvec/platform/context.hpp"
 #include "halfvec/render/renderer.hpp"
+#include "halfvec/render/variant_key.hpp"
 #include "halfvec/scene/scene_loader.hpp"
 
 namespace hv::app {
@@ -105,21 +106,26 @@ void printShadowCost(const Scene& scene, int w, int h, int frames) {
 // --vs-brute: one line per scene, and the markdown table for --report.
 std::string tiledVsBrute(const std::vector<Scene>& scenes, const std::vector<std::string>& paths,
                          const FrameBenchOptions& o) {
-  std::printf("%-16s %12s %12s %14s  %s\n", "scene", "tiled ms", "brute ms", "tiled / brute",
-              "95% interval");
+  std::printf("%-30s %6s %9s %6s %11s %11s %14s  %s\n", "scene", "lights", "per tile", "auto",
+              "tiled ms", "brute ms", "tiled / brute", "95% interval");
   std::string md =
-      "| scene | tiled frame ms | brute-force frame ms | tiled / brute (95% interval) |\n"
-      "|---|---:|---:|---:|\n";
+      "| scene | lights | lights per tile | auto | tiled frame ms | brute-force frame ms | "
+      "tiled / brute (95% interval) |\n"
+      "|---|---:|---:|---|---:|---:|---:|\n";
   for (size_t i = 0; i < scenes.size(); ++i) {
     const std::string name = std::filesystem::path(paths[i]).stem().string();
     const eval::TiledVsBrute r =
         eval::measureTiledVsBruteForce(scenes[i], name, o.width, o.height, o.frames);
-    std::printf("%-16s %12.2f %12.2f %14.2f  %.2f - %.2f\n", name.c_str(), r.tiled_ms, r.brute_ms,
-                r.ratio.median, r.ratio.lo, r.ratio.hi);
+    // What culling: auto picks for the scene (the coverage at its camera, render::chooseCulling).
+    const render::CullingChoice c = render::chooseCulling(scenes[i]);
+    const char* pick = c.culling == Culling::BruteForce ? "brute" : "tiled";
+    std::printf("%-30s %6zu %9.2f %6s %11.2f %11.2f %14.2f  %.2f - %.2f\n", name.c_str(), c.lights,
+                c.coverage, pick, r.tiled_ms, r.brute_ms, r.ratio.median, r.ratio.lo, r.ratio.hi);
     std::fflush(stdout);
-    char row[256];
-    std::snprintf(row, sizeof row, "| %s | %.1f | %.1f | %.2f (%.2f - %.2f) |\n", name.c_str(),
-                  r.tiled_ms, r.brute_ms, r.ratio.median, r.ratio.lo, r.ratio.hi);
+    char row[320];
+    std::snprintf(row, sizeof row, "| %s | %zu | %.2f | %s | %.1f | %.1f | %.2f (%.2f - %.2f) |\n",
+                  name.c_str(), c.lights, c.coverage, pick, r.tiled_ms, r.brute_ms, r.ratio.median,
+                  r.ratio.lo, r.ratio.hi);
     md += row;
   }
   return md;
@@ -163,12 +169,13 @@ int benchFrame(const FrameBenchOptions& o) {
   for (size_t i = 0; i < scenes.size() && !o.vs_brute; ++i) {
     const std::string name = std::filesystem::path(scenes[i]).stem().string();
     if (o.shader_dirs.empty()) {
-      costs.push_back(eval::measureFrameCost(loaded[i], name, o.width, o.height, o.frames));
+      costs.push_back(
+          eval::measureFrameCost(loaded[i], name, o.width, o.height, o.frames, o.cull_stages));
       printCost(costs.back());
       printShadowCost(loaded[i], o.width, o.height, o.frames);
     } else {
-      for (const auto& c :
-           eval::measureFrameCostTrees(loaded[i], o.shader_dirs, o.width, o.height, o.frames)) {
+      for (const auto& c : eval::measureFrameCostTrees(loaded[i], o.shader_dirs, o.width, o.height,
+                                                       o.frames, o.cull_stages)) {
         costs.push_back(c);
         printCost(c);
       }

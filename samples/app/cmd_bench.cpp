@@ -72,7 +72,9 @@ ratios.
                interleaved; --report FILE.md also writes the table as markdown;
                --vs-brute: instead, each scene's whole frame with tiled culling against the
                same scene with culling brute_force (every pixel loops over every light),
-               frames interleaved, as the median ratio with its 95% interval
+               frames interleaved, as the median ratio with its 95% interval, with each
+               scene's lights, their coverage (lights per tile) and what culling auto picks;
+               --cull-stages: the culling pass timed per stage (bounds, bin, tiles)
   --variants   instead: programs specialized to the scene vs the uber build, GPU ms per pass on
                every scene of samples/scenes, as a markdown table (--quick: at most 640x360)
 )";
@@ -141,7 +143,7 @@ struct BenchArgs {
   int w = 1280, h = 720, frames = 5, max_lights = 16384, only = 0;
   float only_range = 0.0f;
   bool quick = false, variants = false, show_breakdown = false, frame_mode = false;
-  bool vs_brute = false, frames_given = false, methods = false;
+  bool vs_brute = false, frames_given = false, methods = false, cull_stages = false;
   std::string report;
   int types = -1;  // --types: -1 mixed, else a hv::LightType
   std::vector<std::string> shader_dirs;
@@ -197,6 +199,8 @@ BenchArgs parseBenchArgs(const Args& args) {
       b.frame_mode = true;
     } else if (a == "--vs-brute") {
       b.vs_brute = true;
+    } else if (a == "--cull-stages") {
+      b.cull_stages = true;
     } else if (a == "--report") {
       b.report = value();
     } else {
@@ -204,6 +208,7 @@ BenchArgs parseBenchArgs(const Args& args) {
     }
   }
   if (b.vs_brute && !b.frame_mode) throw UsageError{"--vs-brute goes with --frame"};
+  if (b.cull_stages && !b.frame_mode) throw UsageError{"--cull-stages goes with --frame"};
   return b;
 }
 
@@ -353,6 +358,7 @@ int cmdBench(const Args& args) {
     o.shader_dirs = b.shader_dirs;
     o.report = b.report;
     o.vs_brute = b.vs_brute;
+    o.cull_stages = b.cull_stages;
     return benchFrame(o);
   }
   if (b.variants)

@@ -31,7 +31,8 @@ struct FrameBenchOptions {
   std::string scene;                     // empty: every sample scene
   std::vector<std::string> shader_dirs;  // A/B shader trees (needs `scene`)
   std::string report;                    // markdown table to write (empty: none)
-  bool vs_brute = false;  // instead: whole frame, tiled culling vs brute force (interleaved)
+  bool vs_brute = false;     // instead: whole frame, tiled culling vs brute force (interleaved)
+  bool cull_stages = false;  // the culling timed per stage (DebugOptions::cull_stage_timers)
 };
 int benchFrame(const FrameBenchOptions& options);
 // The sample scene files (samples/scenes/*.json), sorted.

@@ -9,6 +9,7 @@
 #define HV_UBO_FRAME 0        // FrameBlock (frame.glsl), bound for the whole frame
 #define HV_UBO_ENVIRONMENT 1  // EnvironmentBlock (ambient.comp): SH9, mip count, presence
 #define HV_UBO_MATERIAL 2     // MaterialBlock (material.glsl): the draw's material, bound per draw
+#define HV_UBO_CULL_BATCH 3   // light culling: the dispatch's CullBatch (cull_layout.glsl)
 
 // ---- Storage buffers ---------------------------------------------------------------------------
 // At most 8 binding points (0..7: GL 4.5's minimum of GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS), so a
@@ -65,7 +66,6 @@
 // ---- Uniform locations (explicit, so the C++ never looks a name up) ------------------------------
 #define HV_LOC_MODEL 0          // gbuffer.vert: object to world
 #define HV_LOC_NORMAL_MATRIX 1  // gbuffer.vert: inverse transpose of the model matrix
-#define HV_LOC_CULL_BATCH 0     // light_cull.comp: lights [x, y), mask words per group
 #define HV_LOC_SHADOW_VIEW_PROJ 3  // shadow.vert: the cube face's view-projection
 #define HV_LOC_SHADOW_LIGHT 4      // shadow.frag: light center, 1 / far
 #define HV_LOC_AO_PARAMS 5         // gtao.comp, ao_denoise.comp: radius (m), scale, AO size

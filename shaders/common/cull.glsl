@@ -1,11 +1,12 @@
 // Screen-space extent of a light's bounding sphere for tiled culling, shared by the GPU culling
-// (shaders/passes/light_cull.comp) and the renderer, which sizes the tile index list from the
+// (shaders/passes/light_cull_bin.comp) and the renderer, which sizes the tile index list from the
 // same rectangles on the CPU (engine/render/src/light_cull_pass.cpp) instead of reading the GPU's count
 // back mid-frame. Compiled as C++ too (halfvec/shading/glsl.hpp rules).
 #ifndef HV_CULL_GLSL
 #define HV_CULL_GLSL
 
 #include "math.glsl"
+#include "cull_layout.glsl"
 
 // Range of k = x / (-z) (x or y) over a view-space sphere of center (cx, -d) and radius r,
 // d > r (entirely in front of the eye): the slopes of the two planes through the eye tangent to

@@ -1,7 +1,7 @@
 #version 450 core
 // Light pass: for each lit pixel, sums the direct light of its tile's lights (or of every light in
 // the brute-force baseline) into the HDR target, on top of the emissive the G-buffer pass wrote.
-// A tile's list is sorted by light type (light_cull.comp), so the tiled path runs one loop per
+// A tile's list is sorted by light type (light_cull_walk.glsl), so the tiled path runs one loop per
 // type calling that type's evaluation directly: no per-light branch on the type, whose three
 // arms a SIMD CPU implementation (llvmpipe) would otherwise all execute under a mask. (A per-pixel
 // range test does not pay there either: an `if` costs its body even when no lane takes it; only

@@ -1,11 +1,13 @@
 // Light pass on the GPU: the same shared code as the CPU (hv::glsl::evaluateLight) at read-back
 // G-buffer pixels, and tiled culling equal to the brute-force baseline.
+#include <algorithm>
 #include <cmath>
 #include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render_fixture.hpp"
+#include "halfvec/render/variant_key.hpp"
 #include "halfvec/scene/enums.hpp"
 #include "halfvec/shading/light_gpu.hpp"
 #include "halfvec/shading/shading.hpp"
@@ -115,6 +117,7 @@ TEST(LightPass, TiledEqualsBruteForceWith4096Lights) {
   lights.seed = 7;
   addRandomLights(s, lights);
   const int w = 160, h2 = 96;
+  s.settings.culling = Culling::Tiled;  // not auto: the tiled side is the one tested
   render::Renderer r;
   r.setScene(s);
   const auto stats = r.render(w, h2);
@@ -273,6 +276,7 @@ TEST(LightPass, TiledEqualsBruteForceDepthEdgesAndCameraInsideLights) {
   s.lights.push_back(near_plane);
 
   const int w = 128, h2 = 72;
+  s.settings.culling = Culling::Tiled;  // not auto: the tiled side is the one tested
   render::Renderer r;
   r.setScene(s);
   r.render(w, h2);
@@ -331,6 +335,7 @@ TEST(LightPass, TiledEqualsBruteForceWith16384SmallLights) {
   lights.length = 0.1f;
   addRandomLights(s, lights);
   const int w = 96, h2 = 64;
+  s.settings.culling = Culling::Tiled;  // not auto: the tiled side is the one tested
   render::Renderer r;
   r.setScene(s);
   const auto stats = r.render(w, h2);
@@ -383,6 +388,7 @@ TEST(LightPass, TiledEqualsBruteForceLightsStraddlingTilesAndNearPlane) {
       }
     }
   }
+  s.settings.culling = Culling::Tiled;  // not auto: the tiled side is the one tested
   render::Renderer r;
   r.setScene(s);
   r.render(w, h2);
@@ -390,6 +396,51 @@ TEST(LightPass, TiledEqualsBruteForceLightsStraddlingTilesAndNearPlane) {
   s.settings.culling = Culling::BruteForce;
   r.render(w, h2);
   EXPECT_GT(expectTiledEqualsBrute(tiled, r.readHdr(), w), 1e-3) << "lights should light the floor";
+}
+
+// culling: auto picks brute force for two point lights whose spheres hold the camera (every tile
+// lists both: chooseCulling), and the image is the tiled one bit for bit: both sum the same
+// lights in light order.
+TEST(LightPass, AutoCullingOfAFewPointLightsRendersAsTiled) {
+  testContext();
+  Material m;
+  m.base_color = glm::vec3(0.8f);
+  m.roughness = 0.4f;
+  Scene s = planeScene(m, 12.0f);
+  s.camera.position = {0.0f, 1.5f, 5.0f};
+  s.camera.target = {0.0f, 0.0f, 0.0f};
+  s.camera.up = {0.0f, 1.0f, 0.0f};
+  for (int i = 0; i < 2; ++i) {
+    Light l;
+    l.position = {-2.0f + 4.0f * float(i), 0.5f, -1.0f + float(i)};
+    l.range = 30.0f;
+    l.intensity = 2.0f;
+    l.color = {0.4f + 0.3f * float(i), 0.8f, 1.0f - 0.3f * float(i)};
+    s.lights.push_back(l);
+  }
+  ASSERT_EQ(s.settings.culling, Culling::Auto);
+  ASSERT_EQ(render::deriveVariantKey(s).settings.culling, Culling::BruteForce)
+      << render::chooseCulling(s).why;
+  const int w = 128, h2 = 72;
+  render::Renderer r;
+  r.setScene(s);
+  const render::FrameStats auto_stats = r.render(w, h2);
+  const auto brute = r.readHdr();
+  for (const auto& [pass, ms] : auto_stats.passes) EXPECT_NE(pass, "light_cull");
+  s.settings.culling = Culling::Tiled;
+  const render::FrameStats tiled_stats = r.render(w, h2);
+  const auto tiled = r.readHdr();
+  EXPECT_TRUE(std::any_of(tiled_stats.passes.begin(), tiled_stats.passes.end(),
+                          [](const auto& p) { return p.first == "light_cull"; }));
+  double mean = 0.0;
+  ASSERT_EQ(tiled.px.size(), brute.px.size());
+  for (size_t i = 0; i < tiled.px.size(); ++i) {
+    for (int k = 0; k < 3; ++k) {
+      ASSERT_EQ(tiled.px[i][k], brute.px[i][k]) << "pixel " << i % w << "," << i / w;
+      mean += tiled.px[i][k];
+    }
+  }
+  EXPECT_GT(mean / double(tiled.px.size()), 0.01) << "the lights should light the plane";
 }
 
 // The benchmark probes of the light pass (render::LightPassProbe, `halfvec bench --breakdown`)

@@ -310,3 +310,80 @@ TEST(VariantKey, GBufferReasonsNameTheMaterials) {
   EXPECT_EQ(g2.at("HV_MAT_NORMAL_MAP").value, "0");
   EXPECT_EQ(g2.at("HV_MAT_NORMAL_MAP").why, "no material of this variant uses it");
 }
+
+// culling: auto (chooseCulling): brute force where culling would save at most
+// kAutoCullingSavedLights evaluations per pixel among at most kAutoCullingMaxLights lights.
+// Coverage is exact here: a light whose culling sphere holds the camera covers every tile (1 per
+// light), one behind the camera beyond its range covers none (0).
+TEST(VariantKey, AutoCullingBruteForceOnlyBelowTheCrossover) {
+  Scene s = sceneWith({Material{}});
+  const glm::vec3 eye = s.camera.position;
+  const glm::vec3 back = glm::normalize(s.camera.position - s.camera.target);
+  auto around = [&](int n) {  // n point lights whose spheres contain the eye
+    std::vector<Light> ls(size_t(n), light(LightType::Point));
+    for (Light& l : ls) {
+      l.position = eye;
+      l.range = 50.0f;
+    }
+    return ls;
+  };
+  auto behind = [&](int n) {  // n point lights behind the eye, out of range: on no tile
+    std::vector<Light> ls(size_t(n), light(LightType::Point));
+    for (Light& l : ls) {
+      l.position = eye + 100.0f * back;
+      l.range = 1.0f;
+    }
+    return ls;
+  };
+  ASSERT_EQ(RenderSettings{}.culling, Culling::Auto);  // the default
+
+  s.lights = around(int(kAutoCullingMaxLights));  // every light on every tile: nothing to save
+  CullingChoice c = chooseCulling(s);
+  EXPECT_EQ(c.lights, kAutoCullingMaxLights);
+  EXPECT_DOUBLE_EQ(c.coverage, double(kAutoCullingMaxLights));
+  EXPECT_EQ(c.culling, Culling::BruteForce);
+  VariantKey k = deriveVariantKey(s);
+  EXPECT_EQ(k.settings.culling, Culling::BruteForce);
+  EXPECT_TRUE(validateKey(k).empty());
+  auto d = byName(lightDefines(k, s));
+  EXPECT_EQ(d.at("HV_CULLING_BRUTE_FORCE").value, "1");
+  EXPECT_EQ(
+      d.at("HV_CULLING_BRUTE_FORCE").why.find("settings.culling = auto: brute_force; 2 lights"), 0u)
+      << d.at("HV_CULLING_BRUTE_FORCE").why;
+
+  s.lights = around(int(kAutoCullingMaxLights) + 1);  // one light more than the cap
+  EXPECT_EQ(chooseCulling(s).culling, Culling::Tiled);
+  k = deriveVariantKey(s);
+  EXPECT_EQ(k.settings.culling, Culling::Tiled);
+  d = byName(lightDefines(k, s));
+  EXPECT_EQ(d.at("HV_CULLING_BRUTE_FORCE").value, "0");
+  EXPECT_NE(d.at("HV_CULLING_BRUTE_FORCE").why.find("auto: tiled"), std::string::npos);
+
+  // An off-screen light costs brute force an evaluation per pixel that culling saves.
+  ASSERT_LT(kAutoCullingSavedLights, 1.0);
+  s.lights = behind(1);
+  c = chooseCulling(s);
+  EXPECT_DOUBLE_EQ(c.coverage, 0.0);
+  EXPECT_EQ(c.culling, Culling::Tiled);
+  s.lights.insert(s.lights.end(), 1, around(1).front());  // and one on every tile
+  c = chooseCulling(s);
+  EXPECT_NEAR(c.coverage, 1.0, 1e-12);
+  EXPECT_EQ(c.culling, Culling::Tiled);  // 1 evaluation per pixel saved
+  s.lights = around(1);
+  EXPECT_EQ(chooseCulling(s).culling, Culling::BruteForce);
+
+  // An explicit choice is kept; no lights: tiled (nothing runs), the default's reason.
+  s.settings.culling = Culling::Tiled;
+  s.lights = around(2);
+  EXPECT_EQ(deriveVariantKey(s).settings.culling, Culling::Tiled);
+  EXPECT_EQ(byName(lightDefines(deriveVariantKey(s), s)).at("HV_CULLING_BRUTE_FORCE").why,
+            "settings.culling = tiled");
+  s.settings.culling = Culling::Auto;
+  s.lights.clear();
+  k = deriveVariantKey(s);
+  EXPECT_EQ(k.settings.culling, Culling::Tiled);
+  EXPECT_TRUE(validateKey(k).empty());
+  VariantKey unresolved = k;
+  unresolved.settings.culling = Culling::Auto;
+  EXPECT_FALSE(validateKey(unresolved).empty());
+}

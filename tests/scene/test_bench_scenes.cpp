@@ -11,7 +11,7 @@ using namespace hv;
 
 TEST(BenchScenes, FloorAndNineSpheresAtEachLightCount) {
   const std::string dir = std::string(HV_SOURCE_DIR) + "/samples/bench/";
-  for (int n : {4, 32, 256, 1024}) {
+  for (int n : {4, 8, 16, 32, 256, 1024}) {
     for (const auto& [tag, range] : {std::pair{"5m", 5.0f}, std::pair{"1p5m", 1.5f}}) {
       const std::string file =
           dir + "floor_spheres_" + std::to_string(n) + "_lights_" + tag + ".json";

@@ -65,7 +65,7 @@ TEST(Presets, SetWhatTheyClaim) {
     EXPECT_EQ(got.irradiance, expected.irradiance) << name;
     EXPECT_EQ(got.d, hv::DistributionTerm::GGX) << name;
     EXPECT_EQ(got.width, 960) << name;
-    EXPECT_EQ(got.culling, hv::Culling::Tiled) << name;
+    EXPECT_EQ(got.culling, hv::Culling::Auto) << name;
     EXPECT_FALSE(got.energy_compensation) << name;
   }
 }

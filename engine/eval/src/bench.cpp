@@ -113,16 +113,20 @@ render::DebugOptions withFloor() {
 }  // namespace
 
 FrameCost measureFrameCost(const Scene& scene, const std::string& name, int width, int height,
-                           int frames) {
-  FrameRunner run(scene, width, height, withFloor());
+                           int frames, bool cull_stages) {
+  render::DebugOptions d = withFloor();
+  d.cull_stage_timers = cull_stages;
+  FrameRunner run(scene, width, height, d);
   for (int f = 0; f < frames; ++f) run.frame();
   return frameCostOf(run.series(), name, width, height);
 }
 
 std::vector<FrameCost> measureFrameCostTrees(const Scene& scene,
                                              const std::vector<std::string>& dirs, int width,
-                                             int height, int frames) {
+                                             int height, int frames, bool cull_stages) {
   std::vector<std::unique_ptr<FrameRunner>> runs;
+  render::DebugOptions debug = withFloor();
+  debug.cull_stage_timers = cull_stages;
   const char* old = std::getenv("HV_SHADER_DIR");
   const std::string saved = old ? old : "";
   for (const std::string& d : dirs) {
@@ -130,7 +134,7 @@ std::vector<FrameCost> measureFrameCostTrees(const Scene& scene,
       throw std::invalid_argument("shader tree '" + d + "' is not a directory");
     }
     ::setenv("HV_SHADER_DIR", d.c_str(), 1);
-    runs.push_back(std::make_unique<FrameRunner>(scene, width, height, withFloor()));
+    runs.push_back(std::make_unique<FrameRunner>(scene, width, height, debug));
   }
   if (old) {
     ::setenv("HV_SHADER_DIR", saved.c_str(), 1);

@@ -94,7 +94,7 @@ TradePlan tradePlan(const Scene& scene, int max_brute_force_lights) {
       return;
     }
     if constexpr (std::is_same_v<T, Culling>) {
-      if (b.culling == Culling::Tiled && int(scene.lights.size()) > max_brute_force_lights) {
+      if (b.culling != Culling::BruteForce && int(scene.lights.size()) > max_brute_force_lights) {
         plan.skipped.push_back("culling=brute_force: " + std::to_string(scene.lights.size()) +
                                " lights (more than " + std::to_string(max_brute_force_lights) +
                                "; brute force shades every light at every pixel)");

@@ -1,6 +1,9 @@
 // Light culling (compute: tile bounds, light binning into groups of tiles, per-tile walks).
 // In: depth, lights. Out: per-tile light lists (TileListView).
 #include <algorithm>
+#include <cstddef>
+#include <cstring>
+#include <optional>
 
 #include "passes.hpp"
 #include "pipeline_state.hpp"
@@ -8,8 +11,22 @@
 
 namespace hv::render {
 
+static_assert(sizeof(glsl::CullLight) == 32, "CullLight: vec4 + uvec4, std430");
+static_assert(sizeof(glsl::CullBatch) == 16, "CullBatch: 4 uints, std140");
+
 namespace {
 constexpr size_t kTileHeaderUints = HV_TILE_LIST_HEADER_UINTS;
+
+// A stage's own timer when `on` (Input::stage_timers), else nothing.
+class StageTimer {
+ public:
+  StageTimer(gl::PassTimer& timer, bool on, const char* name) {
+    if (on) pass_.emplace(timer, name);
+  }
+
+ private:
+  std::optional<gl::ScopedPass> pass_;
+};
 // Upper bound of the (tile, light) pairs the culling can find: the sum of the lights' tile
 // rectangles (sphereTileRect, the function the GPU runs), each widened by one tile on every side
 // so that rounding differences between the two compilers cannot make it smaller than the GPU's.
@@ -39,6 +56,26 @@ void LightCulling::growList(size_t need) {
       gl::createBuffer("tile light indices", (kTileHeaderUints + capacity_) * sizeof(uint32_t));
 }
 
+void LightCulling::uploadBatches(const void* records, size_t count) {
+  if (batch_stride_ == 0) {
+    GLint align = 0;
+    glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &align);
+    const size_t a = std::max<size_t>(size_t(align), 1);
+    batch_stride_ = (sizeof(glsl::CullBatch) + a - 1) / a * a;
+  }
+  if (!batches_ || count > batch_records_) {
+    batch_records_ = std::max(count, batch_records_);
+    batches_ = gl::createBuffer("culling batches", batch_records_ * batch_stride_);
+  }
+  std::vector<std::byte> bytes(count * batch_stride_);
+  for (size_t i = 0; i < count; ++i) {
+    std::memcpy(bytes.data() + i * batch_stride_,
+                static_cast<const std::byte*>(records) + i * sizeof(glsl::CullBatch),
+                sizeof(glsl::CullBatch));
+  }
+  glNamedBufferSubData(batches_.id(), 0, GLsizeiptr(bytes.size()), bytes.data());
+}
+
 TileListView LightCulling::view() const {
   return {ranges_.id(), types_.id(), indices_.id(), capacity_};
 }
@@ -49,16 +86,17 @@ void LightCulling::ensureBuffers(size_t tiles, size_t groups, size_t lights, siz
     groups_ = std::max(groups, groups_);
     ranges_ = gl::createBuffer("tile light ranges", tiles_ * 2 * sizeof(uint32_t));
     types_ = gl::createBuffer("tile light type split", tiles_ * 2 * sizeof(uint32_t));
-    tile_state_ =
-        gl::createBuffer("culling tile counts and cursors", tiles_ * 4 * sizeof(uint32_t));
-    // Per tile, per block (8 per group), per group: min and max.
-    bounds_ = gl::createBuffer("culling tile, block and group bounds",
-                               (tiles_ + groups_ * 9) * 2 * 4 * sizeof(float));
+    tile_state_ = gl::createBuffer("culling tile counts and cursors",
+                                   tiles_ * HV_CULL_TILE_STATE_UINTS * sizeof(uint32_t));
+    // Per tile, then per group its blocks' and its own box (shaders/common/cull_layout.glsl).
+    bounds_ = gl::createBuffer(
+        "culling tile, block and group bounds",
+        (tiles_ + groups_ * HV_CULL_BOXES_PER_GROUP) * HV_CULL_BOX_VEC4S * sizeof(glm::vec4));
   }
   if (!lights_ || lights > lights_capacity_) {
     lights_capacity_ = std::max<size_t>(lights, 1);
     lights_ = gl::createBuffer("culling lights (view sphere, tile rectangle)",
-                               lights_capacity_ * 8 * sizeof(uint32_t));
+                               lights_capacity_ * sizeof(glsl::CullLight));
   }
   if (!masks_ || mask_uints > mask_uints_) {
     mask_uints_ = mask_uints;
@@ -68,7 +106,7 @@ void LightCulling::ensureBuffers(size_t tiles, size_t groups, size_t lights, siz
   }
 }
 
-// Tiled culling (shaders/passes/light_cull.comp; docs/lights.md): per tile, its surface bounds
+// Tiled culling (shaders/passes/light_cull_*.comp; docs/lights.md): per tile, its surface bounds
 // (and per block of 2 x 4 tiles and per group of 8 x 8 tiles); per light and band of group rows,
 // its view sphere and tile rectangle, and its bit in the light mask of every group its sphere
 // touches; per group, the mask refined per block, then each tile's walk of its block's mask in
@@ -81,7 +119,10 @@ void LightCulling::ensureBuffers(size_t tiles, size_t groups, size_t lights, siz
 // dispatches (a pipeline stall on a GPU) and, if the list was too small, the list grown to it
 // and the culling run again.
 TileListView LightCulling::run(const PassContext& ctx, FrameUniforms& frame, const Input& in) {
-  gl::ScopedPass pass(ctx.timer, "light_cull");
+  // One timer for the pass, or with Input::stage_timers one per stage instead (the timer does not
+  // nest: the frame's total is the sum of its timers).
+  std::optional<gl::ScopedPass> pass;
+  if (!in.stage_timers) pass.emplace(ctx.timer, "light_cull");
   applyState(PipelineState{});
   const FrameBlock& f = frame.block;
   const size_t tiles = size_t(f.viewport.z) * f.viewport.w;
@@ -111,10 +152,19 @@ TileListView LightCulling::run(const PassContext& ctx, FrameUniforms& frame, con
   const size_t bound = listBound(*in.cull_spheres, f);
   const bool bounded = bound <= in.bound_limit;
   if (bounded && bound > capacity_) growList(bound);
-  auto stage = [&](const char* name, const char* value) {
+  auto stage = [&](const char* name) {
     return ctx.programs.get(
-        {name, {{GL_COMPUTE_SHADER, "passes/light_cull.comp"}}, {{"HV_CULL_STAGE", value}}});
+        {name, {{GL_COMPUTE_SHADER, std::string("passes/") + name + ".comp"}}, {}});
   };
+  // The dispatches' CullBatch records, one uniform-buffer range each: record 0 for the stages that
+  // read no batch (bounds, reserve), record 1 + b for batch b.
+  const size_t batches = (in.light_count + batch_lights - 1) / batch_lights;
+  std::vector<glsl::CullBatch> records(1 + batches, {0, 0, uint32_t(words), uint32_t(summary)});
+  for (size_t b = 0; b < batches; ++b) {
+    records[1 + b].first = uint32_t(b * batch_lights);
+    records[1 + b].end = uint32_t(std::min((b + 1) * batch_lights, in.light_count));
+  }
+  uploadBatches(records.data(), records.size());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_LIGHTS, in.lights);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_CULL_LIGHTS, lights_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_CULL_BOUNDS, bounds_.id());
@@ -125,14 +175,15 @@ TileListView LightCulling::run(const PassContext& ctx, FrameUniforms& frame, con
   glBindTextureUnit(HV_UNIT_DEPTH, in.depth);
   glBindSampler(HV_UNIT_DEPTH, ctx.nearest);
   const GLuint bands = (groups_y + HV_CULL_BIN_GROUP_ROWS - 1) / HV_CULL_BIN_GROUP_ROWS;
-  // One stage over the lights [first, end) of a batch (BIN: per light and band; others: per
+  // One stage with batch record `record` (BIN: per light of the batch and band; others: per
   // group of tiles).
-  auto dispatch = [&](GLuint program, size_t first, size_t end, bool per_light) {
+  auto dispatch = [&](GLuint program, size_t record, bool per_light) {
     glUseProgram(program);
-    glProgramUniform4ui(program, HV_LOC_CULL_BATCH, uint32_t(first), uint32_t(end), uint32_t(words),
-                        uint32_t(summary));
+    glBindBufferRange(GL_UNIFORM_BUFFER, HV_UBO_CULL_BATCH, batches_.id(),
+                      GLintptr(record * batch_stride_), sizeof(glsl::CullBatch));
     if (per_light) {
-      glDispatchCompute(GLuint((end - first + 63) / 64), bands, 1);
+      const size_t n = records[record].end - records[record].first;
+      glDispatchCompute(GLuint((n + HV_CULL_BIN_LIGHTS - 1) / HV_CULL_BIN_LIGHTS), bands, 1);
     } else {
       glDispatchCompute(groups_x, groups_y, 1);
     }
@@ -140,23 +191,29 @@ TileListView LightCulling::run(const PassContext& ctx, FrameUniforms& frame, con
   };
   auto cull = [&] {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_TILE_INDICES, indices_.id());
-    const GLuint bin = stage("light_cull_bin", "1");
-    dispatch(stage("light_cull_bounds", "0"), 0, 0, false);  // also sets the list's total to 0
+    const GLuint bin = stage("light_cull_bin");
+    {
+      const StageTimer t(ctx.timer, in.stage_timers, "light_cull_bounds");
+      dispatch(stage("light_cull_bounds"), 0, false);  // also sets the list's total to 0
+    }
     if (fused) {
-      dispatch(bin, 0, in.light_count, true);
-      dispatch(stage("light_cull_tiles", "2"), 0, in.light_count, false);
-    } else {
-      const GLuint count = stage("light_cull_count", "3"), fill = stage("light_cull_fill", "5");
-      for (size_t b = 0; b < in.light_count; b += batch_lights) {
-        const size_t end = std::min(b + batch_lights, in.light_count);
-        dispatch(bin, b, end, true);
-        dispatch(count, b, end, false);
+      {
+        const StageTimer t(ctx.timer, in.stage_timers, "light_cull_bin");
+        dispatch(bin, 1, true);
       }
-      dispatch(stage("light_cull_reserve", "4"), 0, 0, false);
-      for (size_t b = 0; b < in.light_count; b += batch_lights) {
-        const size_t end = std::min(b + batch_lights, in.light_count);
-        dispatch(bin, b, end, true);
-        dispatch(fill, b, end, false);
+      const StageTimer t(ctx.timer, in.stage_timers, "light_cull_tiles");
+      dispatch(stage("light_cull_tiles"), 1, false);
+    } else {  // batches: binning and walks interleave, timed together
+      const StageTimer t(ctx.timer, in.stage_timers, "light_cull_batches");
+      const GLuint count = stage("light_cull_count"), fill = stage("light_cull_fill");
+      for (size_t b = 0; b < batches; ++b) {
+        dispatch(bin, 1 + b, true);
+        dispatch(count, 1 + b, false);
+      }
+      dispatch(stage("light_cull_reserve"), 0, false);
+      for (size_t b = 0; b < batches; ++b) {
+        dispatch(bin, 1 + b, true);
+        dispatch(fill, 1 + b, false);
       }
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);

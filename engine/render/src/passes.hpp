@@ -86,6 +86,7 @@ class LightCulling {
     const std::vector<glm::vec4>* cull_spheres = nullptr;  // world bounding spheres per light
     size_t bound_limit = size_t(32) << 20;                 // DebugOptions::tile_bound_limit
     size_t batch_lights = 0;                               // DebugOptions::cull_batch_lights
+    bool stage_timers = false;                             // DebugOptions::cull_stage_timers
   };
   // Builds the lists for `frame`; updates frame.block.counts.y (list capacity) when it grows.
   TileListView run(const PassContext& ctx, FrameUniforms& frame, const Input& in);
@@ -97,12 +98,17 @@ class LightCulling {
   void growList(size_t need);
   // Sizes the per-tile, per-group and per-light buffers (masks cleared when created).
   void ensureBuffers(size_t tiles, size_t groups, size_t lights, size_t mask_uints);
+  // Writes `count` CullBatch records (cull_layout.glsl), one per GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT
+  // stride, for the dispatches to bind as ranges.
+  void uploadBatches(const void* records, size_t count);
   gl::Buffer ranges_, types_, indices_;  // the lists (TileListView)
   gl::Buffer lights_;                    // per light: view-space sphere, tile rectangle
   gl::Buffer bounds_;                    // per tile, block and group: surface AABB
   gl::Buffer masks_;                     // per group: light mask (0 between frames)
   gl::Buffer tile_state_;                // per tile: counts, then cursors (batched culling)
-  size_t capacity_ = 0;                  // uints in the index list after its header
+  gl::Buffer batches_;                   // CullBatch records, batch_stride_ bytes apart
+  size_t batch_stride_ = 0, batch_records_ = 0;
+  size_t capacity_ = 0;  // uints in the index list after its header
   size_t tiles_ = 0, groups_ = 0, lights_capacity_ = 0, mask_uints_ = 0;
   size_t readbacks_ = 0;
 };

@@ -216,20 +216,20 @@ FrameStats Renderer::render(int width, int height, DebugView view,
                  {*scene_, *gpu_, key_, gbuffer_descs_, draw_order_,
                   (frame.block.counts.w & kFrameNoEmissive) == 0},
                  {t.gbuffer.id(), width, height});
-  const bool culled =
-      scene_->settings.culling == Culling::Tiled || view == DebugView::LightsPerTile;
+  // key_.settings: culling auto resolved (chooseCulling).
+  const bool culled = key_.settings.culling == Culling::Tiled || view == DebugView::LightsPerTile;
   TileListView tiles;
   if (culled) {
     tiles = p.culling.run(
         ctx, frame,
         {t.depth.id(), gpu_->lightBuffer(), gpu_->lightCount(), &gpu_->lightCullSpheres(),
-         debug_.tile_bound_limit, debug_.cull_batch_lights});
+         debug_.tile_bound_limit, debug_.cull_batch_lights, debug_.cull_stage_timers});
   }
   LightPass::Input light{
       gbuffer,
       gpu_->lightBuffer(),
       gpu_->lightCount(),
-      scene_->settings.culling == Culling::Tiled ? p.culling.view() : TileListView{},
+      key_.settings.culling == Culling::Tiled ? p.culling.view() : TileListView{},
       lightingDefines(),
       debug_.light_probe,
       debug_.light_texel_limit,
@@ -333,7 +333,7 @@ Renderer::LightWork Renderer::lightWork() const {
   const size_t n = size_t(t.width) * t.height;
   std::vector<uint8_t> mat(n * 4);
   glGetTextureImage(t.material.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(mat.size()), mat.data());
-  const bool brute = scene_->settings.culling == Culling::BruteForce;
+  const bool brute = key_.settings.culling == Culling::BruteForce;
   const int tiles_x = (t.width + kTileSize - 1) / kTileSize;
   const int tiles_y = (t.height + kTileHeight - 1) / kTileHeight;
   std::vector<uint32_t> ranges(size_t(tiles_x) * tiles_y * 2);

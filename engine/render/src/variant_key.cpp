@@ -1,12 +1,16 @@
 #include "halfvec/render/variant_key.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
 #include <type_traits>
 
+#include "halfvec/render/frame_data.hpp"
 #include "halfvec/render/shadows.hpp"
 #include "halfvec/scene/enums.hpp"
 #include "halfvec/shading/brdf.hpp"
+#include "halfvec/shading/light_gpu.hpp"
+#include "halfvec/shading/shading.hpp"
 
 namespace hv::render {
 
@@ -203,6 +207,43 @@ RenderSettings canonicalSettings(const RenderSettings& s, const VariantKey& key)
       if (superseded(row.info.superseded_by, c)) c.*row.member = row.info.superseded_value;
     }
   });
+  if (c.culling == Culling::Auto) c.culling = key.auto_culling.culling;
+  return c;
+}
+
+CullingChoice chooseCulling(const Scene& scene) {
+  CullingChoice c;
+  c.lights = scene.lights.size();
+  if (c.lights == 0) {
+    c.why = "no lights";
+    return c;
+  }
+  const FrameBlock f = makeFrameBlock(scene, scene.settings.width, scene.settings.height);
+  const glm::ivec2 tiles(f.viewport.z, f.viewport.w);
+  double covered = 0.0;
+  for (const Light& l : scene.lights) {
+    const GpuLight g = packLight(l);
+    const glm::vec3 center = glm::vec3(f.view * glm::vec4(glm::vec3(g.position_radius), 1.0f));
+    glm::ivec4 r;
+    if (glsl::sphereTileRect(center, glsl::lightCullRadius(toGlsl(g)),
+                             glm::vec2(f.proj[0][0], f.proj[1][1]), f.near_params.x,
+                             glm::vec2(f.viewport.x, f.viewport.y), tiles,
+                             glm::vec2(kTileSize, kTileHeight), r)) {
+      covered += double(r.z - r.x + 1) * double(r.w - r.y + 1);
+    }
+  }
+  c.coverage = covered / (double(tiles.x) * double(tiles.y));
+  const double saved = double(c.lights) - c.coverage;
+  const bool brute = c.lights <= kAutoCullingMaxLights && saved <= kAutoCullingSavedLights;
+  c.culling = brute ? Culling::BruteForce : Culling::Tiled;
+  char why[256];
+  std::snprintf(why, sizeof why,
+                "%zu light%s, %.2f per tile at the scene's camera: culling would save %.2f "
+                "evaluations per pixel; brute force at most %zu lights and %.1f saved "
+                "(docs/performance.md)",
+                c.lights, c.lights == 1 ? "" : "s", c.coverage, saved, kAutoCullingMaxLights,
+                kAutoCullingSavedLights);
+  c.why = why;
   return c;
 }
 
@@ -263,14 +304,18 @@ VariantKey deriveVariantKey(const Scene& scene) {
     for (size_t i = 0; i < scene.materials.size(); ++i) k.material_variant[i] = drawn[i] ? 0 : -1;
   }
   k.ao = scene.settings.ao == AmbientOcclusion::Gtao && k.ambientIbl();
+  k.auto_culling = chooseCulling(scene);
   k.settings = canonicalSettings(scene.settings, k);
   return k;
 }
 
 std::vector<std::string> validateKey(const VariantKey& k) {
   std::vector<std::string> bad;
-  const RenderSettings d;
+  RenderSettings d;
+  d.culling = k.auto_culling.culling;  // the default, auto, as the key holds it
   const RenderSettings& s = k.settings;
+  if (s.culling == Culling::Auto)
+    bad.push_back("culling auto not resolved to tiled or brute force");
   if (!k.hasEnvironment() && s.irradiance == Irradiance::Cubemap) {
     bad.push_back("irradiance cubemap without an environment");
   }
@@ -401,6 +446,12 @@ std::vector<KeyDefine> settingKeyDefines(const VariantKey& k, const Scene& scene
                                  reason.c_str());
     if constexpr (std::is_enum_v<T>) {
       if (present && toString(s.*row.member) == "ltc") why += ltcLobeNote(s, true);
+    }
+    if constexpr (std::is_same_v<T, Culling>) {
+      if (present && in.culling == Culling::Auto) {
+        why = "settings.culling = auto: " + std::string(toString(s.culling)) + "; " +
+              k.auto_culling.why;
+      }
     }
     const auto& [name, value] = values.at(out.size());
     out.push_back({name, value, why});

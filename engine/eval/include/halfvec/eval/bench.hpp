@@ -70,15 +70,16 @@ struct FrameCost {
   std::vector<PassCost> passes;  // the frame's passes in order (the floor not among them)
   PassCost frame;                // their sum per frame ("frame")
 };
-// Renders `frames` frames after a warm-up frame.
+// Renders `frames` frames after a warm-up frame; with `cull_stages`, the culling timed per stage
+// (render::DebugOptions::cull_stage_timers).
 FrameCost measureFrameCost(const Scene& scene, const std::string& name, int width, int height,
-                           int frames);
+                           int frames, bool cull_stages = false);
 // The same scene rendered with one renderer per shader tree (each a copy of shaders/ with a
 // change, compiled through HV_SHADER_DIR), frames interleaved: one FrameCost per tree, named by
 // its folder. For A/B tests of shader changes against the floor.
 std::vector<FrameCost> measureFrameCostTrees(const Scene& scene,
                                              const std::vector<std::string>& dirs, int width,
-                                             int height, int frames);
+                                             int height, int frames, bool cull_stages = false);
 // ---- bench --frame --vs-brute
 // The scene's whole frame with tiled culling against the same scene with Culling::BruteForce
 // (no culling pass; the light pass loops over every light at every pixel: a minimal brute-force

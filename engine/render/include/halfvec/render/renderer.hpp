@@ -113,6 +113,10 @@ struct DebugOptions {
   // (gl::PassTimer::setFinishEachPass), so that a raster pass whose rasterization the driver
   // defers (llvmpipe) is not timed in the next pass. `halfvec bench --frame` sets it.
   bool finish_each_pass = false;
+  // The light culling timed per stage ("light_cull_bounds", "light_cull_bin", "light_cull_tiles";
+  // batched: "light_cull_batches" after the bounds) instead of as one "light_cull" pass
+  // (`halfvec bench --frame --cull-stages`). The image is unchanged.
+  bool cull_stage_timers = false;
 };
 
 class Renderer {

@@ -49,6 +49,24 @@ MaterialFeatures materialFeatures(const Material& m, bool colored_mesh = false);
 // Every feature on: the uber G-buffer program, which reads the material flags at run time.
 MaterialFeatures allMaterialFeatures();
 
+// What `culling: auto` means for a scene: brute force (every light at every pixel, no culling
+// pass) where culling cannot pay for itself, tiled culling elsewhere. Culling costs a fixed
+// bounds pass and saves the evaluations of the lights a pixel's tile does not list; so brute force
+// when there are at most kAutoCullingMaxLights lights and the evaluations per pixel culling would
+// save (the lights minus their coverage) are at most kAutoCullingSavedLights. The constants are
+// the measured crossover (docs/performance.md, "Culling only where it pays").
+inline constexpr size_t kAutoCullingMaxLights = 2;
+inline constexpr double kAutoCullingSavedLights = 0.5;
+struct CullingChoice {
+  Culling culling = Culling::Tiled;
+  size_t lights = 0;
+  // Lights per tile: the tiles of the lights' tile rectangles (sphereTileRect, as the culling
+  // bins them) at the scene's camera and settings.width x height, over the screen's tiles.
+  double coverage = 0.0;
+  std::string why;  // for the manifest
+};
+CullingChoice chooseCulling(const Scene& scene);
+
 struct VariantKey {
   // Light types present (count > 0); the light programs compile only these.
   bool point_lights = false, sphere_lights = false, tube_lights = false;
@@ -66,8 +84,15 @@ struct VariantKey {
   std::vector<MaterialFeatures> material_variants;
   std::vector<int> material_variant;
   // The scene's settings with those that change no code in this scene reset to their defaults
-  // (canonicalSettings), so equal code gets equal keys.
-  RenderSettings settings;
+  // (canonicalSettings), so equal code gets equal keys; culling auto resolved (a key without
+  // lights: tiled).
+  RenderSettings settings = [] {
+    RenderSettings r;
+    r.culling = Culling::Tiled;
+    return r;
+  }();
+  // culling: auto resolved for this scene (settings.culling holds the result, never Auto).
+  CullingChoice auto_culling;
   bool uber = false;  // every feature compiled in, chosen at run time
 
   bool hasLights() const { return point_lights || sphere_lights || tube_lights; }

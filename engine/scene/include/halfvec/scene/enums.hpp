@@ -38,7 +38,7 @@ HV_ENUM_NAMES(SphereDiffuse, "karis_point", "horizon_correct");
 HV_ENUM_NAMES(SphereSpecular, "representative_point", "ltc");
 HV_ENUM_NAMES(TubeSpecular, "closest_point_eq19", "smallest_angle_eq18", "ltc");
 HV_ENUM_NAMES(TubeDiffuse, "karis_eq16", "ltc");
-HV_ENUM_NAMES(Culling, "tiled", "brute_force");
+HV_ENUM_NAMES(Culling, "tiled", "brute_force", "auto");
 HV_ENUM_NAMES(ToneMap, "reinhard", "reinhard_luminance", "none", "pbr_neutral", "aces");
 HV_ENUM_NAMES(Gamma, "gamma22", "srgb");
 HV_ENUM_NAMES(EnvBrdf, "table", "analytic");

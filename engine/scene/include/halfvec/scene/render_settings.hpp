@@ -58,8 +58,10 @@ enum class TubeDiffuse : uint8_t {
   Ltc = HV_TUBE_DIFFUSE_LTC
 };
 // Flags in the shaders (HV_CULLING_BRUTE_FORCE, HV_ENV_BRDF_ANALYTIC, HV_IRRADIANCE_CUBEMAP): the
-// second value is 1.
-enum class Culling : uint8_t { Tiled = 0, BruteForce = 1 };
+// second value is 1. Culling::Auto never reaches a shader: the variant key resolves it to Tiled or
+// BruteForce from the scene's lights (render::chooseCulling, docs/performance.md "Culling only
+// where it pays").
+enum class Culling : uint8_t { Tiled = 0, BruteForce = 1, Auto = 2 };
 enum class EnvBrdf : uint8_t { Table = 0, Analytic = 1 };
 enum class Irradiance : uint8_t { SH9 = 0, Cubemap = 1 };
 enum class IblDirection : uint8_t {
@@ -211,7 +213,8 @@ struct SettingInfo {
     (SettingInfo{.feature = SettingFeature::TubeLights, .define = "HV_TUBE_DIFFUSE",               \
                  .pass = SettingPass::Light, .trade = true, .trade_group = "lights",               \
                  .label = "tube diffuse"}))                                                        \
-  X(Culling, culling, Culling::Tiled, "culling",                                                   \
+  /* auto: brute force below the crossover the variant key measures (docs/performance.md) */       \
+  X(Culling, culling, Culling::Auto, "culling",                                                    \
     (SettingInfo{.feature = SettingFeature::Lights, .define = "HV_CULLING_BRUTE_FORCE",            \
                  .pass = SettingPass::Light, .trade = true, .trade_group = "culling",              \
                  .label = "culling"}))                                                             \
