@@ -274,7 +274,13 @@ vec3 evaluateSphereLightAt(GpuLight light, Surface s, ShadingPoint sp) {
 #else
   float cos_factor = saturate(dot(s.N, L));
 #endif
-  vec3 diffuse = diffuseTerm(s, sp, L, falloff * cos_factor);
+  // Inside the sphere the whole hemisphere emits L_e = I / (pi r^2): the irradiance pi L_e is
+  // I / r^2, the falloff (whose d^2 is clamped to r^2) times 1, from the hemisphere's mean
+  // direction N, whichever side of the surface the center is on (the reference's emitter and the
+  // `ltc` specular alike; neither method's horizon applies there). A select.
+  bool inside = d2 <= radius * radius;
+  cos_factor = mix(cos_factor, 1.0f, inside);
+  vec3 diffuse = diffuseTerm(s, sp, mix(L, s.N, bvec3(inside)), falloff * cos_factor);
 #if HV_SPHERE_SPECULAR == HV_SPHERE_SPECULAR_LTC
   vec3 specular = ltcSphereSpecular(s, sp, Lc, L, d2, radius, falloff);
 #else
