@@ -237,9 +237,9 @@ the exact configuration's height-correlated V without remap. With the scene's ow
 representative-point sphere and tube specular is several times brighter than the reference (the
 chrome spheres of default, the roughness-0.05 spheres of sphere_grid, the glossy floor of
 area_lights). `accurate`'s `ltc` methods remove most of that: its relative RMSE is below the
-scene's settings' on every sample scene (the "Measured" table). gltf barely moves: its error is
-carried by a few pixels of the helmet's smooth metal with a large absolute difference (the max abs
-column). With the representative point, rows whose terms darken glossy highlights can score a
+scene's settings' on every sample scene (the "Measured" table). gltf's relative RMSE barely
+moves: it is carried by a few pixels of ambient specular, the sky's sun reflected in the helmet
+(the "worst 0.1%" column and the max abs column), which no light option changes. With the representative point, rows whose terms darken glossy highlights can score a
 lower error by offsetting the overestimate, which is no reason to choose them.
 
 Times: the "x scene" column is each row's frame time over the scene row's, frame by frame within
