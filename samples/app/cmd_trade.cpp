@@ -40,7 +40,7 @@ Options:
   --frames N          timed frames per configuration and round (default 5)
   --rounds R          timing rounds over all configurations, interleaved (default 3)
   --samples N         reference samples per pixel (default 256)
-  --max-error E       name the cheapest configuration with rel. RMSE <= E (default 0.05)
+  --max-error E       name the cheapest configuration with mean rel. error <= E (default 0.05)
   --max-ms T          name the most accurate configuration within T ms (default: the scene's)
   --heatmaps WHICH    all | presets (scene, presets, exact) | none (default all)
   --no-cache          recompute the reference (and do not store it)
@@ -83,13 +83,21 @@ highlights of small emitters and of the sun converge; lit pixels where it still 
 (the sum of its channels' standard errors above 25%% of the value) are left out and counted per
 scene.
 
-Metrics are over lit (`default_lit`) pixels only, on linear HDR radiance before tone mapping:
-relative RMSE = RMSE / mean |reference|, "bias" = the relative RMSE with the reference's own noise
-removed (sqrt(RMSE^2 - noise^2)), p99 = the 99th percentile of the per-pixel relative error, max
-abs = the largest channel difference (halfvec/image/metrics.hpp). The reference is a Monte Carlo
-estimate: its standard error, expressed as a relative RMSE, is given per scene; rows within %gx of
-it are marked `~` and cannot be told apart from the exact image. "front" marks the Pareto front of
-(total ms, relative RMSE); the heat maps show the per-pixel relative error on a 0 to %g scale.
+Metrics are over lit (`default_lit`) pixels only, on linear HDR radiance before tone mapping.
+The reference integrates lights and the environment; the emissive the engine draws (its G-buffer
+pass writes it into the HDR image) is added to it, so that an emissive surface's error is that
+of its shading. The headline is the **mean relative error**: the mean over the compared pixels of
+the per-pixel relative error |engine - reference| / (reference + 0.01) (summed over the channels),
+each pixel counting once whatever its brightness; with it the 99th percentile of the same (p99)
+and "worst 0.1%%", the share of the squared error carried by the worst 0.1%% of pixels. Relative
+RMSE (RMSE / mean |reference|) stays a column: it weighs pixels by their squared error, so where
+"worst 0.1%%" is near 100%% it describes a few pixels (a sun glint in a glossy surface), not the
+image. "bias" = the relative RMSE with the reference's own noise removed (sqrt(RMSE^2 -
+noise^2)); max abs = the largest channel difference (halfvec/image/metrics.hpp). The reference is a
+Monte Carlo estimate: its standard error, expressed as a relative RMSE, is given per scene; rows
+whose relative RMSE is within %gx of it are marked `~` and cannot be told apart from the exact
+image. "front" marks the Pareto front of (total ms, mean relative error); the heat maps show the
+per-pixel relative error on a 0 to %g scale.
 
 Times are GPU timer queries on the machine that ran the command (its renderer string is below);
 on llvmpipe (Mesa's CPU rasterizer) they are CPU times shared with other work and noisy: compare
@@ -114,9 +122,9 @@ void writeDoc(const std::string& file, const std::string& command, const std::st
                 double(opt.heatmap_max));
   o << "# Speed/accuracy trade report\n\n" << intro << "\nRenderer: " << renderer << ".\n\n";
   o << "## Presets\n\n" << presetRationale() << "\n";
-  o << "Measured (scene's settings: total GPU ms / relative RMSE against the exact reference; "
-       "presets and exact: frame time x the scene's settings' with its 95% interval, \"same\" "
-       "where it includes 1 / relative RMSE):\n\n";
+  o << "Measured (scene's settings: total GPU ms / mean relative error / relative RMSE against "
+       "the exact reference; presets and exact: frame time x the scene's settings' with its 95% "
+       "interval, \"same\" where it includes 1 / mean relative error / relative RMSE):\n\n";
   o << "| scene | size | scene's settings | fast | balanced | accurate | exact |\n";
   o << "|---|---|---:|---:|---:|---:|---:|\n";
   for (const SceneRun& run : runs) {
@@ -128,12 +136,12 @@ void writeDoc(const std::string& file, const std::string& command, const std::st
         if (!match) continue;
         char buf[128];
         if (name == "scene") {
-          std::snprintf(buf, sizeof buf, "%.1f ms / %.4f%s", row.total_ms, row.error.rel_rmse,
-                        row.within_noise ? " ~" : "");
+          std::snprintf(buf, sizeof buf, "%.1f ms / %.4f / %.4f%s", row.total_ms,
+                        row.error.mean_rel, row.error.rel_rmse, row.within_noise ? " ~" : "");
         } else {
-          std::snprintf(buf, sizeof buf, "%.2fx (%.2f-%.2f)%s / %.4f%s", row.cost_ratio,
-                        row.cost_lo, row.cost_hi, row.same_cost ? " same" : "", row.error.rel_rmse,
-                        row.within_noise ? " ~" : "");
+          std::snprintf(buf, sizeof buf, "%.2fx (%.2f-%.2f)%s / %.4f / %.4f%s", row.cost_ratio,
+                        row.cost_lo, row.cost_hi, row.same_cost ? " same" : "", row.error.mean_rel,
+                        row.error.rel_rmse, row.within_noise ? " ~" : "");
         }
         return buf;
       }

@@ -9,7 +9,7 @@
 //                               horizon-correct sphere irradiance (order of hv::SphereDiffuse)
 //  HV_SPHERE_NORMALIZATION 1|0  (alpha/alpha')^2 energy normalization (Karis eqs. 10, 14)
 //  HV_SPHERE_SPECULAR 0|1       0 = representative point (Karis eqs. 10, 11, 14), 1 = LTC: the
-//                               sphere's cone integrated under the fitted LTC (ltc.glsl)
+//                               sphere's cone integrated under the fitted LTC (ltc_lights.glsl)
 //                               (order of hv::SphereSpecular)
 //  HV_TUBE_SPECULAR 0|1|2       0 = closest point to the reflection ray (Karis eq. 19),
 //                               1 = smallest angle (eq. 18), 2 = LTC over the capsule
@@ -162,67 +162,18 @@ float lineNormalization(float alpha, float len, float d2) {
 #endif
 }
 
-#if HV_LTC_TABLE
-// The two textures of the LTC table (ltc.glsl), sampled like the C++ side (ltc_table.hpp):
-// bilinear, clamp to edge, level 0.
-#ifdef HV_CPP
-vec4 ltcFetch0(vec2 uv) { return ::hv::ltcTableSample(0, uv); }
-vec4 ltcFetch1(vec2 uv) { return ::hv::ltcTableSample(1, uv); }
-#else
-layout(binding = HV_LTC_TEXTURE_UNIT0) uniform sampler2D t_ltc0;
-layout(binding = HV_LTC_TEXTURE_UNIT1) uniform sampler2D t_ltc1;
-vec4 ltcFetch0(vec2 uv) { return textureLod(t_ltc0, uv, 0.0f); }
-vec4 ltcFetch1(vec2 uv) { return textureLod(t_ltc1, uv, 0.0f); }
-#endif
-
-// The integral over the hemisphere of the specular lobe the LTC shades, f (n.l) with the
-// surface's Fresnel: n_f f0 + n_fresnel (f90 - f0) (Schlick's F = f0 + (f90 - f0)(1 - V.H)^5
-// integrated against the fitted lobe, Heitz et al. 2016 section 4.3), f90 = 1, or UE4's
-// saturate(50 f0.g) with HV_F_SCHLICK_F90_OCCLUSION. Other F terms get Schlick's average. With a V
-// term other than the fitted height-correlated Smith, HV_LTC_V_RATIO scales it by that term over
-// Smith's at the mirror direction (N.L = N.V, H = N); docs/lights.md, "Other BRDF choices".
-vec3 ltcSpecularMagnitude(Surface s, float NoV, vec4 t1) {
-#if HV_BRDF_F == HV_F_SCHLICK_F90_OCCLUSION
-  vec3 f90 = vec3(saturate(50.0f * s.f0.y));
-#else
-  vec3 f90 = vec3(1.0f);
-#endif
-  vec3 m = s.f0 * t1.x + (f90 - s.f0) * t1.y;
-#if HV_LTC_V_RATIO && HV_BRDF_V != HV_V_SMITH_GGX_CORRELATED
-  m = m * (visibility(s.roughness, s.alpha, NoV, NoV, 1.0f, NoV) /
-           V_SmithGGXCorrelated(s.alpha, NoV, NoV));
-#endif
-  return m;
-}
-#endif
-
 // What every light shading a pixel shares, computed once per pixel before the light loop (as
-// UE4's BxDFContext): the view direction, N.V and the reflection ray of Karis eq. 11 and 19; with
-// an LTC mode, the pixel's LTC and the magnitude of its lobe.
+// UE4's BxDFContext): the view direction, N.V and the reflection ray of Karis eq. 11 and 19, and
+// the pixel's LTC and the magnitude of its lobe (ltcShadingSetup: only read, and so only computed,
+// with an LTC mode).
 struct ShadingPoint {
   vec3 P;         // world position
   vec3 V;         // unit, from P toward the eye
   vec3 R;         // reflect(-V, N): the reflection ray of the representative-point methods
   float NoV;      // max(dot(N, V), HV_MIN_NOV): the BRDF's N.V
-#if HV_LTC_TABLE
   Ltc ltc;        // the LTC of this pixel's (roughness, N.V), world space
   vec3 ltc_spec;  // ltcSpecularMagnitude: what the LTC's integral (<= 1) is multiplied by
-#endif
 };
-
-ShadingPoint makeShadingPoint(Surface s, vec3 P, vec3 V) {
-  ShadingPoint sp;
-  sp.P = P;
-  sp.V = V;
-  sp.R = reflect(-V, s.N);
-  sp.NoV = max(dot(s.N, V), HV_MIN_NOV);
-#if HV_LTC_TABLE
-  vec2 uv = ltcTableUv(s.roughness, sp.NoV);
-  sp.ltc = makeLtc(s.N, V, s.alpha, ltcFetch0(uv));
-  sp.ltc_spec = ltcSpecularMagnitude(s, sp.NoV, ltcFetch1(uv));
-#endif
-  return sp;
-}
 
 // Karis 2013 "Lighting" / "Material Model": the two terms of one light. diffuseTerm: the diffuse
 // lobe (Lambert or Burley) for direction Ld times diffuse_irr = I * falloff * cos (irradiance
@@ -248,67 +199,19 @@ vec3 specularTerm(Surface s, ShadingPoint sp, vec3 Ls, float spec_irr, float spe
   return specularLobe(s, sp.NoV, NoL, NoH, dot(NxH, NxH), VoH, spec_norm) * (spec_irr * NoL);
 }
 
-#if HV_LTC_TABLE && HV_LTC_LIGHT_CORRECTION
-// Solid angle of a sphere of sin^2(angular radius) = sin2: 2 pi (1 - cos sigma) = 2 pi sin^2 /
-// (1 + cos), no cancellation for small spheres.
-float sphereSolidAngle(float sin2) {
-  return 2.0f * PI * sin2 / (1.0f + sqrt(max(1.0f - sin2, 0.0f)));
+// The LTC paths (they use ShadingPoint and specularTerm above; Ltc comes from ltc.glsl).
+#include "ltc_lights.glsl"
+
+ShadingPoint makeShadingPoint(Surface s, vec3 P, vec3 V) {
+  ShadingPoint sp;
+  sp.P = P;
+  sp.V = V;
+  sp.R = reflect(-V, s.N);
+  sp.NoV = max(dot(s.N, V), HV_MIN_NOV);
+  ltcShadingSetup(s, V, sp.NoV, sp.ltc, sp.ltc_spec);
+  return sp;
 }
 
-// The LTC modes' light correction (docs/lights.md, "Light correction"). The LTC matches the lobe's
-// integral over the sphere, not its value in every direction: a light sees the lobe over its own
-// cone, where the ratio lobe / LTC is anywhere from 0.5 to 3 in the lobe's flanks and tails at
-// grazing views and high roughness (1.4-1.6 for a sphere of r/d 0.25 overhead, seen at N.V 0.36,
-// roughness 0.5). Where both vary smoothly over the cone, the ratio of their sums at a few of its
-// points is the ratio of their integrals, and the LTC's exact integral I times it is the lobe's.
-// The points: two, at +-k tan(sigma) (e1 - e2) / sqrt(2) around the cone's axis c (e1 across the
-// plane of c and N, e2 = c x e1; sin2 = sin^2(sigma)); k = 0.6 measured best of 0.4-0.7. Whether
-// two points represent the light is tested on the LTC itself, whose integral is known: their
-// quadrature omega (D(x1) + D(x2)) / 2 against I, and against omega D(c). Each disagreement
-// u = (a - b) / (a + b) lowers the correction's weight linearly, from 1 at u = 0 to 0 at |u| = 1
-// against I, and against the axis to 0 at -0.7 (the center's density above the points': the
-// LTC's peak within the light) but only to 0.5 at +1 (the points' above the center's: tolerance
-// 2). Measured best of 0.2-1e6 against I, 0.5-0.85 and 0.7-1e6 against the axis, on the sphere
-// sweep with elevation 30 and 126 configurations off it (docs/lights.md); weight 0: the LTC
-// alone. As the light shrinks, both tests and the ratio become exact: the point light's limit,
-// the lobe's own value times the solid angle. omega: the light's solid angle (for a capsule, a
-// bound); the ratio is clamped to [0, 16].
-const float HV_LTC_CORRECTION_K = 0.6f;
-const float HV_LTC_CORRECTION_INTEGRAL_TOL = 1.0f;
-const float HV_LTC_CORRECTION_AXIS_TOL = 0.7f;
-const float HV_LTC_CORRECTION_AXIS_TOL_POINTS = 2.0f;
-vec3 ltcCorrection(Surface s, ShadingPoint sp, vec3 c, vec3 along, float sin2, float omega,
-                   float I) {
-  // The offset stops at sin^2 = 0.9 (72 degrees): inside the sphere sin2 is 1, and the tests
-  // below then keep the weight small.
-  float s2 = min(sin2, 0.9f);
-  vec3 e1;
-  vec3 e2;
-  tangentFrame(c, e1, e2);
-  // e1 across the plane of c and N, e2 in it: a frame that turns with the scene, so the shading
-  // does not depend on the world's axes. c along N (a light straight overhead) takes
-  // tangentFrame's.
-  vec3 a1 = cross(c, s.N);
-  float l2 = dot(a1, a1);
-  e1 = l2 > 1e-8f ? a1 * inversesqrt(l2) : e1;
-  e2 = cross(c, e1);
-  vec3 off = (HV_LTC_CORRECTION_K * 0.70710678f * sqrt(s2 / (1.0f - s2))) * (e1 - e2) + along;
-  vec3 L1 = normalize(c + off);
-  vec3 L2 = normalize(c - off);
-  vec3 f = specularTerm(s, sp, L1, 1.0f, 1.0f) + specularTerm(s, sp, L2, 1.0f, 1.0f);
-  float d = ltcDensity(sp.ltc, L1) + ltcDensity(sp.ltc, L2);
-  vec3 ratio = clamp(f / max(sp.ltc_spec * d, vec3(1e-30f)), vec3(0.0f), vec3(16.0f));
-  float quad = 0.5f * omega * d;
-  float axis = omega * ltcDensity(sp.ltc, c);
-  float u_int = (quad - I) / max(quad + I, 1e-30f);
-  float u_axis = (quad - axis) / max(quad + axis, 1e-30f);
-  float w = saturate(1.0f - abs(u_int) * (1.0f / HV_LTC_CORRECTION_INTEGRAL_TOL)) *
-            saturate(1.0f - abs(u_axis) * mix(1.0f / HV_LTC_CORRECTION_AXIS_TOL,
-                                              1.0f / HV_LTC_CORRECTION_AXIS_TOL_POINTS,
-                                              step(0.0f, u_axis)));
-  return mix(vec3(1.0f), ratio, w);
-}
-#endif
 // The light's radiance toward V from its two terms: the term mask (HV_DIRECT_TERMS: a term left
 // out is 0; the compiler drops its code), the cavity (Karis 2013 "Material Model": small-scale
 // shadowing multiplies all direct light, diffuse and specular alike, as a shadow factor would)
@@ -345,11 +248,19 @@ vec3 evaluatePointLight(GpuLight light, Surface s, vec3 P, vec3 V) {
 #endif
 
 #if HV_HAS_SPHERE_LIGHTS
+// Sphere light specular, Karis 2013 eqs. 11 and 14: the representative point of the sphere
+// closest to the reflection ray, with the energy normalization (alpha / alpha')^2.
+vec3 sphereSpecularRepresentativePoint(Surface s, ShadingPoint sp, vec3 Lc, float d2,
+                                       float radius, float falloff) {
+  vec3 Ls = safeNormalize(closestPointOnSphereToRay(Lc, radius, sp.R));
+  float norm = sphereNormalization(s.alpha, radius, d2);
+  return specularTerm(s, sp, Ls, falloff, norm);
+}
+
 // Sphere light: diffuse from the center (Karis point approximation) or the horizon-correct sphere
 // irradiance (Lagarde & de Rousiers 2014 section 4.7.2); specular from the representative point
-// closest to the reflection ray (Karis 2013 eq. 11) with the energy normalization of eq. 14, or
-// (HV_SPHERE_SPECULAR_LTC) the integral of the pixel's LTC over the sphere's cone times the
-// emitter radiance L_e = I / (pi r^2) (docs/lights.md), windowed (and with the +1) as the falloff.
+// (sphereSpecularRepresentativePoint) or, with HV_SPHERE_SPECULAR_LTC, the pixel's LTC over the
+// sphere's cone (ltcSphereSpecular, ltc_lights.glsl).
 vec3 evaluateSphereLightAt(GpuLight light, Surface s, ShadingPoint sp) {
   float radius = light.position_radius.w;
   vec3 Lc = vec3(light.position_radius) - sp.P;
@@ -363,29 +274,17 @@ vec3 evaluateSphereLightAt(GpuLight light, Surface s, ShadingPoint sp) {
 #else
   float cos_factor = saturate(dot(s.N, L));
 #endif
-  vec3 diffuse = diffuseTerm(s, sp, L, falloff * cos_factor);
+  // Inside the sphere the whole hemisphere emits L_e = I / (pi r^2): the irradiance pi L_e is
+  // I / r^2, the falloff (whose d^2 is clamped to r^2) times 1, from the hemisphere's mean
+  // direction N, whichever side of the surface the center is on (the reference's emitter and the
+  // `ltc` specular alike; neither method's horizon applies there). A select.
+  bool inside = d2 <= radius * radius;
+  cos_factor = mix(cos_factor, 1.0f, inside);
+  vec3 diffuse = diffuseTerm(s, sp, mix(L, s.N, bvec3(inside)), falloff * cos_factor);
 #if HV_SPHERE_SPECULAR == HV_SPHERE_SPECULAR_LTC
-  // L_e per unit I: falloff d^2 / (pi r^2) (= window / (pi r^2), times d^2 / (d^2 + 1) with the
-  // +1; d^2 clamped as the falloff clamps it). A radius below 1e-4 d is shaded as 1e-4 d: the
-  // integral then equals the LTC's density times the solid angle to 1e-4, and r = 0 is the
-  // limit, not 0/0.
-  float d2c = max(d2, max(radius * radius, HV_MIN_LIGHT_DIST2));
-  float r_eff = max(radius, 1e-4f * sqrt(d2c));
-  float I = ltcSphereIntegral(sp.ltc, Lc, r_eff);
-  vec3 specular = sp.ltc_spec * (I * falloff * d2c / (PI * r_eff * r_eff));
-#if HV_LTC_LIGHT_CORRECTION
-  // The lobe over the LTC at two points of the sphere's cone around its center (ltcCorrection).
-  float sin2 = r_eff * r_eff / d2c;
-  float omega = sphereSolidAngle(sin2);
-  // Inside the sphere the integral is exact (the whole hemisphere emits): no correction there
-  // (a select; LtcLights.InsideTheSphereTheWholeHemisphereEmits).
-  specular = specular * mix(ltcCorrection(s, sp, L, vec3(0.0f), sin2, omega, I), vec3(1.0f),
-                            bvec3(d2 <= r_eff * r_eff));
-#endif
+  vec3 specular = ltcSphereSpecular(s, sp, Lc, L, d2, radius, falloff);
 #else
-  vec3 Ls = safeNormalize(closestPointOnSphereToRay(Lc, radius, sp.R));
-  float norm = sphereNormalization(s.alpha, radius, d2);
-  vec3 specular = specularTerm(s, sp, Ls, falloff, norm);
+  vec3 specular = sphereSpecularRepresentativePoint(s, sp, Lc, d2, radius, falloff);
 #endif
   return combineTerms(s, vec3(light.color_inv_range), diffuse, specular);
 }
@@ -395,47 +294,13 @@ vec3 evaluateSphereLight(GpuLight light, Surface s, vec3 P, vec3 V) {
 #endif
 
 #if HV_HAS_TUBE_LIGHTS
-// Tube light (capsule: segment of length len along axis, radius r). Diffuse: line-segment
-// irradiance with Karis's modifications (Karis 2013 eq. 16), or (HV_TUBE_DIFFUSE_LTC) the
-// capsule's irradiance with the identity LTC; specular: point on the segment closest to the
-// reflection ray (eq. 19; eq. 18 with HV_TUBE_SPECULAR = 1), then the sphere representative
-// point around it (eq. 11), normalized by alpha/alpha' (eq. 20) times the sphere's
-// (alpha/alpha'')^2 (eq. 14), or (HV_TUBE_SPECULAR_LTC) the pixel's LTC integrated over the
-// capsule, times the emitter radiance L_e = I / (pi r^2 + pi r len / 2) (docs/lights.md).
-vec3 evaluateTubeLightAt(GpuLight light, Surface s, ShadingPoint sp) {
-  float radius = light.position_radius.w;
-  float len = light.axis_length.w;
-  vec3 Lc = vec3(light.position_radius) - sp.P;
-  vec3 Ld = vec3(light.axis_length) * len;  // segment vector L1 - L0
-  vec3 L0 = Lc - 0.5f * Ld;
-  vec3 L1 = Lc + 0.5f * Ld;
-  float ld2 = dot(Ld, Ld);
-  // Closest point of the segment to P: the window distance and the diffuse direction. 1e-30
-  // guards 0/0 for len = 0 (then t = 0 and L0 = Lc: the sphere light).
-  float tp = saturate(-dot(L0, Ld) / max(ld2, 1e-30f));
-  vec3 Lp = L0 + tp * Ld;
-  float dp2 = dot(Lp, Lp);
-  float window = falloffWindow(dp2, light.color_inv_range.w);
-  vec3 Ldiff = Lp * inversesqrt(max(dp2, 1e-30f));  // safeNormalize(Lp) reusing dp2
-#if HV_TUBE_DIFFUSE == HV_TUBE_DIFFUSE_LTC || HV_TUBE_SPECULAR == HV_TUBE_SPECULAR_LTC
-  // Emitter radiance per unit I (docs/lights.md): window / (pi r (r + len / 2)), times
-  // d^2 / (d^2 + 1) with the +1 (d: the closest segment point, clamped as the falloff clamps it).
-  // A radius below 1e-4 d is shaded as 1e-4 d (the line light's limit instead of 0/0).
-  float dp2c = max(dp2, max(radius * radius, HV_MIN_LIGHT_DIST2));
-  float r_eff = max(radius, 1e-4f * sqrt(dp2c));
-  float emit = window * (dp2c / (dp2c + float(HV_FALLOFF_PLUS_ONE))) /
-               (PI * r_eff * (r_eff + 0.5f * len));
-#endif
-
-#if HV_TUBE_DIFFUSE == HV_TUBE_DIFFUSE_LTC
-  // Irradiance per unit I: pi L_e times the capsule's integral of the clamped cosine.
-  float irradiance = emit * PI * capsuleCosineIntegral(s.N, L0, L1, r_eff);
-#else
-  // Diffuse, Karis eq. 16: E = I (saturate(n.L0/|L0|) + saturate(n.L1/|L1|)) /
-  // (|L0||L1| + L0.L1 + 2), the exact irradiance of a line of total intensity I (n.L clipped at
-  // each end, the "+2" being the "+1" of eq. 9). |L0||L1| + L0.L1 -> 2 d^2 as len -> 0, so it
-  // is clamped to >= 2 max(r^2, HV_MIN_LIGHT_DIST2) as the sphere clamps d^2 (it is 0 on the
-  // segment itself). One inversesqrt per end; |L0||L1| from their product, no extra sqrt.
+// Tube light diffuse, Karis 2013 eq. 16: E = I (saturate(n.L0/|L0|) + saturate(n.L1/|L1|)) /
+// (|L0||L1| + L0.L1 + 2), the exact irradiance of a line of total intensity I (n.L clipped at
+// each end, the "+2" being the "+1" of eq. 9). |L0||L1| + L0.L1 -> 2 d^2 as len -> 0, so it
+// is clamped to >= 2 max(r^2, HV_MIN_LIGHT_DIST2) as the sphere clamps d^2 (it is 0 on the
+// segment itself). One inversesqrt per end; |L0||L1| from their product, no extra sqrt.
+// Irradiance per unit I, windowed.
+float tubeIrradianceKaris(Surface s, vec3 L0, vec3 L1, float radius, float window) {
   float l0_2 = dot(L0, L0);
   float l1_2 = dot(L1, L1);
   float inv_l0 = inversesqrt(max(l0_2, 1e-30f));
@@ -443,27 +308,16 @@ vec3 evaluateTubeLightAt(GpuLight light, Surface s, ShadingPoint sp) {
   float geom = (l0_2 * inv_l0) * (l1_2 * inv_l1) + dot(L0, L1);  // paired: no overflow at 1e6 m
   float den = 2.0f * (max(0.5f * geom, max(radius * radius, HV_MIN_LIGHT_DIST2)) +
                       float(HV_FALLOFF_PLUS_ONE));
-  float irradiance =
-      (saturate(dot(s.N, L0) * inv_l0) + saturate(dot(s.N, L1) * inv_l1)) / den * window;
-#endif
-  vec3 diffuse = diffuseTerm(s, sp, Ldiff, irradiance);
+  return (saturate(dot(s.N, L0) * inv_l0) + saturate(dot(s.N, L1) * inv_l1)) / den * window;
+}
 
-#if HV_TUBE_SPECULAR == HV_TUBE_SPECULAR_LTC
-  float I = ltcCapsuleIntegral(sp.ltc, L0, L1, r_eff);
-  vec3 specular = sp.ltc_spec * (emit * I);
-#if HV_LTC_LIGHT_CORRECTION
-  // As the sphere's (evaluateSphereLightAt), around the capsule's center, its two points also
-  // spread along the axis at +-1/sqrt(3) of the half-length (the two-point Gauss rule of a
-  // segment), with the capsule's solid angle (at most (pi r^2 + 2 r len) / d^2, d the closest
-  // segment point) and integral. len = 0 gives the sphere's correction exactly.
-  float sin2 = r_eff * r_eff / dp2c;
-  float omega = sphereSolidAngle(sin2) + 2.0f * r_eff * len / dp2c;
-  float inv_lc = inversesqrt(max(dot(Lc, Lc), 1e-30f));
-  specular = specular * ltcCorrection(s, sp, Lc * inv_lc, (0.57735027f * 0.5f * inv_lc) * Ld,
-                                      sin2, omega, I);
-#endif
-#else
-  // Specular: the point of the segment chosen for the reflection ray R (Karis eqs. 18, 19).
+// Tube light specular, Karis 2013 eqs. 18-20: the point of the segment chosen for the reflection
+// ray R (closest, eq. 19, or smallest angle, eq. 18, with HV_TUBE_SPECULAR = 1), then the sphere
+// representative point around it (eq. 11), normalized by alpha/alpha' (eq. 20) times the
+// sphere's (alpha/alpha'')^2 (eq. 14). Lc: the segment's center, L0 its start and Ld = L1 - L0
+// (ld2 = |Ld|^2) relative to the shading point; window: the falloff window.
+vec3 tubeSpecularRepresentativePoint(Surface s, ShadingPoint sp, vec3 Lc, vec3 L0, vec3 Ld,
+                                     float ld2, float radius, float len, float window) {
   vec3 R = sp.R;
   float rl0 = dot(R, L0);
   float rld = dot(R, Ld);
@@ -488,7 +342,39 @@ vec3 evaluateTubeLightAt(GpuLight light, Surface s, ShadingPoint sp) {
   // sphere's falloff when len = 0), windowed like the diffuse.
   float spec_irr = window / (max(dt2, max(radius * radius, HV_MIN_LIGHT_DIST2)) +
                              float(HV_FALLOFF_PLUS_ONE));
-  vec3 specular = specularTerm(s, sp, Ls, spec_irr, norm);
+  return specularTerm(s, sp, Ls, spec_irr, norm);
+}
+
+// Tube light (capsule: segment of length len along axis, radius r). Diffuse: Karis's line-segment
+// irradiance (tubeIrradianceKaris) or, with HV_TUBE_DIFFUSE_LTC, the capsule's irradiance with the
+// identity LTC (ltcTubeIrradiance, ltc_lights.glsl); specular: the representative point
+// (tubeSpecularRepresentativePoint) or, with HV_TUBE_SPECULAR_LTC, the pixel's LTC over the
+// capsule (ltcTubeSpecular).
+vec3 evaluateTubeLightAt(GpuLight light, Surface s, ShadingPoint sp) {
+  float radius = light.position_radius.w;
+  float len = light.axis_length.w;
+  vec3 Lc = vec3(light.position_radius) - sp.P;
+  vec3 Ld = vec3(light.axis_length) * len;  // segment vector L1 - L0
+  vec3 L0 = Lc - 0.5f * Ld;
+  vec3 L1 = Lc + 0.5f * Ld;
+  float ld2 = dot(Ld, Ld);
+  // Closest point of the segment to P: the window distance and the diffuse direction. 1e-30
+  // guards 0/0 for len = 0 (then t = 0 and L0 = Lc: the sphere light).
+  float tp = saturate(-dot(L0, Ld) / max(ld2, 1e-30f));
+  vec3 Lp = L0 + tp * Ld;
+  float dp2 = dot(Lp, Lp);
+  float window = falloffWindow(dp2, light.color_inv_range.w);
+  vec3 Ldiff = Lp * inversesqrt(max(dp2, 1e-30f));  // safeNormalize(Lp) reusing dp2
+#if HV_TUBE_DIFFUSE == HV_TUBE_DIFFUSE_LTC
+  float irradiance = ltcTubeIrradiance(s, L0, L1, dp2, radius, len, window);
+#else
+  float irradiance = tubeIrradianceKaris(s, L0, L1, radius, window);
+#endif
+  vec3 diffuse = diffuseTerm(s, sp, Ldiff, irradiance);
+#if HV_TUBE_SPECULAR == HV_TUBE_SPECULAR_LTC
+  vec3 specular = ltcTubeSpecular(s, sp, Lc, Ld, L0, L1, dp2, radius, len, window);
+#else
+  vec3 specular = tubeSpecularRepresentativePoint(s, sp, Lc, L0, Ld, ld2, radius, len, window);
 #endif
   return combineTerms(s, vec3(light.color_inv_range), diffuse, specular);
 }
@@ -496,7 +382,6 @@ vec3 evaluateTubeLight(GpuLight light, Surface s, vec3 P, vec3 V) {
   return evaluateTubeLightAt(light, s, makeShadingPoint(s, P, V));
 }
 #endif
-
 // Karis 2013 "Lighting": outgoing radiance at P toward V (unit, from P to the eye) from one light,
 // for surface s (docs/lights.md).
 // Cavity is applied to all of it (see shadeLight). Only the compiled light types are handled;

@@ -196,7 +196,11 @@ vec3 ltcSphereFormFactor(Ltc l, vec3 c, float r) {
   // det Q / t^6 = det(B')^4 / t^6 with det B' = det(alpha M^-1) t^2 det[e1 e2 cn] = det_inv t^2.
   float di2 = l.det_inv * l.det_inv;
   float det_q = di2 * di2 * t * t;
-  vec3 F = coneFormFactor(q00, q01, q02, q11, q12, q22, det_q, cc);
+  // A thin or elongated image (the lobe's far tail at grazing views) by thinConeFormFactor, which
+  // keeps its precision there; any other by the eigenvalues of Q.
+  vec4 F_thin = thinConeFormFactor(cc, a1, a2, t, l.det_inv, q00, q01, q02, q11, q12, q22);
+  vec3 F = F_thin.w > 0.5f ? vec3(F_thin)
+                           : coneFormFactor(q00, q01, q02, q11, q12, q22, det_q, cc);
   // A cone small next to the LTC's lobe (u^2 = pi t^2 peak < 1: its solid angle below the lobe's,
   // the scale 1 / sqrt(pi peak) = alpha sqrt(a_x a_y)) has the form factor of its center
   // direction: solid angle in cosine space (omega det(alpha M^-1) / |x|^3, x = alpha M^-1 cn) /

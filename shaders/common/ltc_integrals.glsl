@@ -15,6 +15,8 @@
 #define HV_LTC_INTEGRALS_GLSL
 
 #include "math.glsl"
+// tangentFrame (thinConeFormFactor)
+#include "sampling.glsl"
 
 // Lagarde & de Rousiers 2014, "Moving Frostbite to PBR", section 4.7.2 listing 7
 // (illuminanceSphereOrDisk, after Snyder 1996): integral of cos over the visible part of a sphere
@@ -130,6 +132,66 @@ vec3 coneFormFactor(float q00, float q01, float q02, float q11, float q12, float
   // The nappe on the side of `toward`.
   e = e * (2.0f * step(0.0f, dot(e, toward)) - 1.0f);
   return e * min(f, 1.0f);
+}
+
+// The same cone's form factor where its image is thin or elongated: its positive eigenvalue mu
+// and the smaller negative one -l1 both small next to -l2 (mu, l1 < l2 / 4), as an LTC makes a
+// light's cone in its far tail at grazing views and low roughness. There Q's entries are of order
+// l2, mu and l1 are below their float rounding (1e-7 l2) and coneFormFactor's eigenvalues lose
+// them, which gave `ltc` spheres seen at N.V 0.03-0.06 on a roughness-0.1 floor values up to 255x
+// the reference (docs/lights.md, "Thin cones"). Here mu comes from a matrix where it is large. The
+// cone is {B (a, b, h): a^2 + b^2 <= h^2} with B = [t a1, t a2, c] (the images of the disk's
+// basis; t = tan(sigma)), Q = G^T J G with G = det(B) B^-1 / t (the rows r1, r2, r3 of
+// ltcSphereFormFactor), J = diag(-1, -1, 1), so adj(Q) = det^2 A with A = c c^T - t^2 (a1 a1^T +
+// a2 a2^T), three rank-one terms (det = det[a1 a2 c]), whose eigenvalues are det(Q) / (det^2
+// lambda) for Q's lambda: those of mu and -l1 the two large ones. The eigenvector u of -l2, Q's
+// dominant one, is found well from Q itself (its largest row, one power step); A restricted to the
+// plane across u is a 2x2 problem whose larger eigenvalue beta gives mu = t^2 det^2 / beta and
+// the axis. With l1 + l2 = mu - trace(Q) and l1 l2 = det(Q) / mu (`trace` = trace(Q), dominated
+// by -l2; det(Q) = det^4 t^2 in closed form), the form factor mu / sqrt((mu + l1)(mu + l2)) needs
+// neither l1 nor l2 alone. Returns (F, 1) where mu and l1 are below l2 / 4 by these values, (0, 0)
+// otherwise (coneFormFactor then). Scale-free in c, a1, a2 (as Q is).
+vec4 thinConeFormFactor(vec3 c, vec3 a1, vec3 a2, float t, float det, float q00, float q01,
+                        float q02, float q11, float q12, float q22) {
+  // u: Q's largest row, then one step of power iteration.
+  vec3 ra = vec3(q00, q01, q02);
+  vec3 rb = vec3(q01, q11, q12);
+  vec3 rc = vec3(q02, q12, q22);
+  vec3 u = dot(ra, ra) > dot(rb, rb) ? ra : rb;
+  u = dot(rc, rc) > dot(u, u) ? rc : u;
+  u = vec3(dot(ra, u), dot(rb, u), dot(rc, u));
+  u = u * inversesqrt(max(dot(u, u), 1e-37f));
+  // An orthonormal basis p, q of the plane across u, and A there.
+  vec3 p;
+  vec3 q;
+  tangentFrame(u, p, q);
+  float t2 = t * t;
+  vec3 pc = vec3(dot(p, c), dot(p, a1), dot(p, a2));
+  vec3 qc = vec3(dot(q, c), dot(q, a1), dot(q, a2));
+  float app = pc.x * pc.x - t2 * (pc.y * pc.y + pc.z * pc.z);
+  float apq = pc.x * qc.x - t2 * (pc.y * qc.y + pc.z * qc.z);
+  float aqq = qc.x * qc.x - t2 * (qc.y * qc.y + qc.z * qc.z);
+  float mid = 0.5f * (app + aqq);
+  float beta = mid + sqrt(sq(0.5f * (app - aqq)) + apq * apq);
+  // Its eigenvector: the larger of the two forms of the null vector of A - beta.
+  vec2 v1 = vec2(apq, beta - app);
+  vec2 v2 = vec2(beta - aqq, apq);
+  vec2 v = dot(v1, v1) > dot(v2, v2) ? v1 : v2;
+  vec3 e = p * v.x + q * v.y;
+  e = e * inversesqrt(max(dot(e, e), 1e-37f));
+  float d2 = det * det;
+  float mu = t2 * d2 / max(beta, 1e-37f);
+  float trace = q00 + q11 + q22;
+  float sum_l = mu - trace;                       // l1 + l2
+  float prod_l = d2 * t2 * d2 / max(mu, 1e-37f);  // l1 l2 = det(Q) / mu
+  // l2, the larger root of x^2 - sum_l x + prod_l, and l1 = prod_l / l2 (no cancellation).
+  float l2 = 0.5f * (sum_l + sqrt(max(sum_l * sum_l - 4.0f * prod_l, 0.0f)));
+  float l1 = prod_l / max(l2, 1e-37f);
+  float f = mu * inversesqrt(max(mu * mu + mu * sum_l + prod_l, 1e-37f));
+  // The nappe on the side of c.
+  e = e * (2.0f * step(0.0f, dot(e, c)) - 1.0f);
+  bool thin = beta > 0.0f && max(mu, l1) < 0.25f * l2;
+  return thin ? vec4(e * min(f, 1.0f), 1.0f) : vec4(0.0f);
 }
 
 #endif

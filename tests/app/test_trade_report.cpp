@@ -33,7 +33,8 @@ TradeReport sampleReport() {
     row.pass_ms = {{"gbuffer", 2.0}, {"light", ms[i] - 2.0}};
     row.total_ms = ms[i];
     row.cost_ratio = ms[i] / ms[0];
-    row.error.rel_rmse = err[i];
+    row.error.mean_rel = err[i];
+    row.error.rel_rmse = 3.0 * err[i];
     r.rows.push_back(row);
   }
   r.skipped = {"tube_specular: no tube lights"};
@@ -53,6 +54,7 @@ TEST(TradeReport, CsvHasALinePerRowAndQuotesFields) {
   EXPECT_EQ(lines, r.rows.size() + 1);
   EXPECT_EQ(csv.rfind("scene,configuration,aliases,group", 0), 0u) << csv;
   EXPECT_NE(csv.find("gbuffer_ms"), std::string::npos);
+  EXPECT_NE(csv.find(",total_ms,mean_rel,p99_rel,top_share,rel_rmse,"), std::string::npos) << csv;
   EXPECT_NE(csv.find("\"preset=balanced, with \"\"quotes\"\"\""), std::string::npos) << csv;
 }
 
@@ -63,6 +65,10 @@ TEST(TradeReport, MarkdownNamesEveryRowAndThePicks) {
   EXPECT_EQ(md.rfind("## ", 0), 0u) << md.substr(0, 80);
   for (const auto& row : r.rows) EXPECT_NE(md.find("`" + row.config.name), std::string::npos);
   EXPECT_NE(md.find("img/plot.png"), std::string::npos);
+  // The headline column comes first; the pick is by it (row 2's rel. RMSE, 0.15, is above 0.05).
+  EXPECT_NE(md.find("| mean rel. | p99 rel. | worst 0.1% | rel. RMSE |"), std::string::npos);
+  EXPECT_NE(md.find("Cheapest within mean rel. error <= 0.05: `preset=accurate"), std::string::npos)
+      << md;
   EXPECT_NE(md.find("tube_specular: no tube lights"), std::string::npos);
   EXPECT_FALSE(hv::app::presetRationale().empty());
 }

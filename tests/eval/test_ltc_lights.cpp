@@ -163,3 +163,32 @@ TEST(LtcLights, TinySphereIsThePointLightAtEveryView) {
     EXPECT_EQ(bad, 0) << "roughness " << rough << ", " << values.size() << " views";
   }
 }
+
+// A shading point inside a sphere light (many_lights has three, centres inside pillars) sees the
+// whole hemisphere emit L_e = I / (pi r^2): the reference's diffuse is pi L_e times the Lambert
+// lobe, wherever the centre is, above the surface or below it. Both sphere diffuse methods give it
+// (before, the horizon-correct one clipped the sphere as if the point were on its surface and the
+// Karis point one took N.L of the centre: 0 for a centre below the surface). Tolerance: 4 standard
+// errors + 0.5% of the reference.
+TEST(SphereDiffuse, InsideTheSphereTheWholeHemisphereEmits) {
+  const glm::vec3 N(0, 0, 1), P(0.0f);
+  for (SphereDiffuse method : {SphereDiffuse::KarisPoint, SphereDiffuse::HorizonCorrect}) {
+    EngineLightOptions o;
+    o.sphere_diffuse = method;
+    for (glm::vec3 center : {glm::vec3(0.0f, 0.0f, 0.2f), glm::vec3(0.15f, -0.1f, -0.3f),
+                             glm::vec3(0.3f, 0.2f, 0.05f), glm::vec3(0.0f, 0.0f, -0.45f)}) {
+      const Light l = light(LightType::Sphere, center, 0.5f);
+      for (float view_el : {10.0f, 60.0f}) {
+        const glm::vec3 V = dirAt(view_el, 30.0f);
+        const float got =
+            engineLightTerm(o, LightTerm::Diffuse, l, P, N, V, glm::vec3(1.0f), 0.0f, 0.5f).x;
+        const LightIntegral x =
+            integrateLight(l, P, N, V, glm::vec3(1.0f), glm::vec3(0.0f), 0.5f, 4096, 5,
+                           DistributionTerm::GGX, VisibilityTerm::SchlickGGX);
+        EXPECT_NEAR(got, x.diffuse.x, 4.0 * x.diffuse_se.x + 5e-3 * x.diffuse.x)
+            << "method " << int(method) << " centre " << center.x << "," << center.y << ","
+            << center.z << " view elevation " << view_el;
+      }
+    }
+  }
+}

@@ -164,6 +164,30 @@ TEST(Metrics, IdenticalAndPercentile) {
   EXPECT_NEAR(m.p99_rel, 3.0 * double(0.98f) / 3.03, 1e-6);
 }
 
+// The robust metrics: one pixel far off among 1999 slightly off carries almost all of the
+// squared error (top_share) but little of the mean relative error; spread evenly, the worst 0.1%
+// (2 of 2000 pixels) carry 0.1% of it.
+TEST(Metrics, MeanRelativeErrorAndTopShare) {
+  hv::ImageRGBf ref = hv::makeImageRGBf(2000, 1, glm::vec3(1.0f));
+  hv::ImageRGBf test = hv::makeImageRGBf(2000, 1, glm::vec3(1.0625f));  // d = 1/16, exact
+  test.px[7] = glm::vec3(17.0f);                                        // d = 16
+  hv::ErrorMetrics m = hv::compareImages(test, ref);
+  const double e_small = 3.0 * 0.0625 / 3.03, e_big = 48.0 / 3.03;
+  EXPECT_NEAR(m.mean_rel, (e_big + 1999.0 * e_small) / 2000.0, 1e-12);
+  const double sq_small = 3.0 * 0.0625 * 0.0625, sq_big = 3.0 * 256.0;
+  EXPECT_NEAR(m.top_share, (sq_big + sq_small) / (sq_big + 1999.0 * sq_small), 1e-12);
+  EXPECT_GT(m.top_share, 0.9);
+  EXPECT_LT(m.mean_rel, 0.1);  // while rel_rmse is large:
+  EXPECT_GT(m.rel_rmse, 0.3);
+
+  test.px[7] = glm::vec3(1.0625f);
+  m = hv::compareImages(test, ref);
+  EXPECT_NEAR(m.top_share, 2.0 / 2000.0, 1e-12);
+  EXPECT_NEAR(m.mean_rel, e_small, 1e-12);
+  EXPECT_EQ(hv::compareImages(ref, ref).top_share, 0.0);
+  EXPECT_EQ(hv::compareImages(ref, ref).mean_rel, 0.0);
+}
+
 TEST(Metrics, NanCountingAndSizeMismatch) {
   hv::ImageRGBf ref = hv::makeImageRGBf(3, 2, glm::vec3(0.5f)), test = ref;
   const float nan = std::numeric_limits<float>::quiet_NaN();

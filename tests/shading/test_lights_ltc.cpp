@@ -17,6 +17,7 @@
 #undef HV_BRDF_GLSL
 #undef HV_LIGHTS_GLSL
 #undef HV_LTC_GLSL
+#undef HV_LTC_LIGHTS_GLSL
 #undef HV_LTC_INTEGRALS_GLSL
 #undef HV_SAMPLING_GLSL
 #undef HV_BRDF_V
@@ -52,6 +53,7 @@ namespace {
 #undef HV_BRDF_GLSL
 #undef HV_LIGHTS_GLSL
 #undef HV_LTC_GLSL
+#undef HV_LTC_LIGHTS_GLSL
 #undef HV_LTC_INTEGRALS_GLSL
 #undef HV_SAMPLING_GLSL
 #undef HV_DIRECT_TERMS
@@ -71,6 +73,7 @@ namespace {
 #undef HV_BRDF_GLSL
 #undef HV_LIGHTS_GLSL
 #undef HV_LTC_GLSL
+#undef HV_LTC_LIGHTS_GLSL
 #undef HV_LTC_INTEGRALS_GLSL
 #undef HV_SAMPLING_GLSL
 #undef HV_DIRECT_TERMS

@@ -15,6 +15,7 @@
 #undef HV_BRDF_GLSL
 #undef HV_LIGHTS_GLSL
 #undef HV_LTC_GLSL
+#undef HV_LTC_LIGHTS_GLSL
 #undef HV_LTC_INTEGRALS_GLSL
 #undef HV_SAMPLING_GLSL
 #undef HV_BRDF_D

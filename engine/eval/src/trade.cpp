@@ -238,6 +238,14 @@ ComparedPixels comparedPixels(const GBufferReadback& gb, const ImageRGBf& ref,
   return c;
 }
 
+// `ref` plus the engine's emissive image, pixel by pixel (emissive adds no noise: the reference's
+// standard error stays its own).
+ImageRGBf withEmissive(const ImageRGBf& ref, const ImageRGBf& emissive) {
+  ImageRGBf out = ref;
+  for (size_t i = 0; i < out.px.size(); ++i) out.px[i] += emissive.px[i];
+  return out;
+}
+
 bool wantHeatmap(const TradeOptions& opt, const TradeConfig& cfg) {
   if (opt.report_dir.empty()) return false;
   if (opt.heatmaps == TradeOptions::Heatmaps::All) return true;
@@ -353,15 +361,23 @@ TradeReport runTrade(const Scene& scene, const TradeOptions& opt) {
   renderer.render(w, h);
   const GBufferReadback gb = renderer.readGBuffer();
   rep.truth = truthSettings(scene.settings);
-  const auto [ref, ref_se] = tradeReference(scene, gb, opt, rep, say);
+  const auto [truth_ref, ref_se] = tradeReference(scene, gb, opt, rep, say);
+  // The emissive the engine draws (the same G-buffer, no light term), added to the reference;
+  // the compared pixels and the noise are then those of the image the engine is compared with.
+  renderer.render(w, h, render::DebugView::Emissive);
+  const ImageRGBf emissive = renderer.readHdr();
+  const ImageRGBf ref = withEmissive(truth_ref, emissive);
   const ComparedPixels px = comparedPixels(gb, ref, ref_se, rep);
+  rep.emissive_pixels = 0;
+  for (size_t i : px.lit) rep.emissive_pixels += emissive.px[i] != glm::vec3(0.0f);
 
   // Every configuration: time, then compare the first round's image; more timing rounds after.
   std::vector<ConfigTimes> times(plan.configs.size());
   for (size_t k = 0; k < plan.configs.size(); ++k) {
     timeConfig(renderer, work, plan.configs[k], w, h, rep.frames, times[k]);
     rep.rows.push_back(scoreConfig(plan.configs[k], renderer.readHdr(), ref, px, opt, rep));
-    say(plan.configs[k].name + ": rel RMSE " + fmtNum(rep.rows.back().error.rel_rmse));
+    say(plan.configs[k].name + ": mean rel. error " + fmtNum(headlineError(rep.rows.back())) +
+        ", rel. RMSE " + fmtNum(rep.rows.back().error.rel_rmse));
   }
   for (int round = 1; round < rep.rounds; ++round) {
     say("timing round " + std::to_string(round + 1) + " of " + std::to_string(rep.rounds));

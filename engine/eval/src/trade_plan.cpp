@@ -155,11 +155,11 @@ TradePlan tradePlan(const Scene& scene, int max_brute_force_lights) {
 
 void markPareto(std::vector<TradeRow>& rows) {
   for (TradeRow& r : rows) {
-    const double t = r.total_ms, e = r.error.rel_rmse;
+    const double t = r.total_ms, e = headlineError(r);
     r.pareto = std::isfinite(e) && r.nonfinite == 0;
     for (const TradeRow& o : rows) {
-      if (&o == &r || !std::isfinite(o.error.rel_rmse) || o.nonfinite) continue;
-      const double ot = o.total_ms, oe = o.error.rel_rmse;
+      if (&o == &r || !std::isfinite(headlineError(o)) || o.nonfinite) continue;
+      const double ot = o.total_ms, oe = headlineError(o);
       if (ot <= t && oe <= e && (ot < t || oe < e)) {
         r.pareto = false;
         break;
@@ -172,15 +172,15 @@ void pickConfigurations(TradeReport& r) {
   r.cheapest_within_error = r.most_accurate_within_ms = -1;
   for (size_t i = 0; i < r.rows.size(); ++i) {
     const TradeRow& row = r.rows[i];
-    if (row.nonfinite || !std::isfinite(row.error.rel_rmse)) continue;
-    if (row.error.rel_rmse <= r.max_error &&
+    if (row.nonfinite || !std::isfinite(headlineError(row))) continue;
+    if (headlineError(row) <= r.max_error &&
         (r.cheapest_within_error < 0 ||
          row.total_ms < r.rows[size_t(r.cheapest_within_error)].total_ms)) {
       r.cheapest_within_error = int(i);
     }
     if (row.total_ms <= r.max_ms &&
         (r.most_accurate_within_ms < 0 ||
-         row.error.rel_rmse < r.rows[size_t(r.most_accurate_within_ms)].error.rel_rmse)) {
+         headlineError(row) < headlineError(r.rows[size_t(r.most_accurate_within_ms)]))) {
       r.most_accurate_within_ms = int(i);
     }
   }

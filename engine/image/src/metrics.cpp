@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <string>
 
@@ -39,21 +40,25 @@ ErrorMetrics compareImages(const ImageRGBf& test, const ImageRGBf& ref) {
   checkSameSize(test, ref, "compareImages");
   ErrorMetrics m;
   double sum_sq = 0.0, sum_abs = 0.0, sum_ref = 0.0;
-  std::vector<double> rel;
+  std::vector<double> rel, pixel_sq;
   rel.reserve(ref.px.size());
+  pixel_sq.reserve(ref.px.size());
   for (size_t i = 0; i < ref.px.size(); ++i) {
     const bool ft = finite3(test.px[i]), fr = finite3(ref.px[i]);
     m.nonfinite_test += !ft;
     m.nonfinite_ref += !fr;
     if (!ft || !fr) continue;
     ++m.compared_pixels;
+    double px_sq = 0.0;
     for (int c = 0; c < 3; ++c) {
       const double d = double(test.px[i][c]) - double(ref.px[i][c]);
-      sum_sq += d * d;
+      px_sq += d * d;
       sum_abs += std::abs(d);
       sum_ref += std::abs(double(ref.px[i][c]));
       m.max_abs = std::max(m.max_abs, std::abs(d));
     }
+    sum_sq += px_sq;
+    pixel_sq.push_back(px_sq);
     rel.push_back(relativeError(test.px[i], ref.px[i]));
   }
   const double n = double(m.compared_pixels) * 3.0;
@@ -70,6 +75,17 @@ ErrorMetrics compareImages(const ImageRGBf& test, const ImageRGBf& ref) {
   m.mean_abs = sum_abs / n;
   m.psnr = mse == 0.0 ? std::numeric_limits<double>::infinity()
                       : 10.0 * std::log10(m.psnr_peak * m.psnr_peak / mse);
+  double sum_rel = 0.0;
+  for (double e : rel) sum_rel += e;
+  m.mean_rel = sum_rel / double(rel.size());
+  // The worst ceil(kTopFraction n) pixels by squared error: their sum over the whole sum.
+  const size_t top =
+      std::min(pixel_sq.size(), size_t(std::ceil(kTopFraction * double(pixel_sq.size()))));
+  std::nth_element(pixel_sq.begin(), pixel_sq.begin() + long(top - 1), pixel_sq.end(),
+                   std::greater<double>());
+  double top_sq = 0.0;
+  for (size_t i = 0; i < top; ++i) top_sq += pixel_sq[i];
+  m.top_share = sum_sq > 0.0 ? top_sq / sum_sq : 0.0;
   const size_t k = size_t(std::ceil(0.99 * double(rel.size()))) - 1;  // nearest rank
   std::nth_element(rel.begin(), rel.begin() + long(k), rel.end());
   m.p99_rel = rel[k];

@@ -20,18 +20,27 @@ namespace hv {
 //   per-pixel relative error e = (sum_c |d_c|) / (sum_c |ref_c| + 3 * kRelEpsilon), i.e. the
 //               mean channel error over the mean reference channel value plus kRelEpsilon, so
 //               black reference pixels do not blow up (relativeError() below);
+//   mean_rel  = mean over pixels of e: the error as the image shows it, each pixel counting
+//               once whatever its brightness (the trade report's headline);
 //   p99_rel   = 99th percentile of e by nearest rank (the ceil(0.99 n)-th smallest);
+//   top_share = the share of sum d_c^2 (what rmse and rel_rmse are made of) carried by the
+//               ceil(kTopFraction n) pixels of largest sum_c d_c^2: near 1 when a few pixels
+//               (a glint, a firefly) make the RMSE, about kTopFraction when the error is spread
+//               evenly (0 when there is no error);
 //   psnr      = 10 log10(psnr_peak^2 / mse) in dB, psnr_peak = 1.0 (display-referred range;
 //               +inf when mse = 0).
 inline constexpr double kRelEpsilon = 1e-2;
 inline constexpr double kPsnrPeak = 1.0;
+inline constexpr double kTopFraction = 1e-3;  // the worst 0.1% of pixels (top_share)
 
 struct ErrorMetrics {
   double rmse = 0.0;
   double rel_rmse = 0.0;
   double mean_abs = 0.0;
   double max_abs = 0.0;
+  double mean_rel = 0.0;
   double p99_rel = 0.0;
+  double top_share = 0.0;
   double psnr = 0.0;
   double psnr_peak = kPsnrPeak;
   int64_t compared_pixels = 0;

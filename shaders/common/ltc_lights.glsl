@@ -1,0 +1,207 @@
+// The linearly transformed cosine (LTC) paths of the sphere and tube lights (Heitz et al. 2016;
+// Heitz & Hill 2017; the LTC itself and its integrals: ltc.glsl, ltc_integrals.glsl), shared by
+// GLSL and C++ (see halfvec/shading/glsl.hpp): the pixel's LTC and lobe magnitude, the light
+// correction, and each light's LTC term. lights.glsl includes it after ShadingPoint and
+// specularTerm and calls one function per term where the option selects LTC; the options
+// (HV_SPHERE_SPECULAR, HV_TUBE_SPECULAR, HV_TUBE_DIFFUSE, HV_LTC_V_RATIO, HV_LTC_LIGHT_CORRECTION,
+// HV_LTC_TABLE) are documented and defaulted there. Method and measurements: docs/lights.md ("LTC
+// sphere and tube lights").
+#ifndef HV_LTC_LIGHTS_GLSL
+#define HV_LTC_LIGHTS_GLSL
+
+#include "math.glsl"
+#include "brdf.glsl"
+#include "ltc.glsl"
+
+#if HV_LTC_TABLE
+// The two textures of the LTC table (ltc.glsl), sampled like the C++ side (ltc_table.hpp):
+// bilinear, clamp to edge, level 0.
+#ifdef HV_CPP
+vec4 ltcFetch0(vec2 uv) { return ::hv::ltcTableSample(0, uv); }
+vec4 ltcFetch1(vec2 uv) { return ::hv::ltcTableSample(1, uv); }
+#else
+layout(binding = HV_LTC_TEXTURE_UNIT0) uniform sampler2D t_ltc0;
+layout(binding = HV_LTC_TEXTURE_UNIT1) uniform sampler2D t_ltc1;
+vec4 ltcFetch0(vec2 uv) { return textureLod(t_ltc0, uv, 0.0f); }
+vec4 ltcFetch1(vec2 uv) { return textureLod(t_ltc1, uv, 0.0f); }
+#endif
+
+// The integral over the hemisphere of the specular lobe the LTC shades, f (n.l) with the
+// surface's Fresnel: n_f f0 + n_fresnel (f90 - f0) (Schlick's F = f0 + (f90 - f0)(1 - V.H)^5
+// integrated against the fitted lobe, Heitz et al. 2016 section 4.3), f90 = 1, or UE4's
+// saturate(50 f0.g) with HV_F_SCHLICK_F90_OCCLUSION. Other F terms get Schlick's average. With a V
+// term other than the fitted height-correlated Smith, HV_LTC_V_RATIO scales it by that term over
+// Smith's at the mirror direction (N.L = N.V, H = N); docs/lights.md, "Other BRDF choices".
+vec3 ltcSpecularMagnitude(Surface s, float NoV, vec4 t1) {
+#if HV_BRDF_F == HV_F_SCHLICK_F90_OCCLUSION
+  vec3 f90 = vec3(saturate(50.0f * s.f0.y));
+#else
+  vec3 f90 = vec3(1.0f);
+#endif
+  vec3 m = s.f0 * t1.x + (f90 - s.f0) * t1.y;
+#if HV_LTC_V_RATIO && HV_BRDF_V != HV_V_SMITH_GGX_CORRELATED
+  m = m * (visibility(s.roughness, s.alpha, NoV, NoV, 1.0f, NoV) /
+           V_SmithGGXCorrelated(s.alpha, NoV, NoV));
+#endif
+  return m;
+}
+#endif
+
+// The pixel's LTC and the magnitude of its lobe (ShadingPoint.ltc, .ltc_spec), read from the table
+// at (roughness, N.V); without the table (no light type shades its specular with an LTC) the
+// identity LTC about N and 0, which no light then reads.
+void ltcShadingSetup(Surface s, vec3 V, float NoV, HV_OUT(Ltc) ltc, HV_OUT(vec3) ltc_spec) {
+#if HV_LTC_TABLE
+  vec2 uv = ltcTableUv(s.roughness, NoV);
+  ltc = makeLtc(s.N, V, s.alpha, ltcFetch0(uv));
+  ltc_spec = ltcSpecularMagnitude(s, NoV, ltcFetch1(uv));
+#else
+  ltc = ltcIdentity(s.N);
+  ltc_spec = vec3(0.0f);
+#endif
+}
+
+#if HV_LTC_TABLE
+#if HV_LTC_LIGHT_CORRECTION
+// Solid angle of a sphere of sin^2(angular radius) = sin2: 2 pi (1 - cos sigma) = 2 pi sin^2 /
+// (1 + cos), no cancellation for small spheres.
+float sphereSolidAngle(float sin2) {
+  return 2.0f * PI * sin2 / (1.0f + sqrt(max(1.0f - sin2, 0.0f)));
+}
+
+// The LTC modes' light correction (docs/lights.md, "Light correction"). The LTC matches the lobe's
+// integral over the sphere, not its value in every direction: a light sees the lobe over its own
+// cone, where the ratio lobe / LTC is anywhere from 0.5 to 3 in the lobe's flanks and tails at
+// grazing views and high roughness (1.4-1.6 for a sphere of r/d 0.25 overhead, seen at N.V 0.36,
+// roughness 0.5). Where both vary smoothly over the cone, the ratio of their sums at a few of its
+// points is the ratio of their integrals, and the LTC's exact integral I times it is the lobe's.
+// The points: two, at +-k tan(sigma) (e1 - e2) / sqrt(2) around the cone's axis c (e1 across the
+// plane of c and N, e2 = c x e1; sin2 = sin^2(sigma)); k = 0.6 measured best of 0.4-0.7. Whether
+// two points represent the light is tested on the LTC itself, whose integral is known: their
+// quadrature omega (D(x1) + D(x2)) / 2 against I, and against omega D(c). Each disagreement
+// u = (a - b) / (a + b) lowers the correction's weight linearly, from 1 at u = 0 to 0 at |u| = 1
+// against I, and against the axis to 0 at -0.7 (the center's density above the points': the
+// LTC's peak within the light) but only to 0.5 at +1 (the points' above the center's: tolerance
+// 2). Measured best of 0.2-1e6 against I, 0.5-0.85 and 0.7-1e6 against the axis, on the sphere
+// sweep with elevation 30 and 126 configurations off it (docs/lights.md); weight 0: the LTC
+// alone. As the light shrinks, both tests and the ratio become exact: the point light's limit,
+// the lobe's own value times the solid angle. omega: the light's solid angle (for a capsule, a
+// bound); the ratio is clamped to [0, 16].
+const float HV_LTC_CORRECTION_K = 0.6f;
+const float HV_LTC_CORRECTION_INTEGRAL_TOL = 1.0f;
+const float HV_LTC_CORRECTION_AXIS_TOL = 0.7f;
+const float HV_LTC_CORRECTION_AXIS_TOL_POINTS = 2.0f;
+vec3 ltcCorrection(Surface s, ShadingPoint sp, vec3 c, vec3 along, float sin2, float omega,
+                   float I) {
+  // The offset stops at sin^2 = 0.9 (72 degrees): inside the sphere sin2 is 1, and the tests
+  // below then keep the weight small.
+  float s2 = min(sin2, 0.9f);
+  vec3 e1;
+  vec3 e2;
+  tangentFrame(c, e1, e2);
+  // e1 across the plane of c and N, e2 in it: a frame that turns with the scene, so the shading
+  // does not depend on the world's axes. c along N (a light straight overhead) takes
+  // tangentFrame's.
+  vec3 a1 = cross(c, s.N);
+  float l2 = dot(a1, a1);
+  e1 = l2 > 1e-8f ? a1 * inversesqrt(l2) : e1;
+  e2 = cross(c, e1);
+  vec3 off = (HV_LTC_CORRECTION_K * 0.70710678f * sqrt(s2 / (1.0f - s2))) * (e1 - e2) + along;
+  vec3 L1 = normalize(c + off);
+  vec3 L2 = normalize(c - off);
+  vec3 f = specularTerm(s, sp, L1, 1.0f, 1.0f) + specularTerm(s, sp, L2, 1.0f, 1.0f);
+  float d = ltcDensity(sp.ltc, L1) + ltcDensity(sp.ltc, L2);
+  vec3 ratio = clamp(f / max(sp.ltc_spec * d, vec3(1e-30f)), vec3(0.0f), vec3(16.0f));
+  float quad = 0.5f * omega * d;
+  float axis = omega * ltcDensity(sp.ltc, c);
+  float u_int = (quad - I) / max(quad + I, 1e-30f);
+  float u_axis = (quad - axis) / max(quad + axis, 1e-30f);
+  float w = saturate(1.0f - abs(u_int) * (1.0f / HV_LTC_CORRECTION_INTEGRAL_TOL)) *
+            saturate(1.0f - abs(u_axis) * mix(1.0f / HV_LTC_CORRECTION_AXIS_TOL,
+                                              1.0f / HV_LTC_CORRECTION_AXIS_TOL_POINTS,
+                                              step(0.0f, u_axis)));
+  return mix(vec3(1.0f), ratio, w);
+}
+#endif
+
+// Sphere light specular (HV_SPHERE_SPECULAR_LTC): the integral of the pixel's LTC over the
+// sphere's cone times the emitter radiance L_e = I / (pi r^2) (docs/lights.md), windowed (and with
+// the +1) as the falloff. Lc: the center relative to the shading point, L = Lc / |Lc|, d2 = |Lc|^2,
+// falloff: distanceFalloff of the light.
+vec3 ltcSphereSpecular(Surface s, ShadingPoint sp, vec3 Lc, vec3 L, float d2, float radius,
+                       float falloff) {
+  // L_e per unit I: falloff d^2 / (pi r^2) (= window / (pi r^2), times d^2 / (d^2 + 1) with the
+  // +1; d^2 clamped as the falloff clamps it). A radius below 1e-4 d is shaded as 1e-4 d: the
+  // integral then equals the LTC's density times the solid angle to 1e-4, and r = 0 is the
+  // limit, not 0/0.
+  float d2c = max(d2, max(radius * radius, HV_MIN_LIGHT_DIST2));
+  float r_eff = max(radius, 1e-4f * sqrt(d2c));
+  float I = ltcSphereIntegral(sp.ltc, Lc, r_eff);
+  vec3 specular = sp.ltc_spec * (I * falloff * d2c / (PI * r_eff * r_eff));
+#if HV_LTC_LIGHT_CORRECTION
+  // The lobe over the LTC at two points of the sphere's cone around its center (ltcCorrection).
+  float sin2 = r_eff * r_eff / d2c;
+  float omega = sphereSolidAngle(sin2);
+  // Inside the sphere the integral is exact (the whole hemisphere emits): no correction there
+  // (a select; LtcLights.InsideTheSphereTheWholeHemisphereEmits).
+  specular = specular * mix(ltcCorrection(s, sp, L, vec3(0.0f), sin2, omega, I), vec3(1.0f),
+                            bvec3(d2 <= r_eff * r_eff));
+#endif
+  return specular;
+}
+#endif
+
+#if HV_TUBE_DIFFUSE == HV_TUBE_DIFFUSE_LTC || HV_TUBE_SPECULAR == HV_TUBE_SPECULAR_LTC
+// The capsule's radius as the LTC paths shade it: a radius below 1e-4 d is shaded as 1e-4 d (the
+// line light's limit instead of 0/0); dp2c: the squared distance to the closest segment point,
+// clamped as the falloff clamps it (ltcCapsuleDist2).
+float ltcCapsuleDist2(float dp2, float radius) {
+  return max(dp2, max(radius * radius, HV_MIN_LIGHT_DIST2));
+}
+float ltcCapsuleRadius(float radius, float dp2c) { return max(radius, 1e-4f * sqrt(dp2c)); }
+// Emitter radiance per unit I (docs/lights.md): window / (pi r (r + len / 2)), times
+// d^2 / (d^2 + 1) with the +1 (d: the closest segment point).
+float ltcCapsuleEmit(float window, float dp2c, float r_eff, float len) {
+  return window * (dp2c / (dp2c + float(HV_FALLOFF_PLUS_ONE))) /
+         (PI * r_eff * (r_eff + 0.5f * len));
+}
+#endif
+
+#if HV_TUBE_DIFFUSE == HV_TUBE_DIFFUSE_LTC
+// Tube light diffuse irradiance per unit I (HV_TUBE_DIFFUSE_LTC): pi L_e times the capsule's
+// integral of the clamped cosine (the identity LTC). L0, L1: the segment's ends relative to the
+// shading point; dp2: squared distance to its closest point; window: the falloff window there.
+float ltcTubeIrradiance(Surface s, vec3 L0, vec3 L1, float dp2, float radius, float len,
+                        float window) {
+  float dp2c = ltcCapsuleDist2(dp2, radius);
+  float r_eff = ltcCapsuleRadius(radius, dp2c);
+  return ltcCapsuleEmit(window, dp2c, r_eff, len) * PI * capsuleCosineIntegral(s.N, L0, L1, r_eff);
+}
+#endif
+
+#if HV_LTC_TABLE && HV_TUBE_SPECULAR == HV_TUBE_SPECULAR_LTC
+// Tube light specular (HV_TUBE_SPECULAR_LTC): the pixel's LTC integrated over the capsule, times
+// the emitter radiance L_e = I / (pi r^2 + pi r len / 2) (docs/lights.md). Lc: the segment's
+// center, Ld = L1 - L0, and the rest as ltcTubeIrradiance.
+vec3 ltcTubeSpecular(Surface s, ShadingPoint sp, vec3 Lc, vec3 Ld, vec3 L0, vec3 L1, float dp2,
+                     float radius, float len, float window) {
+  float dp2c = ltcCapsuleDist2(dp2, radius);
+  float r_eff = ltcCapsuleRadius(radius, dp2c);
+  float I = ltcCapsuleIntegral(sp.ltc, L0, L1, r_eff);
+  vec3 specular = sp.ltc_spec * (ltcCapsuleEmit(window, dp2c, r_eff, len) * I);
+#if HV_LTC_LIGHT_CORRECTION
+  // As the sphere's (ltcSphereSpecular), around the capsule's center, its two points also
+  // spread along the axis at +-1/sqrt(3) of the half-length (the two-point Gauss rule of a
+  // segment), with the capsule's solid angle (at most (pi r^2 + 2 r len) / d^2, d the closest
+  // segment point) and integral. len = 0 gives the sphere's correction exactly.
+  float sin2 = r_eff * r_eff / dp2c;
+  float omega = sphereSolidAngle(sin2) + 2.0f * r_eff * len / dp2c;
+  float inv_lc = inversesqrt(max(dot(Lc, Lc), 1e-30f));
+  specular = specular * ltcCorrection(s, sp, Lc * inv_lc, (0.57735027f * 0.5f * inv_lc) * Ld,
+                                      sin2, omega, I);
+#endif
+  return specular;
+}
+#endif
+
+#endif
