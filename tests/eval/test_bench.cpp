@@ -52,6 +52,7 @@ TEST(Bench, FrameCostReportsEveryPassAgainstTheFloor) {
   hv::Light l;
   l.position = {0.0f, 1.0f, 0.0f};
   s.lights.push_back(l);
+  s.settings.culling = hv::Culling::Tiled;  // `auto` would skip the culling pass for one light
   const hv::eval::FrameCost c = hv::eval::measureFrameCost(s, "tiny", 64, 48, 3);
   EXPECT_EQ(c.frames, 3);
   EXPECT_GT(c.floor_ms, 0.0);

@@ -46,6 +46,9 @@ hv::Scene tinyScene() {
   s.lights = {point, sphere};
   s.environment.kind = hv::EnvironmentKind::Uniform;
   s.environment.color = glm::vec3(0.05f);
+  // Tiled, so that the culling row (brute force) compares two ways of running the light pass;
+  // `auto` would pick brute force for two lights.
+  s.settings.culling = hv::Culling::Tiled;
   return s;
 }
 
