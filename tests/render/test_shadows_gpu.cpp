@@ -320,9 +320,9 @@ TEST(Shadows, PcssPenumbraWidensWithRadiusAndDistance) {
 
 // Scenes whose lights have no shadows render bit for bit as before shadows existed: the hashes
 // of the HDR and 8-bit frames of three sample scenes with `shadows` off, rendered by the commit
-// before shadow maps (ddceaae) with this test's code, the environment read along R as then. Renders are reproducible bit for bit on one
-// implementation (docs/architecture.md); another implementation gives other bits, so the check
-// runs on the llvmpipe the hashes were taken on.
+// before shadow maps (ddceaae) with this test's code, the environment read along R as then. Renders
+// are reproducible bit for bit on one implementation (docs/architecture.md); another implementation
+// gives other bits, so the check runs on the llvmpipe the hashes were taken on.
 TEST(Shadows, SceneWithoutShadowedLightsRendersAsBefore) {
   hv::Context& ctx = testContext();
   if (ctx.renderer().find("llvmpipe") == std::string::npos) {
