@@ -14,8 +14,8 @@
 
 namespace hv {
 
-template <class E>
-struct EnumNames;  // specialised below: static constexpr std::array<std::string_view, N> names
+// EnumNames<E> (declared in render_settings.hpp, specialised there for the settings' enums and
+// below for the others): static constexpr std::array<std::string_view, N> names.
 
 #define HV_ENUM_NAMES(E, ...)                                                           \
   template <>                                                                           \
@@ -29,26 +29,6 @@ HV_ENUM_NAMES(Filter, "nearest", "linear");
 HV_ENUM_NAMES(AlphaMode, "opaque", "mask", "blend");
 HV_ENUM_NAMES(LightType, "point", "sphere", "tube");
 HV_ENUM_NAMES(EnvironmentKind, "none", "uniform", "sky", "hdr");
-HV_ENUM_NAMES(DistributionTerm, "ggx", "beckmann", "blinn_phong");
-HV_ENUM_NAMES(VisibilityTerm, "schlick_ggx", "smith_ggx_correlated", "smith_ggx_correlated_fast",
-              "smith_ggx_separable", "smith_beckmann_separable", "cook_torrance", "implicit");
-HV_ENUM_NAMES(FresnelTerm, "schlick_pow5", "schlick_sg", "exact", "schlick_f90_occlusion");
-HV_ENUM_NAMES(DiffuseTerm, "lambert", "burley");
-HV_ENUM_NAMES(SphereDiffuse, "karis_point", "horizon_correct");
-HV_ENUM_NAMES(SphereSpecular, "representative_point", "ltc");
-HV_ENUM_NAMES(TubeSpecular, "closest_point_eq19", "smallest_angle_eq18", "ltc");
-HV_ENUM_NAMES(TubeDiffuse, "karis_eq16", "ltc");
-HV_ENUM_NAMES(Culling, "tiled", "brute_force", "auto");
-HV_ENUM_NAMES(ToneMap, "reinhard", "reinhard_luminance", "none", "pbr_neutral", "aces");
-HV_ENUM_NAMES(Gamma, "gamma22", "srgb");
-HV_ENUM_NAMES(EnvBrdf, "table", "analytic");
-HV_ENUM_NAMES(Irradiance, "sh9", "cubemap");
-HV_ENUM_NAMES(IblDirection, "dominant", "reflect");
-HV_ENUM_NAMES(ShadowFilter, "hard", "pcf", "pcss");
-HV_ENUM_NAMES(AmbientOcclusion, "none", "gtao");
-HV_ENUM_NAMES(AoQuality, "low", "medium", "high");
-HV_ENUM_NAMES(AoResolution, "full", "half");
-HV_ENUM_NAMES(AoSpecular, "none", "lagarde", "cone");
 
 #undef HV_ENUM_NAMES
 

@@ -5,12 +5,15 @@
 // the viewer's Render panel and the trade report's option rows. The enum values that reach the
 // shaders are defined once, in shaders/common/setting_values.glsl, for GLSL and C++ alike.
 //
-// Adding a setting: one row below (and, for an enum, its type above with the values in
-// setting_values.glsl and its names in enums.hpp), the shader code it selects, and a test.
+// Adding a setting: one row below (and, for an enum, its list of values above, each value's define
+// in setting_values.glsl), the shader code it selects, and a test.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <initializer_list>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -18,84 +21,123 @@
 
 namespace hv {
 
+template <class E>
+struct EnumNames;  // names of an enum's values, indexed by value (halfvec/scene/enums.hpp)
+
+// An enumerated setting's values, each V(ENUMERATOR, "scene-file name", VALUE): VALUE is the
+// define of setting_values.glsl the shaders compare against (0 and 1 for a flag). HV_SETTING_ENUM
+// declares the enum class and its names from one list, and fails to compile unless the values
+// are 0, 1, 2, ... in list order (the names are indexed by value).
+constexpr bool settingValuesInListOrder(std::initializer_list<int> values) {
+  int expected = 0;
+  for (int v : values) {
+    if (v != expected++) return false;
+  }
+  return true;
+}
+#define HV_SETTING_ENUMERATOR(NAME, STR, VALUE) NAME = VALUE,
+#define HV_SETTING_ENUM_NAME(NAME, STR, VALUE) STR,
+#define HV_SETTING_ENUM_VALUE(NAME, STR, VALUE) VALUE,
+#define HV_SETTING_ENUM(E, VALUES)                                         \
+  enum class E : uint8_t { VALUES(HV_SETTING_ENUMERATOR) };                \
+  static_assert(settingValuesInListOrder({VALUES(HV_SETTING_ENUM_VALUE)}), \
+                #E ": the values must be 0, 1, 2, ... in list order");     \
+  template <>                                                              \
+  struct EnumNames<E> {                                                    \
+    static constexpr std::array names =                                    \
+        std::to_array<std::string_view>({VALUES(HV_SETTING_ENUM_NAME)});   \
+  }
+
 // Term choices; defaults are Karis 2013's choice (docs/brdf.md).
-enum class DistributionTerm : uint8_t {
-  GGX = HV_D_GGX,
-  Beckmann = HV_D_BECKMANN,
-  BlinnPhong = HV_D_BLINN_PHONG
-};
-enum class VisibilityTerm : uint8_t {
-  SchlickGGX = HV_V_SCHLICK_GGX,  // k = alpha/2 (Karis 2013 eq. 4; remap_roughness for lights)
-  SmithGGXCorrelated = HV_V_SMITH_GGX_CORRELATED,           // Heitz 2014 exact height-correlated
-  SmithGGXCorrelatedFast = HV_V_SMITH_GGX_CORRELATED_FAST,  // Hammon 2017 / UE4 SmithJointApprox
-  SmithGGXSeparable = HV_V_SMITH_GGX_SEPARABLE,             // Walter 2007 exact separable G1
-  SmithBeckmannSeparable = HV_V_SMITH_BECKMANN_SEPARABLE,   // Walter 2007 rational approximation
-  CookTorrance = HV_V_COOK_TORRANCE,
-  Implicit = HV_V_IMPLICIT
-};
-enum class FresnelTerm : uint8_t {
-  SchlickPow5 = HV_F_SCHLICK,
-  SchlickSG = HV_F_SCHLICK_SG,
-  Exact = HV_F_EXACT,
-  SchlickF90Occlusion = HV_F_SCHLICK_F90_OCCLUSION
-};
-enum class DiffuseTerm : uint8_t { Lambert = HV_FD_LAMBERT, Burley = HV_FD_BURLEY };
-enum class SphereDiffuse : uint8_t {
-  KarisPoint = HV_SPHERE_DIFFUSE_KARIS_POINT,
-  HorizonCorrect = HV_SPHERE_DIFFUSE_HORIZON
-};
-enum class SphereSpecular : uint8_t {
-  RepresentativePoint = HV_SPHERE_SPECULAR_REPRESENTATIVE_POINT,
-  Ltc = HV_SPHERE_SPECULAR_LTC
-};
-enum class TubeSpecular : uint8_t {
-  ClosestPointEq19 = HV_TUBE_SPECULAR_CLOSEST_POINT,
-  SmallestAngleEq18 = HV_TUBE_SPECULAR_SMALLEST_ANGLE,
-  Ltc = HV_TUBE_SPECULAR_LTC
-};
-enum class TubeDiffuse : uint8_t {
-  KarisEq16 = HV_TUBE_DIFFUSE_KARIS_EQ16,
-  Ltc = HV_TUBE_DIFFUSE_LTC
-};
+#define HV_DISTRIBUTION_TERMS(V)         \
+  V(GGX, "ggx", HV_D_GGX)                \
+  V(Beckmann, "beckmann", HV_D_BECKMANN) \
+  V(BlinnPhong, "blinn_phong", HV_D_BLINN_PHONG)
+HV_SETTING_ENUM(DistributionTerm, HV_DISTRIBUTION_TERMS);
+#define HV_VISIBILITY_TERMS(V)                                                           \
+  /* k = alpha/2 (Karis 2013 eq. 4; remap_roughness for lights) */                       \
+  V(SchlickGGX, "schlick_ggx", HV_V_SCHLICK_GGX)                                         \
+  /* Heitz 2014 exact height-correlated */                                               \
+  V(SmithGGXCorrelated, "smith_ggx_correlated", HV_V_SMITH_GGX_CORRELATED)               \
+  /* Hammon 2017 / UE4 SmithJointApprox */                                               \
+  V(SmithGGXCorrelatedFast, "smith_ggx_correlated_fast", HV_V_SMITH_GGX_CORRELATED_FAST) \
+  /* Walter 2007 exact separable G1 */                                                   \
+  V(SmithGGXSeparable, "smith_ggx_separable", HV_V_SMITH_GGX_SEPARABLE)                  \
+  /* Walter 2007 rational approximation */                                               \
+  V(SmithBeckmannSeparable, "smith_beckmann_separable", HV_V_SMITH_BECKMANN_SEPARABLE)   \
+  V(CookTorrance, "cook_torrance", HV_V_COOK_TORRANCE)                                   \
+  V(Implicit, "implicit", HV_V_IMPLICIT)
+HV_SETTING_ENUM(VisibilityTerm, HV_VISIBILITY_TERMS);
+#define HV_FRESNEL_TERMS(V)                    \
+  V(SchlickPow5, "schlick_pow5", HV_F_SCHLICK) \
+  V(SchlickSG, "schlick_sg", HV_F_SCHLICK_SG)  \
+  V(Exact, "exact", HV_F_EXACT)                \
+  V(SchlickF90Occlusion, "schlick_f90_occlusion", HV_F_SCHLICK_F90_OCCLUSION)
+HV_SETTING_ENUM(FresnelTerm, HV_FRESNEL_TERMS);
+#define HV_DIFFUSE_TERMS(V) V(Lambert, "lambert", HV_FD_LAMBERT) V(Burley, "burley", HV_FD_BURLEY)
+HV_SETTING_ENUM(DiffuseTerm, HV_DIFFUSE_TERMS);
+#define HV_SPHERE_DIFFUSES(V)                                 \
+  V(KarisPoint, "karis_point", HV_SPHERE_DIFFUSE_KARIS_POINT) \
+  V(HorizonCorrect, "horizon_correct", HV_SPHERE_DIFFUSE_HORIZON)
+HV_SETTING_ENUM(SphereDiffuse, HV_SPHERE_DIFFUSES);
+#define HV_SPHERE_SPECULARS(V)                                                            \
+  V(RepresentativePoint, "representative_point", HV_SPHERE_SPECULAR_REPRESENTATIVE_POINT) \
+  V(Ltc, "ltc", HV_SPHERE_SPECULAR_LTC)
+HV_SETTING_ENUM(SphereSpecular, HV_SPHERE_SPECULARS);
+#define HV_TUBE_SPECULARS(V)                                                   \
+  V(ClosestPointEq19, "closest_point_eq19", HV_TUBE_SPECULAR_CLOSEST_POINT)    \
+  V(SmallestAngleEq18, "smallest_angle_eq18", HV_TUBE_SPECULAR_SMALLEST_ANGLE) \
+  V(Ltc, "ltc", HV_TUBE_SPECULAR_LTC)
+HV_SETTING_ENUM(TubeSpecular, HV_TUBE_SPECULARS);
+#define HV_TUBE_DIFFUSES(V) \
+  V(KarisEq16, "karis_eq16", HV_TUBE_DIFFUSE_KARIS_EQ16) V(Ltc, "ltc", HV_TUBE_DIFFUSE_LTC)
+HV_SETTING_ENUM(TubeDiffuse, HV_TUBE_DIFFUSES);
 // Flags in the shaders (HV_CULLING_BRUTE_FORCE, HV_ENV_BRDF_ANALYTIC, HV_IRRADIANCE_CUBEMAP): the
 // second value is 1. Culling::Auto never reaches a shader: the variant key resolves it to Tiled or
 // BruteForce from the scene's lights (render::chooseCulling, docs/performance.md "Culling only
 // where it pays").
-enum class Culling : uint8_t { Tiled = 0, BruteForce = 1, Auto = 2 };
-enum class EnvBrdf : uint8_t { Table = 0, Analytic = 1 };
-enum class Irradiance : uint8_t { SH9 = 0, Cubemap = 1 };
-enum class IblDirection : uint8_t {
-  Dominant = HV_IBL_DIRECTION_DOMINANT,
-  Reflect = HV_IBL_DIRECTION_REFLECT
-};
-enum class ToneMap : uint8_t {
-  Reinhard = HV_TONEMAP_REINHARD,
-  ReinhardLuminance = HV_TONEMAP_REINHARD_LUMINANCE,
-  None = HV_TONEMAP_NONE,
-  PbrNeutral = HV_TONEMAP_PBR_NEUTRAL,
-  Aces = HV_TONEMAP_ACES
-};
-enum class Gamma : uint8_t { Gamma22 = HV_GAMMA_22, SRGB = HV_GAMMA_SRGB };
+#define HV_CULLINGS(V) V(Tiled, "tiled", 0) V(BruteForce, "brute_force", 1) V(Auto, "auto", 2)
+HV_SETTING_ENUM(Culling, HV_CULLINGS);
+#define HV_ENV_BRDFS(V) V(Table, "table", 0) V(Analytic, "analytic", 1)
+HV_SETTING_ENUM(EnvBrdf, HV_ENV_BRDFS);
+#define HV_IRRADIANCES(V) V(SH9, "sh9", 0) V(Cubemap, "cubemap", 1)
+HV_SETTING_ENUM(Irradiance, HV_IRRADIANCES);
+#define HV_IBL_DIRECTIONS(V)                         \
+  V(Dominant, "dominant", HV_IBL_DIRECTION_DOMINANT) \
+  V(Reflect, "reflect", HV_IBL_DIRECTION_REFLECT)
+HV_SETTING_ENUM(IblDirection, HV_IBL_DIRECTIONS);
+#define HV_TONE_MAPS(V)                                                     \
+  V(Reinhard, "reinhard", HV_TONEMAP_REINHARD)                              \
+  V(ReinhardLuminance, "reinhard_luminance", HV_TONEMAP_REINHARD_LUMINANCE) \
+  V(None, "none", HV_TONEMAP_NONE)                                          \
+  V(PbrNeutral, "pbr_neutral", HV_TONEMAP_PBR_NEUTRAL)                      \
+  V(Aces, "aces", HV_TONEMAP_ACES)
+HV_SETTING_ENUM(ToneMap, HV_TONE_MAPS);
+#define HV_GAMMAS(V) V(Gamma22, "gamma22", HV_GAMMA_22) V(SRGB, "srgb", HV_GAMMA_SRGB)
+HV_SETTING_ENUM(Gamma, HV_GAMMAS);
 // Shadows of lights with `shadows: true` (docs/lights.md, "Shadows").
-enum class ShadowFilter : uint8_t {
-  Hard = HV_SHADOW_FILTER_HARD,
-  Pcf = HV_SHADOW_FILTER_PCF,
-  Pcss = HV_SHADOW_FILTER_PCSS
-};
+#define HV_SHADOW_FILTERS(V)             \
+  V(Hard, "hard", HV_SHADOW_FILTER_HARD) \
+  V(Pcf, "pcf", HV_SHADOW_FILTER_PCF)    \
+  V(Pcss, "pcss", HV_SHADOW_FILTER_PCSS)
+HV_SETTING_ENUM(ShadowFilter, HV_SHADOW_FILTERS);
 // Screen-space ambient occlusion (docs/ambient-occlusion.md): none, or GTAO (Jimenez, Wu, Pesce,
 // Jarabo 2016), its quality (directions x steps), resolution and specular occlusion.
-enum class AmbientOcclusion : uint8_t { None = HV_AO_NONE, Gtao = HV_AO_GTAO };
-enum class AoQuality : uint8_t {
-  Low = HV_AO_QUALITY_LOW,
-  Medium = HV_AO_QUALITY_MEDIUM,
-  High = HV_AO_QUALITY_HIGH
-};
-enum class AoResolution : uint8_t { Full = HV_AO_RESOLUTION_FULL, Half = HV_AO_RESOLUTION_HALF };
-enum class AoSpecular : uint8_t {
-  None = HV_AO_SPECULAR_NONE,
-  Lagarde = HV_AO_SPECULAR_LAGARDE,
-  Cone = HV_AO_SPECULAR_CONE
-};
+#define HV_AMBIENT_OCCLUSIONS(V) V(None, "none", HV_AO_NONE) V(Gtao, "gtao", HV_AO_GTAO)
+HV_SETTING_ENUM(AmbientOcclusion, HV_AMBIENT_OCCLUSIONS);
+#define HV_AO_QUALITIES(V)                  \
+  V(Low, "low", HV_AO_QUALITY_LOW)          \
+  V(Medium, "medium", HV_AO_QUALITY_MEDIUM) \
+  V(High, "high", HV_AO_QUALITY_HIGH)
+HV_SETTING_ENUM(AoQuality, HV_AO_QUALITIES);
+#define HV_AO_RESOLUTIONS(V) \
+  V(Full, "full", HV_AO_RESOLUTION_FULL) V(Half, "half", HV_AO_RESOLUTION_HALF)
+HV_SETTING_ENUM(AoResolution, HV_AO_RESOLUTIONS);
+#define HV_AO_SPECULARS(V)                      \
+  V(None, "none", HV_AO_SPECULAR_NONE)          \
+  V(Lagarde, "lagarde", HV_AO_SPECULAR_LAGARDE) \
+  V(Cone, "cone", HV_AO_SPECULAR_CONE)
+HV_SETTING_ENUM(AoSpecular, HV_AO_SPECULARS);
 
 // What part of a scene makes a setting change code. Without it the variant key resets the setting
 // to its default (canonicalSettings), the manifest says why, and a key that holds another value is
