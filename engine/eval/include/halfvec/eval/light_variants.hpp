@@ -35,18 +35,18 @@ enum class ReadBy : uint8_t { Diffuse, Specular, SpecularLtc };
 // 1/0 for a bool); DEFAULT is the engine's. Every other define keeps the engine's default, except
 // the physical falloff (HV_FALLOFF_PLUS_ONE 0) and HV_DIRECT_TERMS (the variant's term).
 // clang-format off
-#define HV_ENGINE_LIGHT_OPTIONS(X)                                                                  \
-  X(SphereDiffuse, sphere_diffuse, SphereDiffuse::KarisPoint, HV_SPHERE_DIFFUSE, ReadBy::Diffuse) \
-  X(bool, sphere_normalization, true, HV_SPHERE_NORMALIZATION, ReadBy::Specular)                  \
-  X(SphereSpecular, sphere_specular, SphereSpecular::RepresentativePoint, HV_SPHERE_SPECULAR,     \
-    ReadBy::Specular)                                                                               \
-  X(TubeSpecular, tube_specular, TubeSpecular::ClosestPointEq19, HV_TUBE_SPECULAR,                \
-    ReadBy::Specular)                                                                               \
-  X(bool, tube_normalization, true, HV_TUBE_NORMALIZATION, ReadBy::Specular)                      \
-  X(TubeDiffuse, tube_diffuse, TubeDiffuse::KarisEq16, HV_TUBE_DIFFUSE, ReadBy::Diffuse)          \
-  X(DistributionTerm, d, DistributionTerm::GGX, HV_BRDF_D, ReadBy::Specular)                      \
-  X(VisibilityTerm, v, VisibilityTerm::SchlickGGX, HV_BRDF_V, ReadBy::Specular)                   \
-  /* lights.glsl HV_LTC_V_RATIO: no RenderSettings member, the engine always scales */              \
+#define HV_ENGINE_LIGHT_OPTIONS(X)                                                                 \
+  X(SphereDiffuse, sphere_diffuse, SphereDiffuse::KarisPoint, HV_SPHERE_DIFFUSE, ReadBy::Diffuse)  \
+  X(bool, sphere_normalization, true, HV_SPHERE_NORMALIZATION, ReadBy::Specular)                   \
+  X(SphereSpecular, sphere_specular, SphereSpecular::RepresentativePoint, HV_SPHERE_SPECULAR,      \
+    ReadBy::Specular)                                                                              \
+  X(TubeSpecular, tube_specular, TubeSpecular::ClosestPointEq19, HV_TUBE_SPECULAR,                 \
+    ReadBy::Specular)                                                                              \
+  X(bool, tube_normalization, true, HV_TUBE_NORMALIZATION, ReadBy::Specular)                       \
+  X(TubeDiffuse, tube_diffuse, TubeDiffuse::KarisEq16, HV_TUBE_DIFFUSE, ReadBy::Diffuse)           \
+  X(DistributionTerm, d, DistributionTerm::GGX, HV_BRDF_D, ReadBy::Specular)                       \
+  X(VisibilityTerm, v, VisibilityTerm::SchlickGGX, HV_BRDF_V, ReadBy::Specular)                    \
+  /* lights.glsl HV_LTC_V_RATIO: no RenderSettings member, the engine always scales */             \
   X(bool, ltc_v_ratio, true, HV_LTC_V_RATIO, ReadBy::SpecularLtc)
 // clang-format on
 
@@ -74,8 +74,8 @@ constexpr bool lightTermReads(LightTerm term, ReadBy r, const EngineLightOptions
   return false;
 }
 
-// `o` with every option that `term` does not read reset to its default: two requests that run
-// the same code have the same canonical options.
+// `o` with every option that `term` does not read reset to its default: requests that differ only
+// in such options have the same canonical options, and find the same entry.
 constexpr EngineLightOptions canonicalLightOptions(LightTerm term, const EngineLightOptions& o) {
   EngineLightOptions c;
 #define HV_LIGHT_OPTION_KEEP(TYPE, MEMBER, DEFAULT, DEFINE, READ_BY) \
@@ -92,7 +92,7 @@ struct LightVariant {
   bool operator==(const LightVariant&) const = default;
 };
 
-// THE list of compiled variants. What the evaluation requests (the accuracy sweeps' methods,
+// The list of compiled variants. What the evaluation requests (the accuracy sweeps' methods,
 // light_accuracy.cpp; the tests) must be here; the rest of the options stay at the defaults.
 inline constexpr LightVariant kEngineLightVariants[] = {
     // Diffuse: both sphere modes x both tube modes.
