@@ -1,193 +1,104 @@
-// The engine's light formulas (shaders/common/lights.glsl, compiled as C++) for every option the
-// accuracy sweep compares, each term on its own (HV_DIRECT_TERMS), with the physical falloff.
-// Each block compiles the shared headers once more with other defines (light_variant.inc).
+// The engine's light formulas (shaders/common/lights.glsl, compiled as C++) for every entry of
+// kEngineLightVariants (halfvec/eval/light_variants.hpp), each term on its own (HV_DIRECT_TERMS),
+// with the physical falloff. The build generates one block of defines per entry
+// (tools/light_variants_gen.cpp), each followed by light_variant.inc: one more compilation of the
+// shared headers in a namespace of its own.
 #include "halfvec/eval/light_accuracy.hpp"
 
-#include <algorithm>
 #include <iterator>
+#include <sstream>
 #include <stdexcept>
+#include <string>
 
+#include "halfvec/scene/enums.hpp"
 #include "halfvec/shading/light_gpu.hpp"
-#define HV_VARIANT_NS diffuse_sd0_td0
-#define HV_VARIANT_TERMS 1
-#define HV_VARIANT_SD 0
-#define HV_VARIANT_TD 0
-#include "light_variant.inc"
-#define HV_VARIANT_NS diffuse_sd0_td1
-#define HV_VARIANT_TERMS 1
-#define HV_VARIANT_SD 0
-#define HV_VARIANT_TD 1
-#include "light_variant.inc"
-#define HV_VARIANT_NS diffuse_sd1_td0
-#define HV_VARIANT_TERMS 1
-#define HV_VARIANT_SD 1
-#define HV_VARIANT_TD 0
-#include "light_variant.inc"
-#define HV_VARIANT_NS diffuse_sd1_td1
-#define HV_VARIANT_TERMS 1
-#define HV_VARIANT_SD 1
-#define HV_VARIANT_TD 1
-#include "light_variant.inc"
-#define HV_VARIANT_NS specular_sn0_ts0_tn0
-#define HV_VARIANT_TERMS 2
-#define HV_VARIANT_SN 0
-#define HV_VARIANT_TS 0
-#define HV_VARIANT_TN 0
-#include "light_variant.inc"
-#define HV_VARIANT_NS specular_sn0_ts0_tn1
-#define HV_VARIANT_TERMS 2
-#define HV_VARIANT_SN 0
-#define HV_VARIANT_TS 0
-#define HV_VARIANT_TN 1
-#include "light_variant.inc"
-#define HV_VARIANT_NS specular_sn0_ts1_tn0
-#define HV_VARIANT_TERMS 2
-#define HV_VARIANT_SN 0
-#define HV_VARIANT_TS 1
-#define HV_VARIANT_TN 0
-#include "light_variant.inc"
-#define HV_VARIANT_NS specular_sn0_ts1_tn1
-#define HV_VARIANT_TERMS 2
-#define HV_VARIANT_SN 0
-#define HV_VARIANT_TS 1
-#define HV_VARIANT_TN 1
-#include "light_variant.inc"
-#define HV_VARIANT_NS specular_sn1_ts0_tn0
-#define HV_VARIANT_TERMS 2
-#define HV_VARIANT_SN 1
-#define HV_VARIANT_TS 0
-#define HV_VARIANT_TN 0
-#include "light_variant.inc"
-#define HV_VARIANT_NS specular_sn1_ts0_tn1
-#define HV_VARIANT_TERMS 2
-#define HV_VARIANT_SN 1
-#define HV_VARIANT_TS 0
-#define HV_VARIANT_TN 1
-#include "light_variant.inc"
-#define HV_VARIANT_NS specular_sn1_ts1_tn0
-#define HV_VARIANT_TERMS 2
-#define HV_VARIANT_SN 1
-#define HV_VARIANT_TS 1
-#define HV_VARIANT_TN 0
-#include "light_variant.inc"
-#define HV_VARIANT_NS specular_sn1_ts1_tn1
-#define HV_VARIANT_TERMS 2
-#define HV_VARIANT_SN 1
-#define HV_VARIANT_TS 1
-#define HV_VARIANT_TN 1
-#include "light_variant.inc"
-#define HV_VARIANT_NS specular_ltc_vsmith
-#define HV_VARIANT_TERMS 2
-#define HV_VARIANT_SS 1
-#define HV_VARIANT_TS 2
-#define HV_VARIANT_V 1
-#include "light_variant.inc"
-#define HV_VARIANT_NS specular_ltc_vschlick
-#define HV_VARIANT_TERMS 2
-#define HV_VARIANT_SS 1
-#define HV_VARIANT_TS 2
-#define HV_VARIANT_V 0
-#define HV_VARIANT_VR 1
-#include "light_variant.inc"
-#define HV_VARIANT_NS specular_ltc_vschlick_noratio
-#define HV_VARIANT_TERMS 2
-#define HV_VARIANT_SS 1
-#define HV_VARIANT_TS 2
-#define HV_VARIANT_V 0
-#define HV_VARIANT_VR 0
-#include "light_variant.inc"
-#define HV_VARIANT_NS specular_ltc_dbeckmann
-#define HV_VARIANT_TERMS 2
-#define HV_VARIANT_SS 1
-#define HV_VARIANT_TS 2
-#define HV_VARIANT_D 1
-#define HV_VARIANT_V 0
-#define HV_VARIANT_VR 1
-#include "light_variant.inc"
-#define HV_VARIANT_NS specular_rp_vsmith
-#define HV_VARIANT_TERMS 2
-#define HV_VARIANT_V 1
-#include "light_variant.inc"
+#include "light_variants_generated.inc"
 
 namespace hv::eval {
 
 namespace {
 
-namespace d = reference_detail;
-
 using EvalFn = glm::vec3 (*)(const hv::GpuLight&, const glm::vec3&, const glm::vec3&,
                              const glm::vec3&, const glm::vec3&, float, float);
-struct Variant {
-  const int* options;  // terms, sd, sn, ss, ts, tn, td, d, v, vr (light_variant.inc kOptions)
-  EvalFn eval;
-};
-const Variant kVariants[] = {
-    {d::diffuse_sd0_td0::kOptions, d::diffuse_sd0_td0::eval},
-    {d::diffuse_sd0_td1::kOptions, d::diffuse_sd0_td1::eval},
-    {d::diffuse_sd1_td0::kOptions, d::diffuse_sd1_td0::eval},
-    {d::diffuse_sd1_td1::kOptions, d::diffuse_sd1_td1::eval},
-    {d::specular_sn0_ts0_tn0::kOptions, d::specular_sn0_ts0_tn0::eval},
-    {d::specular_sn0_ts0_tn1::kOptions, d::specular_sn0_ts0_tn1::eval},
-    {d::specular_sn0_ts1_tn0::kOptions, d::specular_sn0_ts1_tn0::eval},
-    {d::specular_sn0_ts1_tn1::kOptions, d::specular_sn0_ts1_tn1::eval},
-    {d::specular_sn1_ts0_tn0::kOptions, d::specular_sn1_ts0_tn0::eval},
-    {d::specular_sn1_ts0_tn1::kOptions, d::specular_sn1_ts0_tn1::eval},
-    {d::specular_sn1_ts1_tn0::kOptions, d::specular_sn1_ts1_tn0::eval},
-    {d::specular_sn1_ts1_tn1::kOptions, d::specular_sn1_ts1_tn1::eval},
-    {d::specular_ltc_vsmith::kOptions, d::specular_ltc_vsmith::eval},
-    {d::specular_ltc_vschlick::kOptions, d::specular_ltc_vschlick::eval},
-    {d::specular_ltc_vschlick_noratio::kOptions, d::specular_ltc_vschlick_noratio::eval},
-    {d::specular_ltc_dbeckmann::kOptions, d::specular_ltc_dbeckmann::eval},
-    {d::specular_rp_vsmith::kOptions, d::specular_rp_vsmith::eval}};
+constexpr EvalFn kEval[] = {HV_ENGINE_LIGHT_VARIANT_EVALS};
+static_assert(std::size(kEval) == kEngineLightVariantCount,
+              "light_variants_generated.inc is not kEngineLightVariants");
+
+std::string valueName(bool b) {
+  return b ? "true" : "false";
+}
+template <class E>
+std::string valueName(E e) {
+  return std::string(toString(e));
+}
+
+const char* termName(LightTerm t) {
+  return t == LightTerm::Diffuse ? "diffuse" : "specular";
+}
+
+// "name=value" for each option of `o` that differs from `base`, comma-separated; with
+// base_name, each followed by base's value.
+std::string differingOptions(const EngineLightOptions& o, const EngineLightOptions& base,
+                             const char* base_name) {
+  std::ostringstream s;
+  const char* sep = "";
+#define HV_LIGHT_OPTION_DIFF(TYPE, MEMBER, DEFAULT, DEFINE, READ_BY)                \
+  if (o.MEMBER != base.MEMBER) {                                                    \
+    s << sep << #MEMBER "=" << valueName(o.MEMBER);                                 \
+    if (base_name) s << " (" << base_name << ": " << valueName(base.MEMBER) << ")"; \
+    sep = ", ";                                                                     \
+  }
+  HV_ENGINE_LIGHT_OPTIONS(HV_LIGHT_OPTION_DIFF)
+#undef HV_LIGHT_OPTION_DIFF
+  return s.str();
+}
+
+int differingCount(const EngineLightOptions& a, const EngineLightOptions& b) {
+  int n = 0;
+#define HV_LIGHT_OPTION_COUNT(TYPE, MEMBER, DEFAULT, DEFINE, READ_BY) n += a.MEMBER != b.MEMBER;
+  HV_ENGINE_LIGHT_OPTIONS(HV_LIGHT_OPTION_COUNT)
+#undef HV_LIGHT_OPTION_COUNT
+  return n;
+}
 
 }  // namespace
 
-std::vector<EngineLightOptions> compiledLightVariants(LightTerm term) {
-  std::vector<EngineLightOptions> out;
-  for (const Variant& v : kVariants) {
-    if (v.options[0] != (term == LightTerm::Diffuse ? 1 : 2)) continue;
-    EngineLightOptions o;
-    o.sphere_diffuse = SphereDiffuse(v.options[1]);
-    o.sphere_normalization = v.options[2] != 0;
-    o.sphere_specular = SphereSpecular(v.options[3]);
-    o.tube_specular = TubeSpecular(v.options[4]);
-    o.tube_normalization = v.options[5] != 0;
-    o.tube_diffuse = TubeDiffuse(v.options[6]);
-    o.d = DistributionTerm(v.options[7]);
-    o.v = VisibilityTerm(v.options[8]);
-    o.ltc_v_ratio = v.options[9] != 0;
-    out.push_back(o);
+CompiledLightVariant findLightVariant(LightTerm term, const EngineLightOptions& o) {
+  const size_t i = lightVariantIndex(term, o);
+  if (i < kEngineLightVariantCount) return CompiledLightVariant{uint8_t(i)};
+  // Name what is missing: the request's options that the term reads and that are not the
+  // defaults, and the fields in which the nearest entry of the same term differs.
+  const EngineLightOptions want = canonicalLightOptions(term, o);
+  const LightVariant* nearest = nullptr;
+  int nearest_n = 0;
+  for (const LightVariant& v : kEngineLightVariants) {
+    if (v.term != term) continue;
+    const int n = differingCount(want, v.options);
+    if (!nearest || n < nearest_n) nearest = &v, nearest_n = n;
   }
-  return out;
+  std::ostringstream msg;
+  const std::string set = differingOptions(want, EngineLightOptions{}, nullptr);
+  msg << "no compiled " << termName(term) << " variant of the engine's light code with "
+      << (set.empty() ? std::string("the default options") : set);
+  if (nearest) {
+    msg << "; the nearest compiled one differs in "
+        << differingOptions(want, nearest->options, "compiled");
+  }
+  msg << "; add the combination to kEngineLightVariants (halfvec/eval/light_variants.hpp)";
+  throw std::invalid_argument(msg.str());
+}
+
+glm::vec3 engineLightTerm(CompiledLightVariant variant, const Light& light, const glm::vec3& P,
+                          const glm::vec3& N, const glm::vec3& V, const glm::vec3& base_color,
+                          float metallic, float roughness) {
+  return kEval[variant.index](packLight(light), P, N, V, base_color, metallic, roughness);
 }
 
 glm::vec3 engineLightTerm(const EngineLightOptions& o, LightTerm term, const Light& light,
                           const glm::vec3& P, const glm::vec3& N, const glm::vec3& V,
                           const glm::vec3& base_color, float metallic, float roughness) {
-  // Options a term does not read match any compiled value: the diffuse term reads the diffuse
-  // modes only, the specular term the specular ones and the BRDF terms.
-  const bool diffuse = term == LightTerm::Diffuse;
-  const int want[] = {diffuse ? 1 : 2,
-                      int(o.sphere_diffuse),
-                      int(o.sphere_normalization),
-                      int(o.sphere_specular),
-                      int(o.tube_specular),
-                      int(o.tube_normalization),
-                      int(o.tube_diffuse),
-                      int(o.d),
-                      int(o.v),
-                      int(o.ltc_v_ratio)};
-  const bool ltc = o.sphere_specular == SphereSpecular::Ltc || o.tube_specular == TubeSpecular::Ltc;
-  const bool used[] = {true,     diffuse, !diffuse, !diffuse, !diffuse,
-                       !diffuse, diffuse, !diffuse, !diffuse, !diffuse && ltc};
-  for (const Variant& v : kVariants) {
-    bool match = true;
-    for (size_t k = 0; k < std::size(want) && match; ++k) {
-      match = !used[k] || v.options[k] == want[k];
-    }
-    if (match) return v.eval(packLight(light), P, N, V, base_color, metallic, roughness);
-  }
-  throw std::logic_error("engineLightTerm: no compiled variant for these options");
+  return engineLightTerm(findLightVariant(term, o), light, P, N, V, base_color, metallic,
+                         roughness);
 }
 
 }  // namespace hv::eval

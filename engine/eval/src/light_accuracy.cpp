@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "halfvec/core/parallel.hpp"
 #include "halfvec/reference/emitters.hpp"
@@ -66,15 +67,15 @@ ViewValues referenceAtViews(const Light& light, const std::vector<glm::vec3>& vi
   return r;
 }
 
-std::vector<double> engineAtViews(const EngineLightOptions& o, LightTerm term, const Light& light,
+std::vector<double> engineAtViews(CompiledLightVariant variant, const Light& light,
                                   const std::vector<glm::vec3>& views, float roughness) {
   const glm::vec3 P(0.0f), N(0.0f, 0.0f, 1.0f);
   // White diffuse (metallic 0) for the diffuse term, white specular (metallic 1, f0 = 1) for the
   // specular term: the surface the reference integrates.
-  const float metallic = term == LightTerm::Diffuse ? 0.0f : 1.0f;
+  const float metallic = variant.variant().term == LightTerm::Diffuse ? 0.0f : 1.0f;
   std::vector<double> e;
   for (const glm::vec3& V : views) {
-    e.push_back(engineLightTerm(o, term, light, P, N, V, glm::vec3(1.0f), metallic, roughness).x);
+    e.push_back(engineLightTerm(variant, light, P, N, V, glm::vec3(1.0f), metallic, roughness).x);
   }
   return e;
 }
@@ -106,11 +107,27 @@ References referencesAtViews(const Light& light, const std::vector<glm::vec3>& v
   return r;
 }
 
-LightMethod method(std::string name, EngineLightOptions o) {
-  return {std::move(name), o};
+// A method as the lists below write it: its name and options, and the compiled variant that runs
+// it for term T, found when this file compiles (options not in kEngineLightVariants do not).
+template <LightTerm T>
+struct MethodSpec {
+  const char* name;
+  EngineLightOptions o;
+  CompiledLightVariant variant;
+  consteval MethodSpec(const char* n, EngineLightOptions opts)
+      : name(n), o(opts), variant(compiledLightVariant(T, opts)) {}
+};
+using DiffuseSpec = MethodSpec<LightTerm::Diffuse>;
+using SpecularSpec = MethodSpec<LightTerm::Specular>;
+
+template <LightTerm T, size_t N>
+std::vector<LightMethod> methods(const MethodSpec<T> (&specs)[N]) {
+  std::vector<LightMethod> m;
+  for (const MethodSpec<T>& s : specs) m.push_back({s.name, s.o, s.variant});
+  return m;
 }
 
-EngineLightOptions ltcOptions(VisibilityTerm v, bool ratio, DistributionTerm d) {
+constexpr EngineLightOptions ltcOptions(VisibilityTerm v, bool ratio, DistributionTerm d) {
   EngineLightOptions o;
   o.sphere_specular = SphereSpecular::Ltc;
   o.tube_specular = TubeSpecular::Ltc;
@@ -230,69 +247,61 @@ std::vector<glm::vec3> sweepViews(const glm::vec3& light_dir, float footprint) {
   return views;
 }
 
+namespace {
+
+using VT = VisibilityTerm;
+using DT = DistributionTerm;
+
+constexpr DiffuseSpec kSphereDiffuse[] = {
+    {"karis_point (default)", {}},
+    {"horizon_correct", {.sphere_diffuse = SphereDiffuse::HorizonCorrect}},
+};
+constexpr SpecularSpec kSphereSpecular[] = {
+    {"representative point + normalization (default)", {}},
+    {"representative point, no normalization", {.sphere_normalization = false}},
+    {"ltc", ltcOptions(VT::SmithGGXCorrelated, true, DT::GGX)},
+    {"representative point + normalization, V smith_ggx_correlated", {.v = VT::SmithGGXCorrelated}},
+    {"ltc, V schlick_ggx (V ratio)", ltcOptions(VT::SchlickGGX, true, DT::GGX)},
+    {"ltc, V schlick_ggx (no V ratio)", ltcOptions(VT::SchlickGGX, false, DT::GGX)},
+    {"ltc, D beckmann", ltcOptions(VT::SchlickGGX, true, DT::Beckmann)},
+};
+constexpr DiffuseSpec kTubeDiffuse[] = {
+    {"karis_eq16 (default)", {}},
+    {"ltc", {.tube_diffuse = TubeDiffuse::Ltc}},
+};
+constexpr SpecularSpec kTubeSpecular[] = {
+    {"eq. 19 + normalization (default)", {}},
+    {"eq. 19, no normalization", {.tube_normalization = false}},
+    {"eq. 18 + normalization", {.tube_specular = TubeSpecular::SmallestAngleEq18}},
+    {"eq. 18, no normalization",
+     {.tube_specular = TubeSpecular::SmallestAngleEq18, .tube_normalization = false}},
+    {"ltc", ltcOptions(VT::SmithGGXCorrelated, true, DT::GGX)},
+    {"eq. 19 + normalization, V smith_ggx_correlated", {.v = VT::SmithGGXCorrelated}},
+    {"ltc, V schlick_ggx (V ratio)", ltcOptions(VT::SchlickGGX, true, DT::GGX)},
+    {"ltc, V schlick_ggx (no V ratio)", ltcOptions(VT::SchlickGGX, false, DT::GGX)},
+    {"ltc, D beckmann", ltcOptions(VT::SchlickGGX, true, DT::Beckmann)},
+};
+static_assert(std::size(kSphereDiffuse) == kSphereDiffuseMethods &&
+              std::size(kSphereSpecular) == kSphereSpecularMethods &&
+              std::size(kTubeDiffuse) == kTubeDiffuseMethods &&
+              std::size(kTubeSpecular) == kTubeSpecularMethods);
+
+}  // namespace
+
 const std::vector<LightMethod>& sphereDiffuseMethods() {
-  static const std::vector<LightMethod> m = [] {
-    EngineLightOptions horizon;
-    horizon.sphere_diffuse = SphereDiffuse::HorizonCorrect;
-    return std::vector<LightMethod>{method("karis_point (default)", {}),
-                                    method("horizon_correct", horizon)};
-  }();
+  static const std::vector<LightMethod> m = methods(kSphereDiffuse);
   return m;
 }
-
 const std::vector<LightMethod>& sphereSpecularMethods() {
-  static const std::vector<LightMethod> m = [] {
-    EngineLightOptions plain, rp_smith;
-    plain.sphere_normalization = false;
-    rp_smith.v = VisibilityTerm::SmithGGXCorrelated;
-    using VT = VisibilityTerm;
-    return std::vector<LightMethod>{
-        method("representative point + normalization (default)", {}),
-        method("representative point, no normalization", plain),
-        method("ltc", ltcOptions(VT::SmithGGXCorrelated, true, DistributionTerm::GGX)),
-        method("representative point + normalization, V smith_ggx_correlated", rp_smith),
-        method("ltc, V schlick_ggx (V ratio)",
-               ltcOptions(VT::SchlickGGX, true, DistributionTerm::GGX)),
-        method("ltc, V schlick_ggx (no V ratio)",
-               ltcOptions(VT::SchlickGGX, false, DistributionTerm::GGX)),
-        method("ltc, D beckmann", ltcOptions(VT::SchlickGGX, true, DistributionTerm::Beckmann)),
-    };
-  }();
+  static const std::vector<LightMethod> m = methods(kSphereSpecular);
   return m;
 }
-
 const std::vector<LightMethod>& tubeDiffuseMethods() {
-  static const std::vector<LightMethod> m = [] {
-    EngineLightOptions ltc;
-    ltc.tube_diffuse = TubeDiffuse::Ltc;
-    return std::vector<LightMethod>{method("karis_eq16 (default)", {}), method("ltc", ltc)};
-  }();
+  static const std::vector<LightMethod> m = methods(kTubeDiffuse);
   return m;
 }
-
 const std::vector<LightMethod>& tubeSpecularMethods() {
-  static const std::vector<LightMethod> m = [] {
-    EngineLightOptions plain, eq18, eq18plain, rp_smith;
-    plain.tube_normalization = false;
-    eq18.tube_specular = TubeSpecular::SmallestAngleEq18;
-    eq18plain = eq18;
-    eq18plain.tube_normalization = false;
-    rp_smith.v = VisibilityTerm::SmithGGXCorrelated;
-    using VT = VisibilityTerm;
-    return std::vector<LightMethod>{
-        method("eq. 19 + normalization (default)", {}),
-        method("eq. 19, no normalization", plain),
-        method("eq. 18 + normalization", eq18),
-        method("eq. 18, no normalization", eq18plain),
-        method("ltc", ltcOptions(VT::SmithGGXCorrelated, true, DistributionTerm::GGX)),
-        method("eq. 19 + normalization, V smith_ggx_correlated", rp_smith),
-        method("ltc, V schlick_ggx (V ratio)",
-               ltcOptions(VT::SchlickGGX, true, DistributionTerm::GGX)),
-        method("ltc, V schlick_ggx (no V ratio)",
-               ltcOptions(VT::SchlickGGX, false, DistributionTerm::GGX)),
-        method("ltc, D beckmann", ltcOptions(VT::SchlickGGX, true, DistributionTerm::Beckmann)),
-    };
-  }();
+  static const std::vector<LightMethod> m = methods(kTubeSpecular);
   return m;
 }
 
@@ -310,13 +319,13 @@ void methodErrors(const std::vector<LightMethod>& dm, const std::vector<LightMet
                   std::vector<TermError>& specular) {
   for (const LightMethod& m : dm) {
     const ViewValues& r = ref.at(m.o);
-    diffuse.push_back(termError(engineAtViews(m.o, LightTerm::Diffuse, light, views, roughness),
-                                r.ref_d, r.ref_d_se));
+    diffuse.push_back(
+        termError(engineAtViews(m.variant, light, views, roughness), r.ref_d, r.ref_d_se));
   }
   for (const LightMethod& m : sm) {
     const ViewValues& r = ref.at(m.o);
-    specular.push_back(termError(engineAtViews(m.o, LightTerm::Specular, light, views, roughness),
-                                 r.ref_s, r.ref_s_se));
+    specular.push_back(
+        termError(engineAtViews(m.variant, light, views, roughness), r.ref_s, r.ref_s_se));
   }
 }
 

@@ -12,35 +12,26 @@
 
 #include <glm/glm.hpp>
 
+#include "halfvec/eval/light_variants.hpp"
 #include "halfvec/scene/scene.hpp"
 
 namespace hv::eval {
 
-enum class LightTerm { Diffuse, Specular };
-
-// The light options of RenderSettings that change the engine's sphere/tube formulas, and the
-// BRDF terms the engine and the reference both use (the LTC modes are fitted to GGX D and
-// height-correlated Smith V; docs/lights.md, "Other BRDF choices").
-struct EngineLightOptions {
-  SphereDiffuse sphere_diffuse = SphereDiffuse::KarisPoint;
-  bool sphere_normalization = true;
-  SphereSpecular sphere_specular = SphereSpecular::RepresentativePoint;
-  TubeSpecular tube_specular = TubeSpecular::ClosestPointEq19;
-  bool tube_normalization = true;
-  TubeDiffuse tube_diffuse = TubeDiffuse::KarisEq16;
-  DistributionTerm d = DistributionTerm::GGX;
-  VisibilityTerm v = VisibilityTerm::SchlickGGX;
-  bool ltc_v_ratio = true;  // lights.glsl HV_LTC_V_RATIO
-};
-
 // The engine's outgoing radiance toward V (unit, from P) from `light` for one term only
 // (HV_DIRECT_TERMS = 1 or 2), with HV_FALLOFF_PLUS_ONE = 0 and cavity 1: glsl::evaluateLight
-// compiled with the options of `o` (engine_lights.cpp). Throws std::logic_error for a combination
-// of options that engine_lights.cpp does not compile (compiledLightVariants lists them).
+// compiled as the entry `variant` of kEngineLightVariants (light_variants.hpp, engine_lights.cpp).
+glm::vec3 engineLightTerm(CompiledLightVariant variant, const Light& light, const glm::vec3& P,
+                          const glm::vec3& N, const glm::vec3& V, const glm::vec3& base_color,
+                          float metallic, float roughness);
+// The entry that runs `term` with options `o` (the options the term does not read match any
+// value). Throws std::invalid_argument naming the options and values that no entry has, and how
+// the nearest entry differs, for a combination that is not in kEngineLightVariants; a request
+// known at compile time uses compiledLightVariant instead, which does not compile then.
+CompiledLightVariant findLightVariant(LightTerm term, const EngineLightOptions& o);
+// The same for options chosen at run time: the term of the entry findLightVariant(term, o).
 glm::vec3 engineLightTerm(const EngineLightOptions& o, LightTerm term, const Light& light,
                           const glm::vec3& P, const glm::vec3& N, const glm::vec3& V,
                           const glm::vec3& base_color, float metallic, float roughness);
-std::vector<EngineLightOptions> compiledLightVariants(LightTerm term);
 
 // Monte Carlo value of the exact direct light of a sphere or tube light (the emitter of
 // docs/lights.md with the physical falloff) at P, split into diffuse and specular, each with its
@@ -82,10 +73,12 @@ TermError termError(const std::vector<double>& engine, const std::vector<double>
 std::vector<glm::vec3> sweepViews(const glm::vec3& light_dir, float footprint);
 
 // One way of shading one term, as the sweeps compare them; each is measured against the
-// reference of its own BRDF terms (o.d, o.v).
+// reference of its own BRDF terms (o.d, o.v). `variant` is the entry of kEngineLightVariants that
+// runs it, found at compile time (a method whose options are not compiled does not build).
 struct LightMethod {
   std::string name;
   EngineLightOptions o;
+  CompiledLightVariant variant;
 };
 // The sweeps' methods, in this order (the rows' vectors follow it).
 enum SphereDiffuseMethod { kSphereDiffuseKaris, kSphereDiffuseHorizon, kSphereDiffuseMethods };
