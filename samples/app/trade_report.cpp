@@ -93,10 +93,12 @@ std::string tradeCsv(const TradeReport& r) {
   return o.str();
 }
 
-std::string tradeMarkdown(const TradeReport& r, const std::string& prefix, int level) {
+namespace {
+
+// The paragraph under the heading: the size, what the time columns are, the reference's samples,
+// noise and left-out pixels, and what the error columns are.
+std::string methodParagraph(const TradeReport& r) {
   std::ostringstream o;
-  const std::string h(size_t(std::max(level, 1)), '#');
-  o << h << " " << sceneName(r) << " (`" << r.scene_path << "`)\n\n";
   o << r.width << "x" << r.height << ", GPU ms = median of " << r.frames * r.rounds << " frames ("
     << r.rounds << " rounds over all configurations of " << r.frames
     << " frames after a warm-up frame); x scene: the median over those frames of the row's frame "
@@ -124,6 +126,41 @@ std::string tradeMarkdown(const TradeReport& r, const std::string& prefix, int l
        "p99 rel. = its 99th percentile, worst 0.1% = the share of the squared error (what rel. "
        "RMSE is made of) carried by the worst 0.1% of pixels: near 1, rel. RMSE describes those "
        "pixels, not the image.\n\n";
+  return o.str();
+}
+
+// The last column: the front, within noise, the picks, non-finite pixels, the heat map.
+std::string rowFlags(const TradeReport& r, size_t i, const std::string& prefix) {
+  const TradeRow& row = r.rows[i];
+  std::string flags;
+  if (row.pareto) flags += "front ";
+  if (row.within_noise) flags += "~ ";
+  if (int(i) == r.cheapest_within_error) flags += "cheapest ";
+  if (int(i) == r.most_accurate_within_ms) flags += "most-accurate ";
+  if (row.nonfinite) flags += "NaN/Inf:" + std::to_string(row.nonfinite) + " ";
+  if (!row.heatmap.empty()) flags += "[heat map](" + prefix + row.heatmap + ")";
+  return flags;
+}
+
+// "x scene (95%)" (the scene row is 1) and "its passes x scene (95%)" ("frame" where the option
+// has no passes of its own).
+std::string costCell(const TradeRow& row, size_t i) {
+  if (i == 0) return "1";
+  return fmtNum(row.cost_ratio, "%.2f") + " (" + fmtNum(row.cost_lo, "%.2f") + "-" +
+         fmtNum(row.cost_hi, "%.2f") + ")" + (row.same_cost ? " same cost" : "");
+}
+
+std::string passCostCell(const TradeRow& row, size_t i) {
+  if (i == 0) return "1";
+  if (row.cost_passes.empty()) return "frame";
+  std::string s;
+  for (const std::string& p : row.cost_passes) s += (s.empty() ? "" : "+") + p;
+  return s + " " + fmtNum(row.pass_cost_ratio, "%.2f") + " (" + fmtNum(row.pass_cost_lo, "%.2f") +
+         "-" + fmtNum(row.pass_cost_hi, "%.2f") + ")" + (row.pass_same_cost ? " same cost" : "");
+}
+
+std::string rowTable(const TradeReport& r, const std::string& prefix) {
+  std::ostringstream o;
   const auto passes = passNames(r);
   o << "| configuration |";
   for (const auto& p : passes) o << " " << p << " ms |";
@@ -137,34 +174,18 @@ std::string tradeMarkdown(const TradeReport& r, const std::string& prefix, int l
     for (const auto& a : row.config.aliases) name += " = `" + a + "`";
     o << "| " << name << " |";
     for (const auto& p : passes) o << " " << fmtNum(passMs(row, p), "%.3f") << " |";
-    std::string flags;
-    if (row.pareto) flags += "front ";
-    if (row.within_noise) flags += "~ ";
-    if (int(i) == r.cheapest_within_error) flags += "cheapest ";
-    if (int(i) == r.most_accurate_within_ms) flags += "most-accurate ";
-    if (row.nonfinite) flags += "NaN/Inf:" + std::to_string(row.nonfinite) + " ";
-    if (!row.heatmap.empty()) flags += "[heat map](" + prefix + row.heatmap + ")";
-    const std::string cost =
-        i == 0 ? std::string("1")
-               : fmtNum(row.cost_ratio, "%.2f") + " (" + fmtNum(row.cost_lo, "%.2f") + "-" +
-                     fmtNum(row.cost_hi, "%.2f") + ")" + (row.same_cost ? " same cost" : "");
-    std::string pass_cost = "frame";
-    if (i == 0) {
-      pass_cost = "1";
-    } else if (!row.cost_passes.empty()) {
-      pass_cost.clear();
-      for (const std::string& p : row.cost_passes) pass_cost += (pass_cost.empty() ? "" : "+") + p;
-      pass_cost += " " + fmtNum(row.pass_cost_ratio, "%.2f") + " (" +
-                   fmtNum(row.pass_cost_lo, "%.2f") + "-" + fmtNum(row.pass_cost_hi, "%.2f") + ")" +
-                   (row.pass_same_cost ? " same cost" : "");
-    }
-    o << " " << fmtNum(row.total_ms, "%.3f") << " | " << cost << " | " << pass_cost << " | "
-      << fmtNum(row.error.mean_rel, "%.4f") << " | " << fmtNum(row.error.p99_rel, "%.4f") << " | "
-      << fmtNum(100.0 * row.error.top_share, "%.1f") << "% | " << fmtNum(row.error.rel_rmse, "%.4f")
-      << " | " << fmtNum(row.bias_rel_rmse, "%.4f") << " | " << fmtNum(row.error.max_abs, "%.3g")
-      << " | " << flags << " |\n";
+    o << " " << fmtNum(row.total_ms, "%.3f") << " | " << costCell(row, i) << " | "
+      << passCostCell(row, i) << " | " << fmtNum(row.error.mean_rel, "%.4f") << " | "
+      << fmtNum(row.error.p99_rel, "%.4f") << " | " << fmtNum(100.0 * row.error.top_share, "%.1f")
+      << "% | " << fmtNum(row.error.rel_rmse, "%.4f") << " | " << fmtNum(row.bias_rel_rmse, "%.4f")
+      << " | " << fmtNum(row.error.max_abs, "%.3g") << " | " << rowFlags(r, i, prefix) << " |\n";
   }
-  o << "\n";
+  return o.str();
+}
+
+// The two picks (or that none qualifies) and the options that do not apply to the scene.
+std::string picks(const TradeReport& r) {
+  std::ostringstream o;
   if (r.cheapest_within_error >= 0) {
     const TradeRow& c = r.rows[size_t(r.cheapest_within_error)];
     o << "- Cheapest within mean rel. error <= " << fmtNum(r.max_error, "%g") << ": `"
@@ -182,6 +203,16 @@ std::string tradeMarkdown(const TradeReport& r, const std::string& prefix, int l
     o << "- No configuration renders within " << fmtNum(r.max_ms, "%.3f") << " ms.\n";
   }
   for (const std::string& s : r.skipped) o << "- Not applicable: " << s << ".\n";
+  return o.str();
+}
+
+}  // namespace
+
+std::string tradeMarkdown(const TradeReport& r, const std::string& prefix, int level) {
+  std::ostringstream o;
+  const std::string h(size_t(std::max(level, 1)), '#');
+  o << h << " " << sceneName(r) << " (`" << r.scene_path << "`)\n\n";
+  o << methodParagraph(r) << rowTable(r, prefix) << "\n" << picks(r);
   o << "\n![error vs time, " << sceneName(r) << "](" << prefix << "plot.png)\n";
   return o.str();
 }
