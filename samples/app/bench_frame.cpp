@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "app/bench_report.hpp"
 #include "app/commands.hpp"
 #include "halfvec/core/output_files.hpp"
 #include "halfvec/eval/bench.hpp"
@@ -187,7 +188,7 @@ int benchFrame(const FrameBenchOptions& o) {
       md +=
           "each cell: median GPU ms (median over frames of pass ms / floor ms of the same "
           "frame).\n\n" +
-          eval::frameCostMarkdown(costs);
+          frameCostMarkdown(costs);
     }
     std::ofstream(report_tmp) << md;
     outputs.commit();

@@ -93,10 +93,12 @@ std::string tradeCsv(const TradeReport& r) {
   return o.str();
 }
 
-std::string tradeMarkdown(const TradeReport& r, const std::string& prefix, int level) {
+namespace {
+
+// The paragraph under the heading: the size, what the time columns are, the reference's samples,
+// noise and left-out pixels, and what the error columns are.
+std::string methodParagraph(const TradeReport& r) {
   std::ostringstream o;
-  const std::string h(size_t(std::max(level, 1)), '#');
-  o << h << " " << sceneName(r) << " (`" << r.scene_path << "`)\n\n";
   o << r.width << "x" << r.height << ", GPU ms = median of " << r.frames * r.rounds << " frames ("
     << r.rounds << " rounds over all configurations of " << r.frames
     << " frames after a warm-up frame); x scene: the median over those frames of the row's frame "
@@ -124,6 +126,41 @@ std::string tradeMarkdown(const TradeReport& r, const std::string& prefix, int l
        "p99 rel. = its 99th percentile, worst 0.1% = the share of the squared error (what rel. "
        "RMSE is made of) carried by the worst 0.1% of pixels: near 1, rel. RMSE describes those "
        "pixels, not the image.\n\n";
+  return o.str();
+}
+
+// The last column: the front, within noise, the picks, non-finite pixels, the heat map.
+std::string rowFlags(const TradeReport& r, size_t i, const std::string& prefix) {
+  const TradeRow& row = r.rows[i];
+  std::string flags;
+  if (row.pareto) flags += "front ";
+  if (row.within_noise) flags += "~ ";
+  if (int(i) == r.cheapest_within_error) flags += "cheapest ";
+  if (int(i) == r.most_accurate_within_ms) flags += "most-accurate ";
+  if (row.nonfinite) flags += "NaN/Inf:" + std::to_string(row.nonfinite) + " ";
+  if (!row.heatmap.empty()) flags += "[heat map](" + prefix + row.heatmap + ")";
+  return flags;
+}
+
+// "x scene (95%)" (the scene row is 1) and "its passes x scene (95%)" ("frame" where the option
+// has no passes of its own).
+std::string costCell(const TradeRow& row, size_t i) {
+  if (i == 0) return "1";
+  return fmtNum(row.cost_ratio, "%.2f") + " (" + fmtNum(row.cost_lo, "%.2f") + "-" +
+         fmtNum(row.cost_hi, "%.2f") + ")" + (row.same_cost ? " same cost" : "");
+}
+
+std::string passCostCell(const TradeRow& row, size_t i) {
+  if (i == 0) return "1";
+  if (row.cost_passes.empty()) return "frame";
+  std::string s;
+  for (const std::string& p : row.cost_passes) s += (s.empty() ? "" : "+") + p;
+  return s + " " + fmtNum(row.pass_cost_ratio, "%.2f") + " (" + fmtNum(row.pass_cost_lo, "%.2f") +
+         "-" + fmtNum(row.pass_cost_hi, "%.2f") + ")" + (row.pass_same_cost ? " same cost" : "");
+}
+
+std::string rowTable(const TradeReport& r, const std::string& prefix) {
+  std::ostringstream o;
   const auto passes = passNames(r);
   o << "| configuration |";
   for (const auto& p : passes) o << " " << p << " ms |";
@@ -137,34 +174,18 @@ std::string tradeMarkdown(const TradeReport& r, const std::string& prefix, int l
     for (const auto& a : row.config.aliases) name += " = `" + a + "`";
     o << "| " << name << " |";
     for (const auto& p : passes) o << " " << fmtNum(passMs(row, p), "%.3f") << " |";
-    std::string flags;
-    if (row.pareto) flags += "front ";
-    if (row.within_noise) flags += "~ ";
-    if (int(i) == r.cheapest_within_error) flags += "cheapest ";
-    if (int(i) == r.most_accurate_within_ms) flags += "most-accurate ";
-    if (row.nonfinite) flags += "NaN/Inf:" + std::to_string(row.nonfinite) + " ";
-    if (!row.heatmap.empty()) flags += "[heat map](" + prefix + row.heatmap + ")";
-    const std::string cost =
-        i == 0 ? std::string("1")
-               : fmtNum(row.cost_ratio, "%.2f") + " (" + fmtNum(row.cost_lo, "%.2f") + "-" +
-                     fmtNum(row.cost_hi, "%.2f") + ")" + (row.same_cost ? " same cost" : "");
-    std::string pass_cost = "frame";
-    if (i == 0) {
-      pass_cost = "1";
-    } else if (!row.cost_passes.empty()) {
-      pass_cost.clear();
-      for (const std::string& p : row.cost_passes) pass_cost += (pass_cost.empty() ? "" : "+") + p;
-      pass_cost += " " + fmtNum(row.pass_cost_ratio, "%.2f") + " (" +
-                   fmtNum(row.pass_cost_lo, "%.2f") + "-" + fmtNum(row.pass_cost_hi, "%.2f") + ")" +
-                   (row.pass_same_cost ? " same cost" : "");
-    }
-    o << " " << fmtNum(row.total_ms, "%.3f") << " | " << cost << " | " << pass_cost << " | "
-      << fmtNum(row.error.mean_rel, "%.4f") << " | " << fmtNum(row.error.p99_rel, "%.4f") << " | "
-      << fmtNum(100.0 * row.error.top_share, "%.1f") << "% | " << fmtNum(row.error.rel_rmse, "%.4f")
-      << " | " << fmtNum(row.bias_rel_rmse, "%.4f") << " | " << fmtNum(row.error.max_abs, "%.3g")
-      << " | " << flags << " |\n";
+    o << " " << fmtNum(row.total_ms, "%.3f") << " | " << costCell(row, i) << " | "
+      << passCostCell(row, i) << " | " << fmtNum(row.error.mean_rel, "%.4f") << " | "
+      << fmtNum(row.error.p99_rel, "%.4f") << " | " << fmtNum(100.0 * row.error.top_share, "%.1f")
+      << "% | " << fmtNum(row.error.rel_rmse, "%.4f") << " | " << fmtNum(row.bias_rel_rmse, "%.4f")
+      << " | " << fmtNum(row.error.max_abs, "%.3g") << " | " << rowFlags(r, i, prefix) << " |\n";
   }
-  o << "\n";
+  return o.str();
+}
+
+// The two picks (or that none qualifies) and the options that do not apply to the scene.
+std::string picks(const TradeReport& r) {
+  std::ostringstream o;
   if (r.cheapest_within_error >= 0) {
     const TradeRow& c = r.rows[size_t(r.cheapest_within_error)];
     o << "- Cheapest within mean rel. error <= " << fmtNum(r.max_error, "%g") << ": `"
@@ -182,6 +203,16 @@ std::string tradeMarkdown(const TradeReport& r, const std::string& prefix, int l
     o << "- No configuration renders within " << fmtNum(r.max_ms, "%.3f") << " ms.\n";
   }
   for (const std::string& s : r.skipped) o << "- Not applicable: " << s << ".\n";
+  return o.str();
+}
+
+}  // namespace
+
+std::string tradeMarkdown(const TradeReport& r, const std::string& prefix, int level) {
+  std::ostringstream o;
+  const std::string h(size_t(std::max(level, 1)), '#');
+  o << h << " " << sceneName(r) << " (`" << r.scene_path << "`)\n\n";
+  o << methodParagraph(r) << rowTable(r, prefix) << "\n" << picks(r);
   o << "\n![error vs time, " << sceneName(r) << "](" << prefix << "plot.png)\n";
   return o.str();
 }
@@ -223,34 +254,36 @@ from the tables below:
 
 | preset | sets | why (rows of the tables below) |
 |---|---|---|
-| `fast` | Karis 2013 defaults, `env_brdf: analytic` | the analytic fit removes a texture fetch; its relative RMSE is up to 8% above the table's (default), within 1% elsewhere (`env_brdf=analytic` rows) |
+| `fast` | Karis 2013 defaults, `env_brdf: analytic` | the analytic fit removes a texture fetch, at the error of the `env_brdf=analytic` rows (against the scene rows, which use the table by default) |
 | `balanced` | Karis 2013 defaults, `irradiance: cubemap` | the irradiance cube map's error is equal to or lower than SH9's on every sample scene (`irradiance=cubemap` rows), for one more fetch |
 | `accurate` | `balanced` + `falloff_plus_one: false`, `sphere_diffuse: horizon_correct`, `sphere_specular`, `tube_specular`, `tube_diffuse: ltc` | the inverse-square law is the emitter's true falloff: the largest single gain where lights are close to surfaces (`falloff_plus_one=false`, many_lights); the horizon-correct sphere diffuse is exact for a Lambertian lobe (docs/lights.md), equal or better in every table, at no measurable cost. The `ltc` sphere and tube methods have the lowest median and worst error of each light method on the accuracy sweeps (the "Summary" table of docs/accuracy.md, regenerated by `halfvec accuracy`; `sphere_specular=ltc`, `tube_specular=ltc`, `tube_diffuse=ltc` rows for the scenes). The eq. 18 tube point is not taken: it measured slightly worse than eq. 19 (`tube_specular=smallest_angle_eq18` rows) |
 
-All presets keep `sphere_normalization` and `tube_normalization` on: turning sphere
-normalization off gives by far the largest error on every scene with sphere lights except
-many_lights (where it is neutral); turning tube normalization off changes the sample scenes'
-error by about 1% either way, but on the accuracy sweeps (docs/accuracy.md) it makes thin tubes'
-highlights up to 120x too bright. `accurate` keeps Schlick's V with the Disney remap rather than
-the exact configuration's height-correlated V without remap. With the scene's own settings (and `fast` and
-`balanced`), the relative RMSE on the sample scenes is dominated by highlight pixels where the
-representative-point sphere and tube specular is several times brighter than the reference (the
-chrome spheres of default, the roughness-0.05 spheres of sphere_grid, the glossy floor of
-area_lights). `accurate`'s `ltc` methods remove most of that: its relative RMSE is below the
-scene's settings' on every sample scene (the "Measured" table). gltf's relative RMSE barely
-moves: it is carried by a few pixels of ambient specular, the sky's sun reflected in the helmet
-(the "worst 0.1%" column and the max abs column), which no light option changes. With the representative point, rows whose terms darken glossy highlights can score a
-lower error by offsetting the overestimate, which is no reason to choose them.
+All presets keep `sphere_normalization` and `tube_normalization` on: turning sphere normalization
+off gives by far the largest error on every scene with sphere lights except many_lights (where it is
+neutral); turning tube normalization off changes the sample scenes' error little either way
+(`tube_normalization=false` rows), but on the accuracy sweeps it makes thin tubes' highlights many
+times too bright (the "eq. 19, no normalization" row of the "Summary" table of docs/accuracy.md).
+`accurate` keeps Schlick's V with the Disney remap rather than the exact configuration's
+height-correlated V without remap. With the scene's own settings (and `fast` and `balanced`), the
+relative RMSE on the sample scenes is dominated by highlight pixels where the representative-point
+sphere and tube specular is several times brighter than the reference (the chrome spheres of
+default, the roughness-0.05 spheres of sphere_grid, the glossy floor of area_lights). `accurate`'s
+`ltc` methods remove most of that: its relative RMSE is below the scene's settings' on every sample
+scene (the "Measured" table). gltf's relative RMSE barely moves: it is carried by a few pixels of
+ambient specular, the sky's sun reflected in the helmet (the "worst 0.1%" column and the max abs
+column), which no light option changes. With the representative point, rows whose terms darken
+glossy highlights can score a lower error by offsetting the overestimate, which is no reason to
+choose them.
 
 Times: the "x scene" column is each row's frame time over the scene row's, frame by frame within
 a round, with its 95% interval over one run's frames; "same cost" marks rows whose interval
 includes 1. "its passes x scene" is the same ratio over only the passes the option changes (the
 light pass for BRDF and light options, culling and the light pass for culling, the ambient pass
 for environment options), so that the rest of the frame's noise does not hide it. On llvmpipe
-these verdicts are not stable from run to run for differences below about 1.3x, more so when the
-machine is busy: read a ratio whose interval is wide as unmeasured. The `ltc` light modes are the
-one large cost; `halfvec bench --methods` measures their light pass alone, per light type, from
-interleaved frames (docs/lights.md).
+these verdicts are not stable from run to run for small differences, more so when the machine is
+busy: read a ratio whose interval is wide as unmeasured. The `ltc` light modes are the one large
+cost; `halfvec bench --methods` measures their light pass alone, per light type, from interleaved
+frames (docs/lights.md).
 )";
 }
 

@@ -69,7 +69,6 @@ TEST(Bench, FrameCostReportsEveryPassAgainstTheFloor) {
   EXPECT_EQ(c.frame.pass, "frame");
   EXPECT_GT(c.frame.ms, 0.0);
   EXPECT_GT(sum, 0.0);
-  EXPECT_NE(hv::eval::frameCostMarkdown({c}).find("| tiny |"), std::string::npos);
 }
 
 // bench --frame --vs-brute: both renderers run every round (one ratio per round), whatever the

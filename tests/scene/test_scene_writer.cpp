@@ -115,6 +115,35 @@ TEST(SceneWriter, EditsReplaceInsertAndEraseInPlace) {
   EXPECT_THROW(applyJsonEdits("{\"a\": ", {{"/a", 1, false}}, "t.json"), SceneError);
 }
 
+// Erasing cuts the member with one separator: the one before it, or after it for the first
+// member; the only member leaves its braces empty. Arrays alike.
+TEST(SceneWriter, EraseKeepsTheSeparatorsRight) {
+  auto erase = [](const std::string& text, const char* pointer) {
+    return applyJsonEdits(text, {{pointer, nullptr, true}}, "t.json");
+  };
+  EXPECT_EQ(erase(R"({"a": 1, "b": 2, "c": 3})", "/a"), R"({"b": 2, "c": 3})");
+  EXPECT_EQ(erase(R"({"a": 1, "b": 2, "c": 3})", "/b"), R"({"a": 1, "c": 3})");
+  EXPECT_EQ(erase(R"({"a": 1, "b": 2, "c": 3})", "/c"), R"({"a": 1, "b": 2})");
+  EXPECT_EQ(erase(R"({"s": {"x": 1}})", "/s/x"), R"({"s": {}})");
+  EXPECT_EQ(erase(R"({"l": [1, 2, 3]})", "/l/1"), R"({"l": [1, 3]})");
+  EXPECT_EQ(erase(R"({"l": [1, 2, 3]})", "/l/0"), R"({"l": [2, 3]})");
+  EXPECT_EQ(erase(R"({"a": 1})", "/missing"), R"({"a": 1})");  // nothing to remove
+}
+
+// A key added to an empty object becomes its only member, with any missing objects below it;
+// a replaced value keeps the text around it.
+TEST(SceneWriter, InsertIntoAnEmptyObjectAndReplace) {
+  auto set = [](const std::string& text, const char* pointer, const nlohmann::ordered_json& v) {
+    return applyJsonEdits(text, {{pointer, v, false}}, "t.json");
+  };
+  EXPECT_EQ(set(R"({"s": {}})", "/s/k", 1), R"({"s": {"k": 1}})");
+  EXPECT_EQ(set(R"({"s": {}})", "/s/a/b", 2), R"({"s": {"a": {"b": 2}}})");
+  EXPECT_EQ(set(R"({"s": {"k": 1}, "t": 0})", "/s/k", "x"), R"({"s": {"k": "x"}, "t": 0})");
+  EXPECT_EQ(set(R"({"s": {"k": 1}})", "/s", nlohmann::ordered_json::array({1, 2})),
+            R"({"s": [1, 2]})");
+  EXPECT_THROW(set(R"({"s": 1})", "", 2), SceneError);  // the whole document
+}
+
 // Every sample: saved without edits the file is byte-identical; with a material, a light, the
 // environment and a setting edited, only those values change, and it loads as the edited scene.
 TEST(SceneWriter, RoundTripOnEverySample) {

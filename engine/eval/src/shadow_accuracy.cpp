@@ -139,111 +139,159 @@ double penumbraWidth(const ShadowProfile& p) {
   return nan;
 }
 
-ShadowCaseResult measureShadowCase(const ShadowCase& c, const ShadowCaseOptions& o) {
-  ShadowCaseResult res;
-  res.c = c;
-  const int n = o.size;
-  Scene scene = shadowCaseScene(c, ShadowFilter::Pcss, o.map_size);
-  // The reference with and without visibility from the same G-buffer and seed: the unshadowed
-  // value shares the samples' noise.
+namespace {
+
+// The reference's direct diffuse with and without visibility, from the same G-buffer and seed:
+// the unshadowed value shares the samples' noise.
+struct ReferenceDiffuse {
   GBufferReadback g;
+  ImageRGBf shadowed, unshadowed, shadowed_se;
+};
+
+ReferenceDiffuse referenceDiffuse(const Scene& scene, const ShadowCase& c,
+                                  const ShadowCaseOptions& o) {
+  ReferenceDiffuse d;
   {
     render::Renderer r;
     r.setScene(scene);
-    r.render(n, n);
-    g = r.readGBuffer();
+    r.render(o.size, o.size);
+    d.g = r.readGBuffer();
   }
   ReferenceOptions ro;
   // A capsule's reference converges slower (its samples spread along the segment): 4x.
   ro.samples = c.light_length > 0.0f ? 4 * o.samples : o.samples;
   ro.threads = o.threads;
   ro.visibility = true;
-  const ReferenceResult ref_on = renderReference(scene, g, ro);
+  const ReferenceResult on = renderReference(scene, d.g, ro);
   ro.visibility = false;
-  const ReferenceResult ref_off = renderReference(scene, g, ro);
-  const ImageRGBf& R = ref_on[ReferenceAov::DirectDiffuse];
-  const ImageRGBf& U = ref_off[ReferenceAov::DirectDiffuse];
-  const ImageRGBf& Rse = ref_on.stdError(ReferenceAov::DirectDiffuse);
+  const ReferenceResult off = renderReference(scene, d.g, ro);
+  d.shadowed = on[ReferenceAov::DirectDiffuse];
+  d.unshadowed = off[ReferenceAov::DirectDiffuse];
+  d.shadowed_se = on.stdError(ReferenceAov::DirectDiffuse);
+  return d;
+}
 
+// Each pixel's point on the floor plane, and whether it is measured: the floor (not the
+// occluder, told apart by its albedo), lit when nothing shadows it.
+struct FloorPixels {
+  std::vector<glm::vec3> point;
+  std::vector<bool> use;
+};
+
+FloorPixels floorPixels(const Scene& scene, const ReferenceDiffuse& ref, int n) {
   const glm::mat4 inv = referenceInvViewProj(scene.camera, n, n);
-  std::vector<glm::vec3> floor(size_t(n) * size_t(n));
-  std::vector<bool> on_floor(floor.size());
+  FloorPixels fp;
+  fp.point.resize(size_t(n) * size_t(n));
+  fp.use.resize(fp.point.size());
   for (int y = 0; y < n; ++y) {
     for (int x = 0; x < n; ++x) {
       const size_t i = size_t(y) * size_t(n) + size_t(x);
-      floor[i] = floorPoint(inv, n, n, x, y);
-      on_floor[i] = g.model[i] == uint32_t(ShadingModel::DefaultLit) &&
-                    g.base_color[i].x > 0.5f * (kFloorAlbedo + kOccluderAlbedo) &&
-                    sum3(U.px[i]) > 0.0f;
+      fp.point[i] = floorPoint(inv, n, n, x, y);
+      fp.use[i] = ref.g.model[i] == uint32_t(ShadingModel::DefaultLit) &&
+                  ref.g.base_color[i].x > 0.5f * (kFloorAlbedo + kOccluderAlbedo) &&
+                  sum3(ref.unshadowed.px[i]) > 0.0f;
     }
   }
+  return fp;
+}
+
+ImageRGBf engineDiffuse(const Scene& scene, int n) {
+  render::Renderer r;
+  r.setScene(scene);
+  return renderEngineAovs(r, n, n)[size_t(ReferenceAov::DirectDiffuse)];
+}
+
+// sum |E - R| / sum R over the measured floor pixels.
+double meanRelError(const ImageRGBf& e, const ImageRGBf& ref, const std::vector<bool>& use) {
+  double abs_sum = 0.0, ref_sum = 0.0;
+  for (size_t i = 0; i < use.size(); ++i) {
+    if (!use[i]) continue;
+    abs_sum += std::abs(double(sum3(e.px[i])) - sum3(ref.px[i]));
+    ref_sum += sum3(ref.px[i]);
+  }
+  return ref_sum > 0.0 ? abs_sum / ref_sum : 0.0;
+}
+
+// A shadowed frame's sums over the pixels that are lit or in a penumbra (by the engine's ratio
+// to its own unshadowed frame or by the reference's); the umbra of both is left out.
+struct ShadowSums {
+  double abs = 0.0, ref = 0.0, pen_abs = 0.0, pen_ref = 0.0, se = 0.0;
+  size_t pixels = 0, pen_pixels = 0;
+};
+
+ShadowSums shadowSums(const ImageRGBf& E, const ImageRGBf& EU, const ReferenceDiffuse& ref,
+                      const std::vector<bool>& use) {
+  ShadowSums s;
+  for (size_t i = 0; i < use.size(); ++i) {
+    if (!use[i]) continue;
+    const double e = sum3(E.px[i]), rv = sum3(ref.shadowed.px[i]), u = sum3(ref.unshadowed.px[i]);
+    const double re = e / std::max(double(sum3(EU.px[i])), 1e-30), rr = rv / u;
+    if (std::max(re, rr) < kUmbra) continue;
+    ++s.pixels;
+    s.abs += std::abs(e - rv);
+    s.ref += rv;
+    s.se += sum3(ref.shadowed_se.px[i]);
+    const bool pen = (re > kUmbra && re < 1.0 - kUmbra) || (rr > kUmbra && rr < 1.0 - kUmbra);
+    if (!pen) continue;
+    ++s.pen_pixels;
+    s.pen_abs += std::abs(e - rv);
+    s.pen_ref += rv;
+  }
+  return s;
+}
+
+// Per bin: the engine's shadowed mean against the reference's (the engine's unshadowed profile
+// is its denominator in fe.profile; the error is of the shadowed values).
+void worstBin(ShadowFilterError& fe, const ShadowProfile& rp) {
+  for (size_t k = 0; k < rp.rho.size(); ++k) {
+    if (rp.pixels[k] == 0 || rp.shadowed[k] < 0.1 * rp.unlit[k]) continue;
+    const double err = std::abs(fe.profile.shadowed[k] - rp.shadowed[k]) / rp.shadowed[k];
+    if (err > fe.worst_rel) {
+      fe.worst_rel = err;
+      fe.worst_rho = rp.rho[k];
+    }
+  }
+}
+
+}  // namespace
+
+ShadowCaseResult measureShadowCase(const ShadowCase& c, const ShadowCaseOptions& o) {
+  ShadowCaseResult res;
+  res.c = c;
+  const int n = o.size;
+  Scene scene = shadowCaseScene(c, ShadowFilter::Pcss, o.map_size);
+  const ReferenceDiffuse ref = referenceDiffuse(scene, c, o);
+  const FloorPixels floor = floorPixels(scene, ref, n);
   // A pixel's footprint: the floor straight under the camera, 90-degree field.
   const float S = 2.0f * scene.camera.position.y;
   res.pixel_metres = double(S) / double(n);
   const float bin = float(res.pixel_metres), rho_max = 1.2f * S;
-  res.reference_profile = makeProfile(floor, on_floor, R, U, bin, rho_max);
+  res.reference_profile =
+      makeProfile(floor.point, floor.use, ref.shadowed, ref.unshadowed, bin, rho_max);
   res.reference_width = penumbraWidth(res.reference_profile);
 
   // The engine without shadows: the shading's own error, and the shadowed frames' denominator.
-  ImageRGBf EU;
-  {
-    Scene unshadowed = scene;
-    unshadowed.lights[0].shadows = false;
-    render::Renderer r;
-    r.setScene(unshadowed);
-    EU = renderEngineAovs(r, n, n)[size_t(ReferenceAov::DirectDiffuse)];
-    double abs_sum = 0.0, ref_sum = 0.0;
-    for (size_t i = 0; i < floor.size(); ++i) {
-      if (!on_floor[i]) continue;
-      abs_sum += std::abs(double(sum3(EU.px[i])) - sum3(U.px[i]));
-      ref_sum += sum3(U.px[i]);
-    }
-    res.unshadowed_mean_rel = ref_sum > 0.0 ? abs_sum / ref_sum : 0.0;
-  }
+  Scene unshadowed = scene;
+  unshadowed.lights[0].shadows = false;
+  const ImageRGBf EU = engineDiffuse(unshadowed, n);
+  res.unshadowed_mean_rel = meanRelError(EU, ref.unshadowed, floor.use);
+
   for (ShadowFilter f : {ShadowFilter::Hard, ShadowFilter::Pcf, ShadowFilter::Pcss}) {
     scene.settings.shadow_filter = f;
-    render::Renderer r;
-    r.setScene(scene);
-    const ImageRGBf E = renderEngineAovs(r, n, n)[size_t(ReferenceAov::DirectDiffuse)];
+    const ImageRGBf E = engineDiffuse(scene, n);
+    const ShadowSums s = shadowSums(E, EU, ref, floor.use);
     ShadowFilterError fe;
     fe.filter = f;
-    double abs_sum = 0.0, ref_sum = 0.0, pen_abs = 0.0, pen_ref = 0.0, se_sum = 0.0;
-    size_t pixels = 0, pen_pixels = 0;
-    for (size_t i = 0; i < floor.size(); ++i) {
-      if (!on_floor[i]) continue;
-      const double e = sum3(E.px[i]), rv = sum3(R.px[i]), u = sum3(U.px[i]);
-      const double re = e / std::max(double(sum3(EU.px[i])), 1e-30), rr = rv / u;
-      if (std::max(re, rr) < kUmbra) continue;
-      ++pixels;
-      abs_sum += std::abs(e - rv);
-      ref_sum += rv;
-      se_sum += sum3(Rse.px[i]);
-      const bool pen = (re > kUmbra && re < 1.0 - kUmbra) || (rr > kUmbra && rr < 1.0 - kUmbra);
-      if (!pen) continue;
-      ++pen_pixels;
-      pen_abs += std::abs(e - rv);
-      pen_ref += rv;
-    }
-    fe.mean_rel = ref_sum > 0.0 ? abs_sum / ref_sum : 0.0;
-    fe.penumbra_mean_rel = pen_ref > 0.0 ? pen_abs / pen_ref : 0.0;
+    fe.mean_rel = s.ref > 0.0 ? s.abs / s.ref : 0.0;
+    fe.penumbra_mean_rel = s.pen_ref > 0.0 ? s.pen_abs / s.pen_ref : 0.0;
     if (f == ShadowFilter::Pcss) {
-      res.pixels = pixels;
-      res.penumbra_pixels = pen_pixels;
-      res.reference_noise = ref_sum > 0.0 ? se_sum / ref_sum : 0.0;
+      res.pixels = s.pixels;
+      res.penumbra_pixels = s.pen_pixels;
+      res.reference_noise = s.ref > 0.0 ? s.se / s.ref : 0.0;
     }
-    fe.profile = makeProfile(floor, on_floor, E, EU, bin, rho_max);
+    fe.profile = makeProfile(floor.point, floor.use, E, EU, bin, rho_max);
     fe.width = penumbraWidth(fe.profile);
-    const ShadowProfile& rp = res.reference_profile;
-    // Per bin: the engine's shadowed mean against the reference's (the engine's unshadowed
-    // profile is its denominator in fe.profile; the error is of the shadowed values).
-    for (size_t k = 0; k < rp.rho.size(); ++k) {
-      if (rp.pixels[k] == 0 || rp.shadowed[k] < 0.1 * rp.unlit[k]) continue;
-      const double err = std::abs(fe.profile.shadowed[k] - rp.shadowed[k]) / rp.shadowed[k];
-      if (err > fe.worst_rel) {
-        fe.worst_rel = err;
-        fe.worst_rho = rp.rho[k];
-      }
-    }
+    worstBin(fe, res.reference_profile);
     res.filters.push_back(std::move(fe));
   }
   return res;

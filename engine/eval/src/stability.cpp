@@ -105,50 +105,62 @@ void addOcclusionScene(Scene& s) {
                 s.camera.position + glm::vec3(0.02f, 0.015f, -s.camera.near_plane));
 }
 
-std::vector<Option> options(bool small) {
-  std::vector<Option> o = {{"default", [](RenderSettings&) {}}};
-  auto add = [&](std::string n, std::function<void(RenderSettings&)> f) {
-    o.push_back({std::move(n), std::move(f)});
-  };
+void add(std::vector<Option>& o, std::string name, std::function<void(RenderSettings&)> f) {
+  o.push_back({std::move(name), std::move(f)});
+}
+
+// Each BRDF term's other values (D, V, F, diffuse) and the roughness remap off.
+void addBrdfOptions(std::vector<Option>& o) {
   for (auto d : {DistributionTerm::Beckmann, DistributionTerm::BlinnPhong}) {
-    add(std::string("d=") + std::string(toString(d)), [d](RenderSettings& s) { s.d = d; });
+    add(o, std::string("d=") + std::string(toString(d)), [d](RenderSettings& s) { s.d = d; });
   }
   for (int v = 1; v <= static_cast<int>(VisibilityTerm::Implicit); ++v) {
     const auto vt = static_cast<VisibilityTerm>(v);
-    add(std::string("v=") + std::string(toString(vt)), [vt](RenderSettings& s) { s.v = vt; });
+    add(o, std::string("v=") + std::string(toString(vt)), [vt](RenderSettings& s) { s.v = vt; });
   }
   for (int f = 1; f <= static_cast<int>(FresnelTerm::SchlickF90Occlusion); ++f) {
     const auto ft = static_cast<FresnelTerm>(f);
-    add(std::string("f=") + std::string(toString(ft)), [ft](RenderSettings& s) { s.f = ft; });
+    add(o, std::string("f=") + std::string(toString(ft)), [ft](RenderSettings& s) { s.f = ft; });
   }
-  add("diffuse=burley", [](RenderSettings& s) { s.diffuse = DiffuseTerm::Burley; });
-  add("remap_roughness=false", [](RenderSettings& s) { s.remap_roughness = false; });
-  add("falloff_plus_one=false", [](RenderSettings& s) { s.falloff_plus_one = false; });
-  add("sphere_diffuse=horizon_correct",
+  add(o, "diffuse=burley", [](RenderSettings& s) { s.diffuse = DiffuseTerm::Burley; });
+  add(o, "remap_roughness=false", [](RenderSettings& s) { s.remap_roughness = false; });
+}
+
+// The light options one at a time (falloff, the sphere and tube methods, culling), then the
+// three ltc modes together.
+void addLightOptions(std::vector<Option>& o) {
+  add(o, "falloff_plus_one=false", [](RenderSettings& s) { s.falloff_plus_one = false; });
+  add(o, "sphere_diffuse=horizon_correct",
       [](RenderSettings& s) { s.sphere_diffuse = SphereDiffuse::HorizonCorrect; });
-  add("sphere_normalization=false", [](RenderSettings& s) { s.sphere_normalization = false; });
-  add("tube_specular=smallest_angle_eq18",
+  add(o, "sphere_normalization=false", [](RenderSettings& s) { s.sphere_normalization = false; });
+  add(o, "tube_specular=smallest_angle_eq18",
       [](RenderSettings& s) { s.tube_specular = TubeSpecular::SmallestAngleEq18; });
-  add("tube_normalization=false", [](RenderSettings& s) { s.tube_normalization = false; });
-  add("culling=brute_force", [](RenderSettings& s) { s.culling = Culling::BruteForce; });
-  add("sphere_specular=ltc", [](RenderSettings& s) { s.sphere_specular = SphereSpecular::Ltc; });
-  add("tube_specular=ltc", [](RenderSettings& s) { s.tube_specular = TubeSpecular::Ltc; });
-  add("tube_diffuse=ltc", [](RenderSettings& s) { s.tube_diffuse = TubeDiffuse::Ltc; });
-  add("ltc (all three)", [](RenderSettings& s) {
+  add(o, "tube_normalization=false", [](RenderSettings& s) { s.tube_normalization = false; });
+  add(o, "culling=brute_force", [](RenderSettings& s) { s.culling = Culling::BruteForce; });
+  add(o, "sphere_specular=ltc", [](RenderSettings& s) { s.sphere_specular = SphereSpecular::Ltc; });
+  add(o, "tube_specular=ltc", [](RenderSettings& s) { s.tube_specular = TubeSpecular::Ltc; });
+  add(o, "tube_diffuse=ltc", [](RenderSettings& s) { s.tube_diffuse = TubeDiffuse::Ltc; });
+  add(o, "ltc (all three)", [](RenderSettings& s) {
     s.sphere_specular = SphereSpecular::Ltc;
     s.tube_specular = TubeSpecular::Ltc;
     s.tube_diffuse = TubeDiffuse::Ltc;
   });
-  // Shadowed lights (docs/lights.md, "Shadows"): each filter, and PCSS with the smallest maps
-  // (the largest texels, so the largest biases and filters).
+}
+
+// Shadowed lights (docs/lights.md, "Shadows"): each filter, and PCSS with the smallest maps (the
+// largest texels, so the largest biases and filters).
+void addShadowOptions(std::vector<Option>& o) {
   for (ShadowFilter f : {ShadowFilter::Pcss, ShadowFilter::Pcf, ShadowFilter::Hard}) {
     o.push_back({"shadows, shadow_filter=" + std::string(toString(f)),
                  [f](RenderSettings& s) { s.shadow_filter = f; }, true});
   }
   o.push_back(
       {"shadows, shadow_map_size=16", [](RenderSettings& s) { s.shadow_map_size = 16; }, true});
-  // Screen-space AO (docs/ambient-occlusion.md) on its edge-case scene: each specular occlusion,
-  // full resolution with the multi-bounce fit, and radii far below and far above the scene.
+}
+
+// Screen-space AO (docs/ambient-occlusion.md) on its edge-case scene: each specular occlusion,
+// full resolution with the multi-bounce fit, and radii far below and far above the scene.
+void addOcclusionOptions(std::vector<Option>& o) {
   for (AoSpecular so : {AoSpecular::Cone, AoSpecular::Lagarde, AoSpecular::None}) {
     o.push_back({"ao=gtao, ao_specular=" + std::string(toString(so)),
                  [so](RenderSettings& s) {
@@ -173,22 +185,31 @@ std::vector<Option> options(bool small) {
                  },
                  false, true});
   }
-  if (small) {
-    // CI: the options whose code paths differ most (physical falloff divides by d^2 alone).
-    std::vector<Option> keep;
-    for (auto& x : o) {
-      if (x.name == "default" || x.name == "falloff_plus_one=false" ||
-          x.name == "v=smith_ggx_correlated" || x.name == "f=exact" ||
-          x.name == "sphere_diffuse=horizon_correct" ||
-          x.name == "tube_specular=smallest_angle_eq18" || x.name == "d=beckmann" ||
-          x.name == "diffuse=burley" || x.name == "ltc (all three)" ||
-          x.name == "shadows, shadow_filter=pcss" || x.name == "ao=gtao, ao_specular=cone") {
-        keep.push_back(x);
-      }
+}
+
+// CI: the options whose code paths differ most (physical falloff divides by d^2 alone).
+std::vector<Option> ciSubset(const std::vector<Option>& all) {
+  std::vector<Option> keep;
+  for (const auto& x : all) {
+    if (x.name == "default" || x.name == "falloff_plus_one=false" ||
+        x.name == "v=smith_ggx_correlated" || x.name == "f=exact" ||
+        x.name == "sphere_diffuse=horizon_correct" ||
+        x.name == "tube_specular=smallest_angle_eq18" || x.name == "d=beckmann" ||
+        x.name == "diffuse=burley" || x.name == "ltc (all three)" ||
+        x.name == "shadows, shadow_filter=pcss" || x.name == "ao=gtao, ao_specular=cone") {
+      keep.push_back(x);
     }
-    o = keep;
   }
-  return o;
+  return keep;
+}
+
+std::vector<Option> options(bool small) {
+  std::vector<Option> o = {{"default", [](RenderSettings&) {}}};
+  addBrdfOptions(o);
+  addLightOptions(o);
+  addShadowOptions(o);
+  addOcclusionOptions(o);
+  return small ? ciSubset(o) : o;
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // each approximation option of the settings table, the presets, the exact configuration), the
 // truth settings the reference uses, and the Pareto front over the measured rows.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <type_traits>
@@ -62,11 +63,13 @@ RenderSettings truthSettings(const RenderSettings& s) {
   return t;
 }
 
-TradePlan tradePlan(const Scene& scene, int max_brute_force_lights) {
-  TradePlan plan;
-  const RenderSettings& b = scene.settings;
-  const int pf = scene.environment.prefilter_samples;
-  const bool env = scene.environment.kind != EnvironmentKind::None;
+namespace {
+
+// Each feature of the scene that makes settings change code, with why its settings are not
+// varied where the scene lacks it (null where it has it).
+using Absences = std::array<std::pair<SettingFeature, const char*>, 5>;
+
+Absences absentFeatures(const Scene& scene) {
   bool sphere = false, tube = false, shadowed = false;
   for (const Light& l : scene.lights) {
     sphere |= l.type == LightType::Sphere;
@@ -74,16 +77,22 @@ TradePlan tradePlan(const Scene& scene, int max_brute_force_lights) {
     shadowed |= l.shadows;
   }
   const bool lights = !scene.lights.empty();
-  std::vector<TradeConfig> c;
-  c.push_back({"scene", "scene", b, pf, {}});
-  // One row per other value of each approximation option of the settings table
-  // (render_settings.hpp), where the scene has what makes it change code.
-  const std::pair<SettingFeature, const char*> absent[] = {
-      {SettingFeature::Lights, lights ? nullptr : "no lights"},
-      {SettingFeature::SphereLights, sphere ? nullptr : "no sphere lights"},
-      {SettingFeature::TubeLights, tube ? nullptr : "no tube lights"},
-      {SettingFeature::AmbientIbl, env ? nullptr : "no environment"},
-      {SettingFeature::ShadowedLights, shadowed ? nullptr : "no shadowed lights"}};
+  const bool env = scene.environment.kind != EnvironmentKind::None;
+  return {{{SettingFeature::Lights, lights ? nullptr : "no lights"},
+           {SettingFeature::SphereLights, sphere ? nullptr : "no sphere lights"},
+           {SettingFeature::TubeLights, tube ? nullptr : "no tube lights"},
+           {SettingFeature::AmbientIbl, env ? nullptr : "no environment"},
+           {SettingFeature::ShadowedLights, shadowed ? nullptr : "no shadowed lights"}}};
+}
+
+// One row per other value of each approximation option of the settings table
+// (render_settings.hpp), where the scene has what makes it change code; the options left out,
+// one line per missing feature.
+void optionRows(const Scene& scene, int max_brute_force_lights, std::vector<TradeConfig>& c,
+                std::vector<std::string>& skipped) {
+  const RenderSettings& b = scene.settings;
+  const int pf = scene.environment.prefilter_samples;
+  const Absences absent = absentFeatures(scene);
   std::vector<std::string> skipped_keys(std::size(absent));
   forEachSetting([&](const auto& row) {
     using T = typename std::decay_t<decltype(row)>::Type;
@@ -95,9 +104,9 @@ TradePlan tradePlan(const Scene& scene, int max_brute_force_lights) {
     }
     if constexpr (std::is_same_v<T, Culling>) {
       if (b.culling != Culling::BruteForce && int(scene.lights.size()) > max_brute_force_lights) {
-        plan.skipped.push_back("culling=brute_force: " + std::to_string(scene.lights.size()) +
-                               " lights (more than " + std::to_string(max_brute_force_lights) +
-                               "; brute force shades every light at every pixel)");
+        skipped.push_back("culling=brute_force: " + std::to_string(scene.lights.size()) +
+                          " lights (more than " + std::to_string(max_brute_force_lights) +
+                          "; brute force shades every light at every pixel)");
         return;
       }
     }
@@ -110,25 +119,33 @@ TradePlan tradePlan(const Scene& scene, int max_brute_force_lights) {
     }
   });
   for (size_t i = 0; i < std::size(absent); ++i) {
-    if (!skipped_keys[i].empty()) plan.skipped.push_back(skipped_keys[i] + ": " + absent[i].second);
+    if (!skipped_keys[i].empty()) skipped.push_back(skipped_keys[i] + ": " + absent[i].second);
   }
-  if (!env) {
-    plan.skipped.push_back("environment.prefilter_samples: no environment");
+}
+
+// A quarter and four times the scene's prefilter sample count, where the count changes the bake.
+void prefilterRows(const Scene& scene, std::vector<TradeConfig>& c,
+                   std::vector<std::string>& skipped) {
+  const int pf = scene.environment.prefilter_samples;
+  if (scene.environment.kind == EnvironmentKind::None) {
+    skipped.push_back("environment.prefilter_samples: no environment");
   } else if (scene.environment.kind == EnvironmentKind::Uniform) {
-    plan.skipped.push_back(
+    skipped.push_back(
         "environment.prefilter_samples: a uniform environment prefilters exactly with any count");
   } else {
     for (int p : {std::max(pf / 4, 1), std::min(pf * 4, 65536)}) {
       if (p == pf) continue;
-      c.push_back({"environment.prefilter_samples=" + std::to_string(p), "environment", b, p, {}});
+      c.push_back({"environment.prefilter_samples=" + std::to_string(p),
+                   "environment",
+                   scene.settings,
+                   p,
+                   {}});
     }
   }
-  for (std::string_view p : settingsPresetNames()) {
-    TradeConfig t{"preset=" + str(p), "preset", b, pf, {}};
-    applySettingsPreset(p, t.settings);
-    c.push_back(t);
-  }
-  // The exact configuration: the reference's BRDF and the most accurate methods of the engine.
+}
+
+// The exact configuration: the reference's BRDF and the most accurate methods of the engine.
+TradeConfig exactConfig(const RenderSettings& b, int pf) {
   TradeConfig exact{"exact", "exact", truthSettings(b), pf, {}};
   exact.settings.sphere_diffuse = SphereDiffuse::HorizonCorrect;
   exact.settings.sphere_normalization = true;
@@ -138,18 +155,43 @@ TradePlan tradePlan(const Scene& scene, int max_brute_force_lights) {
   exact.settings.tube_diffuse = TubeDiffuse::Ltc;
   exact.settings.env_brdf = EnvBrdf::Table;
   exact.settings.irradiance = Irradiance::Cubemap;
-  c.push_back(exact);
+  return exact;
+}
 
-  for (TradeConfig& t : c) {
-    auto same = std::find_if(plan.configs.begin(), plan.configs.end(), [&](const TradeConfig& o) {
+// Configurations that render alike (same settings and prefilter samples) are one row: the first
+// one's, with the others' names as its aliases.
+std::vector<TradeConfig> mergeAlike(const std::vector<TradeConfig>& c) {
+  std::vector<TradeConfig> configs;
+  for (const TradeConfig& t : c) {
+    auto same = std::find_if(configs.begin(), configs.end(), [&](const TradeConfig& o) {
       return o.prefilter_samples == t.prefilter_samples && o.settings == t.settings;
     });
-    if (same != plan.configs.end()) {
+    if (same != configs.end()) {
       same->aliases.push_back(t.name);
     } else {
-      plan.configs.push_back(t);
+      configs.push_back(t);
     }
   }
+  return configs;
+}
+
+}  // namespace
+
+TradePlan tradePlan(const Scene& scene, int max_brute_force_lights) {
+  TradePlan plan;
+  const RenderSettings& b = scene.settings;
+  const int pf = scene.environment.prefilter_samples;
+  std::vector<TradeConfig> c;
+  c.push_back({"scene", "scene", b, pf, {}});
+  optionRows(scene, max_brute_force_lights, c, plan.skipped);
+  prefilterRows(scene, c, plan.skipped);
+  for (std::string_view p : settingsPresetNames()) {
+    TradeConfig t{"preset=" + str(p), "preset", b, pf, {}};
+    applySettingsPreset(p, t.settings);
+    c.push_back(t);
+  }
+  c.push_back(exactConfig(b, pf));
+  plan.configs = mergeAlike(c);
   return plan;
 }
 

@@ -191,24 +191,36 @@ std::string iblCacheDir(const BakeOptions& opt) {
   return (fs::temp_directory_path() / "halfvec-cache").string();
 }
 
-IblBake bakeEnvironment(const Environment& env, const BakeOptions& opt) {
-  const auto t_total = Clock::now();
-  const int size = opt.cube_size > 0 ? opt.cube_size : env.cube_size;
-  const int samples = opt.prefilter_samples > 0 ? opt.prefilter_samples : env.prefilter_samples;
-  if (size < 1 || size > 8192 || (size & (size - 1)) != 0)
-    throw IblError("bakeEnvironment: cube size " + std::to_string(size) +
+namespace {
+
+// The bake's sizes: the options' where set, else the environment's.
+struct BakeSizes {
+  int cube = 0;         // face size of mip 0
+  int samples = 0;      // prefilter samples per texel
+  int supersample = 0;  // per axis, for envToCube
+};
+
+BakeSizes bakeSizes(const Environment& env, const BakeOptions& opt) {
+  BakeSizes n;
+  n.cube = opt.cube_size > 0 ? opt.cube_size : env.cube_size;
+  n.samples = opt.prefilter_samples > 0 ? opt.prefilter_samples : env.prefilter_samples;
+  if (n.cube < 1 || n.cube > 8192 || (n.cube & (n.cube - 1)) != 0)
+    throw IblError("bakeEnvironment: cube size " + std::to_string(n.cube) +
                    " is not a power of two in [1, 8192]");
   if (env.kind == EnvironmentKind::None) throw IblError("bakeEnvironment: environment kind None");
-  const int ss =
+  n.supersample =
       env.kind == EnvironmentKind::HdrFile ? opt.supersample : std::max(opt.supersample, 4);
+  return n;
+}
 
-  // Cache key: everything the result depends on. For a file: its absolute path, size and
-  // modification time (cheap; a rewritten file gets a new mtime).
+// The cache file: its name is a hash of everything the result depends on. For a file: its
+// absolute path, size and modification time (cheap; a rewritten file gets a new mtime).
+fs::path cachePath(const Environment& env, const BakeOptions& opt, const BakeSizes& n) {
   std::ostringstream key;
   key << "v" << kCacheVersion << "|kind" << int(env.kind) << "|c" << vecKey(env.color) << "|i"
-      << vecKey(glm::vec3(env.intensity, env.rotation_deg, 0.0f)) << "|n" << size << "," << samples
-      << "," << opt.min_mip_size << "," << ss << "," << opt.env_brdf_size << ","
-      << opt.env_brdf_samples << "," << opt.irradiance_size << "|v" << int(opt.brdf.v);
+      << vecKey(glm::vec3(env.intensity, env.rotation_deg, 0.0f)) << "|n" << n.cube << ","
+      << n.samples << "," << opt.min_mip_size << "," << n.supersample << "," << opt.env_brdf_size
+      << "," << opt.env_brdf_samples << "," << opt.irradiance_size << "|v" << int(opt.brdf.v);
   if (env.kind == EnvironmentKind::Sky) {
     const SkyParams& s = opt.sky;
     key << "|sky" << vecKey(s.zenith) << vecKey(s.horizon) << vecKey(s.sun_color)
@@ -225,36 +237,28 @@ IblBake bakeEnvironment(const Environment& env, const BakeOptions& opt) {
   }
   char name[64];
   std::snprintf(name, sizeof(name), "ibl-%016llx.bin", (unsigned long long)fnv1a(key.str()));
-  const fs::path cache_path = fs::path(iblCacheDir(opt)) / name;
+  return fs::path(iblCacheDir(opt)) / name;
+}
 
-  IblBake bake;
+// The bake proper, each stage timed: the source, its cube with the full mip chain (for filtered
+// importance sampling), the prefiltered radiance, the env BRDF table, SH9, the irradiance cube.
+void bakeStages(const Environment& env, const BakeOptions& opt, const BakeSizes& n, IblBake& bake) {
   BakeTimings& t = bake.timings;
-  if (opt.use_cache) {
-    const auto t0 = Clock::now();
-    if (readCache(cache_path, bake)) {
-      t.cache_ms = msSince(t0);
-      t.cache_hit = true;
-      t.total_ms = msSince(t_total);
-      if (opt.progress)
-        std::fprintf(stderr, "[ibl] cache hit %s (%.1f ms)\n", cache_path.c_str(), t.cache_ms);
-      return bake;
-    }
-  }
-
   auto t0 = Clock::now();
   const EnvSource src = makeEnvSource(env, opt.sky);
   t.load_ms = msSince(t0);
 
   t0 = Clock::now();
   if (opt.progress)
-    std::fprintf(stderr, "[ibl] source -> cube %dx%d (%dx%d supersampling)\n", size, size, ss, ss);
-  CubeMapF source = makeCubeMap(size, 0);  // full mip chain for filtered importance sampling
-  source.levels[0] = std::move(envToCube(src, size, ss, opt.threads).levels[0]);
+    std::fprintf(stderr, "[ibl] source -> cube %dx%d (%dx%d supersampling)\n", n.cube, n.cube,
+                 n.supersample, n.supersample);
+  CubeMapF source = makeCubeMap(n.cube, 0);
+  source.levels[0] = std::move(envToCube(src, n.cube, n.supersample, opt.threads).levels[0]);
   downsampleCubeMips(source);
   t.convert_ms = msSince(t0);
 
   t0 = Clock::now();
-  bake.radiance = prefilterRadiance(source, samples, opt.min_mip_size, opt.threads, opt.progress);
+  bake.radiance = prefilterRadiance(source, n.samples, opt.min_mip_size, opt.threads, opt.progress);
   t.prefilter_ms = msSince(t0);
 
   t0 = Clock::now();
@@ -273,9 +277,39 @@ IblBake bakeEnvironment(const Environment& env, const BakeOptions& opt) {
   if (opt.irradiance_size > 0)
     bake.irradiance = irradianceCube(source, opt.irradiance_size, opt.threads);
   t.irradiance_ms = msSince(t0);
+}
 
+void printTimings(const BakeTimings& t) {
+  std::fprintf(stderr,
+               "[ibl] baked in %.0f ms (load %.0f, convert %.0f, prefilter %.0f, env BRDF %.0f, "
+               "SH %.0f, irradiance %.0f, cache write %.0f)\n",
+               t.total_ms, t.load_ms, t.convert_ms, t.prefilter_ms, t.env_brdf_ms, t.sh_ms,
+               t.irradiance_ms, t.cache_ms);
+}
+
+}  // namespace
+
+IblBake bakeEnvironment(const Environment& env, const BakeOptions& opt) {
+  const auto t_total = Clock::now();
+  const BakeSizes n = bakeSizes(env, opt);
+  const fs::path cache_path = cachePath(env, opt, n);
+
+  IblBake bake;
+  BakeTimings& t = bake.timings;
   if (opt.use_cache) {
-    t0 = Clock::now();
+    const auto t0 = Clock::now();
+    if (readCache(cache_path, bake)) {
+      t.cache_ms = msSince(t0);
+      t.cache_hit = true;
+      t.total_ms = msSince(t_total);
+      if (opt.progress)
+        std::fprintf(stderr, "[ibl] cache hit %s (%.1f ms)\n", cache_path.c_str(), t.cache_ms);
+      return bake;
+    }
+  }
+  bakeStages(env, opt, n, bake);
+  if (opt.use_cache) {
+    const auto t0 = Clock::now();
     try {
       writeCache(cache_path, bake);
     } catch (const std::exception& e) {  // a read-only cache must not stop rendering
@@ -284,12 +318,7 @@ IblBake bakeEnvironment(const Environment& env, const BakeOptions& opt) {
     t.cache_ms = msSince(t0);
   }
   t.total_ms = msSince(t_total);
-  if (opt.progress)
-    std::fprintf(stderr,
-                 "[ibl] baked in %.0f ms (load %.0f, convert %.0f, prefilter %.0f, env BRDF %.0f, "
-                 "SH %.0f, irradiance %.0f, cache write %.0f)\n",
-                 t.total_ms, t.load_ms, t.convert_ms, t.prefilter_ms, t.env_brdf_ms, t.sh_ms,
-                 t.irradiance_ms, t.cache_ms);
+  if (opt.progress) printTimings(t);
   return bake;
 }
 

@@ -131,12 +131,7 @@ void store(const PixelOut& p, size_t i, ReferenceResult& r, std::vector<double>&
   if (luminance(total) > 0.0) rel_error[i] = p.rel_error;
 }
 
-}  // namespace
-
-ReferenceResult renderReference(const Scene& scene, const GBufferReadback& gb,
-                                const ReferenceOptions& opt) {
-  const auto t0 = std::chrono::steady_clock::now();
-  const size_t count = size_t(std::max(gb.width, 0)) * size_t(std::max(gb.height, 0));
+void checkReadback(const GBufferReadback& gb, size_t count) {
   if (gb.width <= 0 || gb.height <= 0 || gb.base_color.size() != count ||
       gb.metallic.size() != count || gb.roughness.size() != count || gb.cavity.size() != count ||
       gb.depth.size() != count || gb.normal.size() != count || gb.model.size() != count) {
@@ -144,37 +139,92 @@ ReferenceResult renderReference(const Scene& scene, const GBufferReadback& gb,
                                 std::to_string(gb.width) + "x" + std::to_string(gb.height) +
                                 " has arrays of the wrong size");
   }
+}
 
-  const Context ctx = makeContext(scene, gb, opt);
-
+// Every image of the result at the G-buffer's size, black.
+ReferenceResult blankResult(int width, int height) {
   ReferenceResult r;
-  r.image = makeImageRGBf(gb.width, gb.height);
-  r.std_error = makeImageRGBf(gb.width, gb.height);
+  r.image = makeImageRGBf(width, height);
+  r.std_error = makeImageRGBf(width, height);
   for (int a = 0; a < kReferenceAovCount; ++a) {
-    r.aov[a] = makeImageRGBf(gb.width, gb.height);
-    r.aov_std_error[a] = makeImageRGBf(gb.width, gb.height);
+    r.aov[a] = makeImageRGBf(width, height);
+    r.aov_std_error[a] = makeImageRGBf(width, height);
   }
-  r.ao = makeImageRGBf(gb.width, gb.height);
-  r.ao_std_error = makeImageRGBf(gb.width, gb.height);
-  r.samples.assign(count, 0);
+  r.ao = makeImageRGBf(width, height);
+  r.ao_std_error = makeImageRGBf(width, height);
+  r.samples.assign(size_t(width) * size_t(height), 0);
+  return r;
+}
+
+// A background pixel shows the environment along its ray, found as the ambient pass finds it:
+// through a point at small depth on the pixel.
+glm::vec3 backgroundRadiance(const Context& ctx, int x, int y) {
+  const GBufferReadback& gb = *ctx.gb;
+  glm::vec2 uv((float(x) + 0.5f) / float(gb.width), 1.0f - (float(y) + 0.5f) / float(gb.height));
+  glm::vec3 far_point = glsl::reconstructWorldPosition(uv, 1e-3f, ctx.inv_view_proj);
+  return ctx.env.radiance(glm::normalize(far_point - ctx.scene->camera.position));
+}
+
+// A line on stderr at every 10% of the rows done, with the time left estimated from the rows so
+// far (rows cost alike on average). Called from the worker threads.
+class RowProgress {
+ public:
+  RowProgress(int rows, bool on, std::chrono::steady_clock::time_point t0)
+      : rows_(rows), on_(on), t0_(t0) {}
+  void rowDone() {
+    const int done = ++done_;
+    if (!on_) return;
+    std::lock_guard<std::mutex> lock(mutex_);
+    const int pct = int(100.0 * done / rows_);
+    if (pct / 10 > last_reported_ / 10 || done == rows_) {
+      last_reported_ = pct;
+      const double elapsed =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+      std::fprintf(stderr, "reference: %3d%% (%d of %d rows), %.0f s elapsed, about %.0f s left\n",
+                   pct, done, rows_, elapsed, elapsed * double(rows_ - done) / done);
+    }
+  }
+
+ private:
+  const int rows_;
+  const bool on_;
+  const std::chrono::steady_clock::time_point t0_;
+  std::mutex mutex_;
+  std::atomic<int> done_{0};
+  int last_reported_ = -1;
+};
+
+void printSummary(const ReferenceStats& st, bool visibility) {
+  if (visibility) {
+    std::fprintf(stderr, "reference: visibility: %llu rays against %zu triangles\n",
+                 static_cast<unsigned long long>(st.rays), st.triangles);
+  }
+  std::fprintf(stderr,
+               "reference: %zu lit pixels, %llu samples (%d..%d per pixel), relative standard "
+               "error mean %.3g max %.3g, %.2f s\n",
+               st.lit_pixels, static_cast<unsigned long long>(st.total_samples), st.min_samples,
+               st.max_samples, st.mean_rel_error, st.max_rel_error, st.seconds);
+}
+
+}  // namespace
+
+ReferenceResult renderReference(const Scene& scene, const GBufferReadback& gb,
+                                const ReferenceOptions& opt) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const size_t count = size_t(std::max(gb.width, 0)) * size_t(std::max(gb.height, 0));
+  checkReadback(gb, count);
+  const Context ctx = makeContext(scene, gb, opt);
+  ReferenceResult r = blankResult(gb.width, gb.height);
   std::vector<double> rel_error(count, -1.0);
   std::atomic<uint64_t> rays{0};
-
-  std::mutex progress_mutex;
-  std::atomic<int> rows_done{0};
-  int last_reported = -1;
+  RowProgress progress(gb.height, opt.progress, t0);
   detail::parallelFor(gb.height, opt.threads, [&](int y) {
     uint64_t row_rays = 0;
     for (int x = 0; x < gb.width; ++x) {
       const size_t i = size_t(y) * size_t(gb.width) + size_t(x);
       const auto model = static_cast<ShadingModel>(gb.model[i]);
       if (model == ShadingModel::Background) {
-        if (!ctx.has_env) continue;
-        glm::vec2 uv((float(x) + 0.5f) / float(gb.width),
-                     1.0f - (float(y) + 0.5f) / float(gb.height));
-        // As the ambient pass: a point at small depth along the pixel's ray.
-        glm::vec3 far_point = glsl::reconstructWorldPosition(uv, 1e-3f, ctx.inv_view_proj);
-        r.image.px[i] = ctx.env.radiance(glm::normalize(far_point - scene.camera.position));
+        if (ctx.has_env) r.image.px[i] = backgroundRadiance(ctx, x, y);
         continue;
       }
       if (model != ShadingModel::DefaultLit) continue;
@@ -183,20 +233,7 @@ ReferenceResult renderReference(const Scene& scene, const GBufferReadback& gb,
       row_rays += p.rays;
     }
     rays += row_rays;
-    const int done = ++rows_done;
-    if (opt.progress) {
-      std::lock_guard<std::mutex> lock(progress_mutex);
-      const int pct = int(100.0 * done / gb.height);
-      if (pct / 10 > last_reported / 10 || done == gb.height) {
-        last_reported = pct;
-        // Time left from the rows so far (rows cost alike on average).
-        const double elapsed =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        std::fprintf(stderr,
-                     "reference: %3d%% (%d of %d rows), %.0f s elapsed, about %.0f s left\n", pct,
-                     done, gb.height, elapsed, elapsed * double(gb.height - done) / done);
-      }
-    }
+    progress.rowDone();
   });
 
   ReferenceStats& st = r.stats;
@@ -205,17 +242,7 @@ ReferenceResult renderReference(const Scene& scene, const GBufferReadback& gb,
   st.rays = rays.load();
   st.triangles = ctx.vis ? ctx.vis->triangles() : 0;
   st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (opt.progress && ctx.vis) {
-    std::fprintf(stderr, "reference: visibility: %llu rays against %zu triangles\n",
-                 static_cast<unsigned long long>(st.rays), st.triangles);
-  }
-  if (opt.progress) {
-    std::fprintf(stderr,
-                 "reference: %zu lit pixels, %llu samples (%d..%d per pixel), relative standard "
-                 "error mean %.3g max %.3g, %.2f s\n",
-                 st.lit_pixels, static_cast<unsigned long long>(st.total_samples), st.min_samples,
-                 st.max_samples, st.mean_rel_error, st.max_rel_error, st.seconds);
-  }
+  if (opt.progress) printSummary(st, ctx.vis != nullptr);
   return r;
 }
 

@@ -219,75 +219,85 @@ bool multiLine(const std::string& t, size_t a, size_t b) {
   return t.find('\n', a) < b;
 }
 
-std::string applyOne(const std::string& text, const JsonEdit& e, const std::string& source) {
-  const Span root = SpanParser(text, source).parse();
-  const std::vector<std::string> tokens = pointerTokens(e.pointer);
-  const Span* at = &root;
+// How far a pointer reaches into the text: the deepest value it names that exists (`at`, the
+// root when none does), that value as a member of its parent, and how many tokens matched.
+struct Reach {
+  const Span* at = nullptr;
+  const Span* member = nullptr;  // null at the root
+  const Span* parent = nullptr;
   size_t depth = 0;
-  const Span* member = nullptr;
-  const Span* member_parent = nullptr;
-  for (; depth < tokens.size(); ++depth) {
-    const Span* m = child(*at, tokens[depth]);
+};
+
+Reach reach(const Span& root, const std::vector<std::string>& tokens) {
+  Reach r;
+  r.at = &root;
+  for (; r.depth < tokens.size(); ++r.depth) {
+    const Span* m = child(*r.at, tokens[r.depth]);
     if (!m) break;
-    member_parent = at;
-    member = m;
-    at = m;
+    r.parent = r.at;
+    r.member = m;
+    r.at = m;
   }
-  if (depth == tokens.size()) {
-    if (tokens.empty()) throw SceneError(source + ": cannot edit the whole document");
-    if (!e.erase) {
-      const int indent = columnOf(text, member->key_begin);
-      const int used = columnOf(text, at->begin);
-      std::string out = text.substr(0, at->begin);
-      out += formatValue(e.value, indent, used, 100, false);
-      out += text.substr(at->end);
-      return out;
-    }
-    const auto& ms = member_parent->members;
-    const size_t k = size_t(member - ms.data());
-    size_t cut_begin = ms[k - (k > 0)].end, cut_end = ms[k].end;  // ", key: value" after k-1
-    if (ms.size() == 1) {
-      cut_begin = member_parent->begin + 1;
-      cut_end = member_parent->end - 1;
-    } else if (k == 0) {
-      cut_begin = ms[0].key_begin;
-      cut_end = ms[1].key_begin;
-    }
-    std::string out = text.substr(0, cut_begin);
-    out += text.substr(cut_end);
-    return out;
+  return r;
+}
+
+// The value of `member` replaced by `value`, its lines indented as the member's key.
+std::string replaceValue(const std::string& text, const Span& member, const ojson& value) {
+  const int indent = columnOf(text, member.key_begin);
+  const int used = columnOf(text, member.begin);
+  std::string out = text.substr(0, member.begin);
+  out += formatValue(value, indent, used, 100, false);
+  out += text.substr(member.end);
+  return out;
+}
+
+// `member` removed from `parent` with the separator before it (after the member before it), or
+// after it when it is the first.
+std::string eraseMember(const std::string& text, const Span& parent, const Span& member) {
+  const auto& ms = parent.members;
+  const size_t k = size_t(&member - ms.data());
+  size_t cut_begin = ms[k - (k > 0)].end, cut_end = ms[k].end;  // ", key: value" after k-1
+  if (ms.size() == 1) {
+    cut_begin = parent.begin + 1;
+    cut_end = parent.end - 1;
+  } else if (k == 0) {
+    cut_begin = ms[0].key_begin;
+    cut_end = ms[1].key_begin;
   }
-  if (e.erase) return text;  // nothing to remove
-  if (at->kind != '{') {
-    throw SceneError(source + ": cannot edit " + e.pointer + ": no such element");
+  std::string out = text.substr(0, cut_begin);
+  out += text.substr(cut_end);
+  return out;
+}
+
+// `key: value` as the only member of the empty object `at`, on a line of its own if the braces
+// are on different lines.
+std::string insertIntoEmpty(const std::string& text, const Span& at, const std::string& key,
+                            const ojson& value) {
+  const bool ml = multiLine(text, at.begin, at.end);
+  const int indent = columnOf(text, at.begin);
+  std::string out = text.substr(0, at.begin + 1);
+  if (ml) {
+    out += '\n';
+    out.append(size_t(indent + 2), ' ');
   }
-  // Insert the missing key (with any missing objects below it) as the last member of `at`.
-  ojson value = e.value;
-  for (size_t k = tokens.size() - 1; k > depth; --k) value = ojson{{tokens[k], value}};
-  std::string key = ojson(tokens[depth]).dump();
-  key += ": ";
-  std::string out;
-  if (at->members.empty()) {
-    const bool ml = multiLine(text, at->begin, at->end);
-    const int indent = columnOf(text, at->begin);
-    out = text.substr(0, at->begin + 1);
-    if (ml) {
-      out += '\n';
-      out.append(size_t(indent + 2), ' ');
-    }
-    out += key;
-    out += formatValue(value, indent + 2, indent + 2 + int(key.size()), 100, false);
-    if (ml) {
-      out += '\n';
-      out.append(size_t(indent), ' ');
-    }
-    out += text.substr(at->end - 1);
-    return out;
+  out += key;
+  out += formatValue(value, indent + 2, indent + 2 + int(key.size()), 100, false);
+  if (ml) {
+    out += '\n';
+    out.append(size_t(indent), ' ');
   }
-  const Span& last = at->members.back();
-  const bool own_line = multiLine(text, at->begin, last.key_begin);  // one member per line
+  out += text.substr(at.end - 1);
+  return out;
+}
+
+// `key: value` after the last member of `at`, on a line of its own where the members are one per
+// line, else on the same line.
+std::string appendMember(const std::string& text, const Span& at, const std::string& key,
+                         const ojson& value) {
+  const Span& last = at.members.back();
+  const bool own_line = multiLine(text, at.begin, last.key_begin);  // one member per line
   const int indent = columnOf(text, last.key_begin);
-  out = text.substr(0, last.end);
+  std::string out = text.substr(0, last.end);
   out += ',';
   if (own_line) {
     out += '\n';
@@ -301,6 +311,28 @@ std::string applyOne(const std::string& text, const JsonEdit& e, const std::stri
   out += formatValue(value, indent, used, 100, false);
   out += text.substr(last.end);
   return out;
+}
+
+std::string applyOne(const std::string& text, const JsonEdit& e, const std::string& source) {
+  const Span root = SpanParser(text, source).parse();
+  const std::vector<std::string> tokens = pointerTokens(e.pointer);
+  const Reach r = reach(root, tokens);
+  if (r.depth == tokens.size()) {
+    if (tokens.empty()) throw SceneError(source + ": cannot edit the whole document");
+    return e.erase ? eraseMember(text, *r.parent, *r.member)
+                   : replaceValue(text, *r.member, e.value);
+  }
+  if (e.erase) return text;  // nothing to remove
+  if (r.at->kind != '{') {
+    throw SceneError(source + ": cannot edit " + e.pointer + ": no such element");
+  }
+  // Insert the missing key (with any missing objects below it) as the last member of `at`.
+  ojson value = e.value;
+  for (size_t k = tokens.size() - 1; k > r.depth; --k) value = ojson{{tokens[k], value}};
+  std::string key = ojson(tokens[r.depth]).dump();
+  key += ": ";
+  return r.at->members.empty() ? insertIntoEmpty(text, *r.at, key, value)
+                               : appendMember(text, *r.at, key, value);
 }
 
 // ---- scene -> edits --------------------------------------------------------------------------

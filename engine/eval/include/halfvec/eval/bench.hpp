@@ -93,7 +93,4 @@ struct TiledVsBrute {
 TiledVsBrute measureTiledVsBruteForce(const Scene& scene, const std::string& name, int width,
                                       int height, int frames);
 
-// Markdown table: one row per scene, per pass "ms (x floor)".
-std::string frameCostMarkdown(const std::vector<FrameCost>& costs);
-
 }  // namespace hv::eval
