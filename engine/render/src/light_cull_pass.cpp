@@ -218,8 +218,8 @@ TileListView LightCulling::run(const PassContext& ctx, FrameUniforms& frame, con
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   };
-  if (frame.block.counts.y != capacity_) {  // the list was created or grown: tell the shaders
-    frame.block.counts.y = static_cast<uint32_t>(capacity_);
+  if (frame.block.tile_capacity != capacity_) {  // the list was created or grown: tell the shaders
+    frame.block.tile_capacity = static_cast<uint32_t>(capacity_);
     frame.upload();
   }
   cull();
@@ -229,7 +229,7 @@ TileListView LightCulling::run(const PassContext& ctx, FrameUniforms& frame, con
     ++readbacks_;
     if (total > capacity_) {  // the fill left entries out: grow to the need, cull again
       growList(total);
-      frame.block.counts.y = static_cast<uint32_t>(capacity_);
+      frame.block.tile_capacity = static_cast<uint32_t>(capacity_);
       frame.upload();
       cull();
     }

@@ -88,7 +88,7 @@ class LightCulling {
     size_t batch_lights = 0;                               // DebugOptions::cull_batch_lights
     bool stage_timers = false;                             // DebugOptions::cull_stage_timers
   };
-  // Builds the lists for `frame`; updates frame.block.counts.y (list capacity) when it grows.
+  // Builds the lists for `frame`; updates frame.block.tile_capacity when it grows.
   TileListView run(const PassContext& ctx, FrameUniforms& frame, const Input& in);
   TileListView view() const;
   size_t readbacks() const { return readbacks_; }

@@ -194,13 +194,13 @@ FrameStats Renderer::render(int width, int height, DebugView view,
   Targets& t = *targets_;
   Passes& p = *passes_;
   FrameUniforms frame{makeFrameBlock(*scene_, width, height), frame_ubo_.id()};
-  frame.block.counts.x = static_cast<uint32_t>(gpu_->lightCount());
-  frame.block.counts.y = static_cast<uint32_t>(p.culling.capacity());
-  frame.block.counts.z = static_cast<uint32_t>(view);
+  frame.block.light_count = static_cast<uint32_t>(gpu_->lightCount());
+  frame.block.tile_capacity = static_cast<uint32_t>(p.culling.capacity());
+  frame.block.debug_view = static_cast<uint32_t>(view);
   // Term views: no background (ambient.comp), no emissive (masked out in the G-buffer pass).
-  frame.block.counts.w = !terms            ? 0u
-                         : terms->emissive ? kFrameNoBackground
-                                           : kFrameNoBackground | kFrameNoEmissive;
+  frame.block.frame_flags = !terms            ? 0u
+                            : terms->emissive ? kFrameNoBackground
+                                              : kFrameNoBackground | kFrameNoEmissive;
   frame.upload();
   glBindBufferBase(GL_UNIFORM_BUFFER, HV_UBO_FRAME, frame_ubo_.id());
   const PassContext ctx{programs_, timer_, nearest_.id()};
@@ -214,7 +214,7 @@ FrameStats Renderer::render(int width, int height, DebugView view,
   }
   runGBufferPass(ctx,
                  {*scene_, *gpu_, key_, gbuffer_descs_, draw_order_,
-                  (frame.block.counts.w & kFrameNoEmissive) == 0},
+                  (frame.block.frame_flags & kFrameNoEmissive) == 0},
                  {t.gbuffer.id(), width, height});
   // key_.settings: culling auto resolved (chooseCulling).
   const bool culled = key_.settings.culling == Culling::Tiled || view == DebugView::LightsPerTile;
@@ -345,8 +345,9 @@ Renderer::LightWork Renderer::lightWork() const {
   LightWork w;
   for (int y = 0; y < t.height; ++y) {
     for (int x = 0; x < t.width; ++x) {
-      const uint8_t model = mat[(size_t(y) * t.width + x) * 4 + 2];
-      if (model != static_cast<uint8_t>(ShadingModel::DefaultLit)) continue;
+      // The byte read back is the stored unorm8 code: as a float, what the shaders decode.
+      const uint8_t stored = mat[(size_t(y) * t.width + x) * 4 + 2];
+      if (glsl::decodeShadingModel(stored / 255.0f) != glsl::HV_MODEL_DEFAULT_LIT) continue;
       ++w.lit_pixels;
       const size_t tile = size_t(y / kTileHeight) * tiles_x + x / kTileSize;
       w.light_pixel_evaluations += brute ? gpu_->lightCount() : ranges[tile * 2 + 1];
@@ -388,7 +389,7 @@ GBufferReadback Renderer::readGBuffer() const {
     g.cavity[i] = base[4 * i + 3] / 255.0f;  // alpha of an sRGB format is linear
     g.metallic[i] = mat[4 * i];
     g.roughness[i] = glsl::decodeRoughness16(glsl::vec2(mat[4 * i + 1], mat[4 * i + 3]));
-    g.model[i] = static_cast<uint32_t>(mat[4 * i + 2] * 255.0f + 0.5f);
+    g.model[i] = glsl::decodeShadingModel(mat[4 * i + 2]);
     g.normal[i] = glsl::octDecode(glsl::vec2(nrm[2 * i], nrm[2 * i + 1]));
   }
   return g;
