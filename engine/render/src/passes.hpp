@@ -95,6 +95,10 @@ class LightCulling {
   size_t capacity() const { return capacity_; }
 
  private:
+  struct Plan;  // the frame's grid of groups and batches (light_cull_pass.cpp)
+  static Plan plan(const FrameBlock& frame, const Input& in);
+  void cull(const PassContext& ctx, const Plan& p, bool stage_timers) const;
+  void dispatch(const Plan& p, GLuint program, size_t record, bool per_light) const;
   void growList(size_t need);
   // Sizes the per-tile, per-group and per-light buffers (masks cleared when created).
   void ensureBuffers(size_t tiles, size_t groups, size_t lights, size_t mask_uints);
