@@ -156,10 +156,11 @@ LightCulling::Plan LightCulling::plan(const FrameBlock& f, const Input& in) {
 
 // One stage with batch record `record` (BIN: per light of the batch and band; others: per group
 // of tiles).
-void LightCulling::dispatch(const Plan& p, GLuint program, size_t record, bool per_light) const {
-  glUseProgram(program);
-  glBindBufferRange(GL_UNIFORM_BUFFER, HV_UBO_CULL_BATCH, batches_.id(),
-                    GLintptr(record * batch_stride_), sizeof(glsl::CullBatch));
+void LightCulling::dispatch(gl::PassBindings& b, const Plan& p, GLuint program, size_t record,
+                            bool per_light) const {
+  b.use(program);
+  b.uniformRange(HV_UBO_CULL_BATCH, batches_.id(), GLintptr(record * batch_stride_),
+                 sizeof(glsl::CullBatch));
   if (per_light) {
     const size_t n = p.records[record].end - p.records[record].first;
     glDispatchCompute(GLuint((n + HV_CULL_BIN_LIGHTS - 1) / HV_CULL_BIN_LIGHTS), p.bands, 1);
@@ -170,35 +171,36 @@ void LightCulling::dispatch(const Plan& p, GLuint program, size_t record, bool p
 }
 
 // Every stage once: bounds, then binning and walks (one dispatch each, or per batch).
-void LightCulling::cull(const PassContext& ctx, const Plan& p, bool stage_timers) const {
+void LightCulling::cull(const PassContext& ctx, gl::PassBindings& b, const Plan& p,
+                        bool stage_timers) const {
   auto stage = [&](const char* name) {
     return ctx.programs.get(
         {name, {{GL_COMPUTE_SHADER, std::string("passes/") + name + ".comp"}}, {}});
   };
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_TILE_INDICES, indices_.id());
+  b.storage(HV_BINDING_TILE_INDICES, indices_.id());
   const GLuint bin = stage("light_cull_bin");
   {
     const StageTimer t(ctx.timer, stage_timers, "light_cull_bounds");
-    dispatch(p, stage("light_cull_bounds"), 0, false);  // also sets the list's total to 0
+    dispatch(b, p, stage("light_cull_bounds"), 0, false);  // also sets the list's total to 0
   }
   if (p.fused) {
     {
       const StageTimer t(ctx.timer, stage_timers, "light_cull_bin");
-      dispatch(p, bin, 1, true);
+      dispatch(b, p, bin, 1, true);
     }
     const StageTimer t(ctx.timer, stage_timers, "light_cull_tiles");
-    dispatch(p, stage("light_cull_tiles"), 1, false);
+    dispatch(b, p, stage("light_cull_tiles"), 1, false);
   } else {  // batches: binning and walks interleave, timed together
     const StageTimer t(ctx.timer, stage_timers, "light_cull_batches");
     const GLuint count = stage("light_cull_count"), fill = stage("light_cull_fill");
     for (size_t k = 0; k < p.batches; ++k) {
-      dispatch(p, bin, 1 + k, true);
-      dispatch(p, count, 1 + k, false);
+      dispatch(b, p, bin, 1 + k, true);
+      dispatch(b, p, count, 1 + k, false);
     }
-    dispatch(p, stage("light_cull_reserve"), 0, false);
+    dispatch(b, p, stage("light_cull_reserve"), 0, false);
     for (size_t k = 0; k < p.batches; ++k) {
-      dispatch(p, bin, 1 + k, true);
-      dispatch(p, fill, 1 + k, false);
+      dispatch(b, p, bin, 1 + k, true);
+      dispatch(b, p, fill, 1 + k, false);
     }
   }
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -240,20 +242,20 @@ TileListView LightCulling::run(const PassContext& ctx, FrameUniforms& frame, con
   const bool bounded = bound <= in.bound_limit;
   if (bounded && bound > capacity_) growList(bound);
   uploadBatches(p.records.data(), p.records.size());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_LIGHTS, in.lights);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_CULL_LIGHTS, lights_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_CULL_BOUNDS, bounds_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_CULL_MASKS, masks_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_CULL_TILE_STATE, tile_state_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_TILE_RANGES, ranges_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_TILE_TYPES, types_.id());
-  glBindTextureUnit(HV_UNIT_DEPTH, in.depth);
-  glBindSampler(HV_UNIT_DEPTH, ctx.nearest);
+  gl::PassBindings b(kPassSlots, "light_cull");
+  b.storage(HV_BINDING_LIGHTS, in.lights);
+  b.storage(HV_BINDING_CULL_LIGHTS, lights_.id());
+  b.storage(HV_BINDING_CULL_BOUNDS, bounds_.id());
+  b.storage(HV_BINDING_CULL_MASKS, masks_.id());
+  b.storage(HV_BINDING_CULL_TILE_STATE, tile_state_.id());
+  b.storage(HV_BINDING_TILE_RANGES, ranges_.id());
+  b.storage(HV_BINDING_TILE_TYPES, types_.id());
+  b.texture(HV_UNIT_DEPTH, in.depth, ctx.nearest);
   if (frame.block.tile_capacity != capacity_) {  // the list was created or grown: tell the shaders
     frame.block.tile_capacity = static_cast<uint32_t>(capacity_);
     frame.upload();
   }
-  cull(ctx, p, in.stage_timers);
+  cull(ctx, b, p, in.stage_timers);
   if (!bounded) {  // the bound is too loose to allocate: read the exact total back (a stall)
     uint32_t total = 0;
     glGetNamedBufferSubData(indices_.id(), 0, sizeof total, &total);
@@ -262,11 +264,9 @@ TileListView LightCulling::run(const PassContext& ctx, FrameUniforms& frame, con
       growList(total);
       frame.block.tile_capacity = static_cast<uint32_t>(capacity_);
       frame.upload();
-      cull(ctx, p, in.stage_timers);
+      cull(ctx, b, p, in.stage_timers);
     }
   }
-  glBindSampler(HV_UNIT_DEPTH, 0);
-  glUseProgram(0);
   return view();
 }
 
