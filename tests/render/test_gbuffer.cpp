@@ -36,6 +36,7 @@ TEST(GBuffer, PackMaterialFillsTheNamedFields) {
   m.alpha_mode = AlphaMode::Mask;
   m.emissive = {1.0f, 2.0f, 3.0f};
   m.model = ShadingModel::Unlit;
+  m.vertex_color = false;
   m.normal_tex.image = 0;
   m.normal_tex.scale = 0.25f;
   m.normal_tex.texcoord = 1;
@@ -61,9 +62,9 @@ TEST(GBuffer, PackMaterialFillsTheNamedFields) {
   EXPECT_EQ(g.texture_bits, HV_MAT_NORMAL_TEX | HV_MAT_EMISSIVE_TEX | HV_MAT_TEX_TRANSFORM_BIT);
   EXPECT_EQ(g.uv_offset[HV_MAT_SLOT_EMISSIVE], glm::vec4(0.5f, 0.0f, 0.0f, 0.0f));
   EXPECT_EQ(g.uv_linear[HV_MAT_SLOT_BASE_COLOR], glm::vec4(1.0f, 0.0f, 0.0f, 1.0f));
-  Material opaque;
+  Material opaque;  // vertex colours on by default, no texture
   EXPECT_EQ(render::packMaterial(opaque).alpha_mode, HV_ALPHA_OPAQUE);
-  EXPECT_EQ(render::packMaterial(opaque).texture_bits, 0u);
+  EXPECT_EQ(render::packMaterial(opaque).texture_bits, HV_MAT_VERTEX_COLOR_BIT);
   EXPECT_EQ(render::packMaterial(opaque).shading_model, glsl::HV_MODEL_DEFAULT_LIT);
 }
 
