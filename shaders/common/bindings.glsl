@@ -70,7 +70,7 @@
 #define HV_LOC_SHADOW_LIGHT 4      // shadow.frag: light center, 1 / far
 #define HV_LOC_AO_PARAMS 5         // gtao.comp, ao_denoise.comp: radius (m), scale, AO size
 
-// ---- FrameBlock::counts.w bits (hv::render::FrameFlag), set for the per-term debug views -------
+// ---- FrameBlock::frame_flags bits (hv::render::FrameFlag), set for the per-term debug views ---
 #define HV_FRAME_NO_BACKGROUND 1u  // background pixels stay black (ambient.comp)
 #define HV_FRAME_NO_EMISSIVE 2u    // no emissive in the HDR target (C++ masks the G-buffer write)
 

@@ -15,6 +15,13 @@ const uint HV_MODEL_BACKGROUND = 0u;
 const uint HV_MODEL_UNLIT = 1u;
 const uint HV_MODEL_DEFAULT_LIT = 2u;
 
+// The shading-model ID in RT1's blue channel, written as ID / 255 (which the unorm8 target stores
+// exactly, as the roughness bytes below) and read back as the nearest code. The one encoding:
+// gbuffer.frag writes it, the light, ambient and debug-view passes and the C++ read-backs
+// (Renderer::readGBuffer, Renderer::lightWork) decode it.
+float encodeShadingModel(uint id) { return float(id) / 255.0f; }
+uint decodeShadingModel(float stored) { return uint(stored * 255.0f + 0.5f); }
+
 float signNotZero(float v) { return v >= 0.0f ? 1.0f : -1.0f; }
 
 // Octahedral normal encoding (Meyer et al. 2010, "On floating-point normal vectors"; Cigolle et

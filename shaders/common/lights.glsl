@@ -1,7 +1,8 @@
 // Analytic lights of the UE4 shading model (Karis 2013, "Real Shading in Unreal Engine 4",
 // section "Lighting"): point, sphere and tube (capsule) lights, shared by GLSL and C++ (see
 // halfvec/shading/glsl.hpp). Physical definition of each light (units, emitted power, emitter
-// radiance): docs/lights.md. C++ mirror of GpuLight and packing: halfvec/shading/light_gpu.hpp.
+// radiance): docs/lights.md. The light record GpuLight: gpu_records.glsl; its packing:
+// halfvec/shading/light_gpu.hpp.
 //
 // Defines (defaults first; the C++ side sets them from RenderSettings in hv::brdfDefines):
 //  HV_FALLOFF_PLUS_ONE 1|0      Karis eq. 9 1/(d^2+1), or physical 1/d^2 (accuracy comparisons)
@@ -30,6 +31,7 @@
 #ifndef HV_LIGHTS_GLSL
 #define HV_LIGHTS_GLSL
 
+#include "gpu_records.glsl"
 #include "math.glsl"
 #include "brdf.glsl"
 #include "ltc.glsl"
@@ -80,25 +82,8 @@
   ((HV_HAS_SPHERE_LIGHTS && HV_SPHERE_SPECULAR == HV_SPHERE_SPECULAR_LTC) || \
    (HV_HAS_TUBE_LIGHTS && HV_TUBE_SPECULAR == HV_TUBE_SPECULAR_LTC))
 
-// Light type codes stored (as float) in GpuLight.params.y; = hv::LightType.
-#define HV_LIGHT_POINT 0
-#define HV_LIGHT_SPHERE 1
-#define HV_LIGHT_TUBE 2
-
-// One light as the GPU reads it: std430, 4 x vec4 = 64 bytes (C++ mirror: hv::GpuLight).
-//  position_radius: x,y,z world position (tube: segment center), w sphere/capsule radius (m)
-//  color_inv_range: rgb linear color premultiplied by intensity I (W/sr), w 1/R (eq. 9 window)
-//  axis_length:     x,y,z unit tube axis, w tube segment length (m); 0 for point and sphere
-//  params:          x range R (Karis eq. 9 window), y type (0/1/2), z culling radius, w the
-//                   light's cube in the shadow atlas + 1 (0: no shadow map; written by the shadow
-//                   pass, engine/render/src/shadow_pass.cpp)
-// Points and spheres read only the first two vec4 in the light pass, tubes three.
-struct GpuLight {
-  vec4 position_radius;
-  vec4 color_inv_range;
-  vec4 axis_length;
-  vec4 params;
-};
+// The light's type code (HV_LIGHT_*, gpu_records.glsl), stored as float in params.y; +0.5 rounds.
+int lightType(GpuLight light) { return int(light.params.y + 0.5f); }
 
 // Smallest squared light distance (1 cm)^2. With HV_FALLOFF_PLUS_ONE = 0 a point light at
 // distance 0 would be 1/0; Filament likewise treats a punctual light as a 1 cm sphere. With the
@@ -387,7 +372,7 @@ vec3 evaluateTubeLight(GpuLight light, Surface s, vec3 P, vec3 V) {
 // Cavity is applied to all of it (see shadeLight). Only the compiled light types are handled;
 // a light of a type compiled out contributes 0.
 vec3 evaluateLightAt(GpuLight light, Surface s, ShadingPoint sp) {
-  int type = int(light.params.y + 0.5f);  // stored as float; +0.5 rounds
+  int type = lightType(light);
   vec3 result = vec3(0.0f);
 #if HV_HAS_POINT_LIGHTS
   if (type == HV_LIGHT_POINT) result = evaluatePointLightAt(light, s, sp);

@@ -49,7 +49,7 @@
 #endif
 // Term mask: bit 1 ambient diffuse, bit 2 ambient specular; a term left out is 0 (per-term
 // images, `halfvec render --aov`). Background pixels are drawn whatever the mask, unless
-// u_counts.w has HV_FRAME_NO_BACKGROUND (per-term debug views).
+// u_frame_flags has HV_FRAME_NO_BACKGROUND (per-term debug views).
 #ifndef HV_AMBIENT_TERMS
 #define HV_AMBIENT_TERMS 3
 #endif
@@ -121,7 +121,7 @@ void main() {
   // at 1280x720, fastest of 9 frames: this pass 36.6 -> 27.4 ms, sphere_grid 37.1 -> 29.6 ms,
   // `halfvec bench --scene FILE --shaders OLD,NEW`; the same image).
   vec4 mat = texelFetch(t_material, px, 0);
-  uint model = uint(mat.b * 255.0 + 0.5);
+  uint model = decodeShadingModel(mat.b);
   bool background = model == HV_MODEL_BACKGROUND;
   vec4 hdr = imageLoad(i_hdr, px);
   vec4 result = hdr;  // unlit surfaces keep what the G-buffer pass wrote (emissive)
@@ -205,6 +205,8 @@ void main() {
 #else
   if (background) result = vec4(0.0, 0.0, 0.0, 1.0);
 #endif
-  if (background && (u_counts.w & HV_FRAME_NO_BACKGROUND) != 0u) result = vec4(0.0, 0.0, 0.0, 1.0);
+  if (background && (u_frame_flags & HV_FRAME_NO_BACKGROUND) != 0u) {
+    result = vec4(0.0, 0.0, 0.0, 1.0);
+  }
   imageStore(i_hdr, px, vec4(min(result.rgb, vec3(HV_HDR_MAX)), result.a));
 }

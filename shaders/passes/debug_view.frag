@@ -1,5 +1,5 @@
 #version 450 core
-// Debug views of the G-buffer channels and of the light culling (u_counts.z selects,
+// Debug views of the G-buffer channels and of the light culling (u_debug_view selects,
 // hv::render::DebugView). Values are shown as stored, without tone mapping.
 #include "../common/frame.glsl"
 #include "../common/gbuffer.glsl"
@@ -22,9 +22,9 @@ void main() {
   ivec2 px = ivec2(gl_FragCoord.xy);
   vec4 bc = texelFetch(t_base_cavity, px, 0);
   vec4 mat = texelFetch(t_material, px, 0);
-  uint model = uint(mat.b * 255.0 + 0.5);
+  uint model = decodeShadingModel(mat.b);
   vec3 c = vec3(0.0);
-  switch (u_counts.z) {
+  switch (u_debug_view) {
     case 1u: c = pow(bc.rgb, vec3(1.0 / 2.2)); break;  // base color, display-encoded
     case 2u: c = vec3(mat.r); break;
     case 3u: c = vec3(decodeRoughness16(mat.ga)); break;

@@ -39,8 +39,8 @@ vec2 uvSet(uint set) { return v_uv0; }
 // Uber build: a compiled-in feature still tests the material's flag. Specialized: every material
 // of the variant has the feature, so there is nothing to test.
 #if HV_MAT_RUNTIME_FLAGS
-#define HV_MAT_USES(bit) ((m.flags.x & (bit)) != 0u)
-#define HV_MAT_MASKED (m.flags.y == HV_ALPHA_MASK)
+#define HV_MAT_USES(bit) ((m.texture_bits & (bit)) != 0u)
+#define HV_MAT_MASKED (m.alpha_mode == HV_ALPHA_MASK)
 #else
 #define HV_MAT_USES(bit) true
 #define HV_MAT_MASKED true
@@ -63,29 +63,31 @@ void main() {
   GpuMaterial m = u_material;
   vec4 base = m.base_color;
 #if HV_MAT_BASE_COLOR_MAP
-  if (HV_MAT_USES(HV_MAT_BASE_COLOR_TEX)) base *= texture(t_base_color, texUv(0u, m.texcoords.x));
+  if (HV_MAT_USES(HV_MAT_BASE_COLOR_TEX)) {
+    base *= texture(t_base_color, texUv(HV_MAT_SLOT_BASE_COLOR, m.texcoord_base_color));
+  }
 #endif
 #if HV_MAT_VERTEX_COLOR
   if (HV_MAT_USES(HV_MAT_VERTEX_COLOR_BIT)) base *= v_color;  // glTF 2.0 3.9.2: COLOR_0 multiplies
 #endif
 #if HV_MAT_ALPHA_MASK
-  if (HV_MAT_MASKED && base.a < m.params.w) discard;
+  if (HV_MAT_MASKED && base.a < m.alpha_cutoff) discard;
 #endif
 
-  float metallic = m.params.x;
-  float roughness = m.params.y;
+  float metallic = m.metallic;
+  float roughness = m.roughness;
 #if HV_MAT_METAL_ROUGH_MAP
   if (HV_MAT_USES(HV_MAT_METAL_ROUGH_TEX)) {
-    vec4 mr = texture(t_metal_rough, texUv(1u, m.texcoords.y));
+    vec4 mr = texture(t_metal_rough, texUv(HV_MAT_SLOT_METAL_ROUGH, m.texcoord_metal_rough));
     metallic *= mr.b;   // glTF: B = metallic
     roughness *= mr.g;  //       G = roughness
   }
 #endif
-  float cavity = m.params.z;
+  float cavity = m.cavity;
 #if HV_MAT_OCCLUSION_MAP
   if (HV_MAT_USES(HV_MAT_OCCLUSION_TEX)) {
-    float ao = texture(t_occlusion, texUv(3u, m.texcoords.w)).r;
-    cavity *= 1.0 + m.extra.y * (ao - 1.0);  // glTF occlusion strength
+    float ao = texture(t_occlusion, texUv(HV_MAT_SLOT_OCCLUSION, m.texcoord_occlusion)).r;
+    cavity *= 1.0 + m.occlusion_strength * (ao - 1.0);  // glTF occlusion strength
   }
 #endif
 
@@ -100,8 +102,8 @@ void main() {
     if (tl > 1e-8) {
       t /= tl;
       vec3 b = cross(n, t) * (v_tangent.w < 0.0 ? -1.0 : 1.0);
-      vec3 tn = texture(t_normal, texUv(2u, m.texcoords.z)).xyz * 2.0 - 1.0;
-      tn.xy *= m.extra.x;  // glTF normalTexture.scale
+      vec3 tn = texture(t_normal, texUv(HV_MAT_SLOT_NORMAL, m.texcoord_normal)).xyz * 2.0 - 1.0;
+      tn.xy *= m.normal_scale;  // glTF normalTexture.scale
       vec3 mapped = t * tn.x + b * tn.y + n * tn.z;
       float ml = length(mapped);
       if (ml > 1e-8) n = mapped / ml;
@@ -110,9 +112,11 @@ void main() {
 #endif
 
 #if HV_MAT_EMISSIVE
-  vec3 emissive = m.emissive.rgb;
+  vec3 emissive = m.emissive;
 #if HV_MAT_EMISSIVE_MAP
-  if (HV_MAT_USES(HV_MAT_EMISSIVE_TEX)) emissive *= texture(t_emissive, texUv(4u, m.extra.z > 0.5 ? 1u : 0u)).rgb;
+  if (HV_MAT_USES(HV_MAT_EMISSIVE_TEX)) {
+    emissive *= texture(t_emissive, texUv(HV_MAT_SLOT_EMISSIVE, m.texcoord_emissive)).rgb;
+  }
 #endif
 #else
   vec3 emissive = vec3(0.0);
@@ -120,7 +124,8 @@ void main() {
 
   o_base_cavity = vec4(clamp(base.rgb, 0.0, 1.0), clamp(cavity, 0.0, 1.0));
   vec2 roughness16 = encodeRoughness16(roughness);
-  o_material = vec4(clamp(metallic, 0.0, 1.0), roughness16.x, float(m.flags.z) / 255.0, roughness16.y);
+  o_material = vec4(clamp(metallic, 0.0, 1.0), roughness16.x, encodeShadingModel(m.shading_model),
+                    roughness16.y);
   o_normal = octEncode(n);
   // Clamped as every pass that writes the HDR target clamps (frame.glsl HV_HDR_MAX): without an
   // environment no ambient pass follows to clamp unlit pixels.

@@ -16,7 +16,7 @@ void main() {
   if (i >= u_batch.end) return;
   vec3 c = (u_view * vec4(lights[i].position_radius.xyz, 1.0)).xyz;
   float r = lightCullRadius(lights[i]);
-  uint type = uint(lights[i].params.y + 0.5);  // HV_LIGHT_POINT/SPHERE/TUBE = 0/1/2
+  uint type = uint(lightType(lights[i]));  // HV_LIGHT_POINT/SPHERE/TUBE = 0/1/2
   ivec4 rect;
   bool visible = type <= 2u && sphereTileRect(c, r, vec2(u_proj[0][0], u_proj[1][1]),
                                               u_near_params.x, vec2(u_viewport.xy),

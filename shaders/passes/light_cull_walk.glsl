@@ -95,7 +95,7 @@ void walk(uvec2 tile, bool fill, inout uvec3 n, inout uvec3 cursor) {
         // into per-lane memory accesses): selects.
         uvec3 add = uvec3(type == 0u, type == 1u, type == 2u) * uint(hit);
         uint slot = type == 0u ? cursor.x : (type == 1u ? cursor.y : cursor.z);
-        if (fill && hit && slot < u_counts.y) tile_indices[slot] = i;
+        if (fill && hit && slot < u_tile_capacity) tile_indices[slot] = i;
         cursor += add;
         n += add;
       } while (m != 0u);

@@ -113,7 +113,7 @@ void main() {
   for (int j = 0; j < HV_LIGHT_PIXELS; ++j) {
     ivec2 px = pixelOf(j);
     vec4 mat = texelFetch(t_material, px, 0);
-    uint model = uint(mat.b * 255.0 + 0.5);
+    uint model = decodeShadingModel(mat.b);
     lit[j] = model == HV_MODEL_DEFAULT_LIT && px.x < int(u_viewport.x) && px.y < int(u_viewport.y);
     any_lit = any_lit || lit[j];
     vec4 bc = texelFetch(t_base_cavity, px, 0);
@@ -133,7 +133,7 @@ void main() {
   for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] = vec3(0.0);
 #endif
 #if HV_CULLING_BRUTE_FORCE
-  uint n = u_counts.x;
+  uint n = u_light_count;
   for (uint i = 0u; i < n; ++i) {
     GpuLight l = lights[i];
 #if HV_SHADOWS
@@ -147,7 +147,7 @@ void main() {
   uint tile = tileRow() * u_viewport.z + gl_WorkGroupID.x;  // tileRow() < tiles y: a pixel is lit
   uvec2 range = tile_ranges[tile];
   uvec2 split = tile_types[tile];  // points, then spheres, then tubes
-  uint end = min(range.x + range.y, u_counts.y);
+  uint end = min(range.x + range.y, u_tile_capacity);
   uint end_point = min(range.x + split.x, end);
   uint end_sphere = min(end_point + split.y, end);
   // One loop per type, each a do-while behind an if: the exit test at the end of the body. A SIMD

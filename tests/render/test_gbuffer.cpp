@@ -22,6 +22,52 @@ float srgbRoundTrip(float x) {
 }
 }  // namespace
 
+// packMaterial fills hv::GpuMaterial, the record gbuffer.frag reads (gpu_records.glsl), by name:
+// each field holds the scene value it is named for, the flags are the texture bits of the textures
+// present, and the emissive texture's UV set is an integer like the others.
+TEST(GBuffer, PackMaterialFillsTheNamedFields) {
+  Material m;
+  m.base_color = {0.1f, 0.2f, 0.3f};
+  m.base_alpha = 0.4f;
+  m.metallic = 0.5f;
+  m.roughness = 0.6f;
+  m.cavity = 0.7f;
+  m.alpha_cutoff = 0.8f;
+  m.alpha_mode = AlphaMode::Mask;
+  m.emissive = {1.0f, 2.0f, 3.0f};
+  m.model = ShadingModel::Unlit;
+  m.vertex_color = false;
+  m.normal_tex.image = 0;
+  m.normal_tex.scale = 0.25f;
+  m.normal_tex.texcoord = 1;
+  m.occlusion_tex.scale = 0.75f;
+  m.emissive_tex.image = 1;
+  m.emissive_tex.texcoord = 1;
+  m.emissive_tex.uv_offset = {0.5f, 0.0f};
+  const GpuMaterial g = render::packMaterial(m);
+  EXPECT_EQ(g.base_color, glm::vec4(0.1f, 0.2f, 0.3f, 0.4f));
+  EXPECT_EQ(g.metallic, 0.5f);
+  EXPECT_EQ(g.roughness, 0.6f);
+  EXPECT_EQ(g.cavity, 0.7f);
+  EXPECT_EQ(g.alpha_cutoff, 0.8f);
+  EXPECT_EQ(g.alpha_mode, HV_ALPHA_MASK);
+  EXPECT_EQ(g.emissive, glm::vec3(1.0f, 2.0f, 3.0f));
+  EXPECT_EQ(g.shading_model, glsl::HV_MODEL_UNLIT);
+  EXPECT_EQ(g.normal_scale, 0.25f);
+  EXPECT_EQ(g.occlusion_strength, 0.75f);
+  EXPECT_EQ(g.texcoord_base_color, 0u);
+  EXPECT_EQ(g.texcoord_normal, 1u);
+  EXPECT_EQ(g.texcoord_emissive, 1u);
+  // Normal and emissive textures present; the emissive one transformed.
+  EXPECT_EQ(g.texture_bits, HV_MAT_NORMAL_TEX | HV_MAT_EMISSIVE_TEX | HV_MAT_TEX_TRANSFORM_BIT);
+  EXPECT_EQ(g.uv_offset[HV_MAT_SLOT_EMISSIVE], glm::vec4(0.5f, 0.0f, 0.0f, 0.0f));
+  EXPECT_EQ(g.uv_linear[HV_MAT_SLOT_BASE_COLOR], glm::vec4(1.0f, 0.0f, 0.0f, 1.0f));
+  Material opaque;  // vertex colours on by default, no texture
+  EXPECT_EQ(render::packMaterial(opaque).alpha_mode, HV_ALPHA_OPAQUE);
+  EXPECT_EQ(render::packMaterial(opaque).texture_bits, HV_MAT_VERTEX_COLOR_BIT);
+  EXPECT_EQ(render::packMaterial(opaque).shading_model, glsl::HV_MODEL_DEFAULT_LIT);
+}
+
 TEST(GBuffer, RoundTripWithinQuantization) {
   testContext();
   const Material cases[] = {
@@ -181,7 +227,7 @@ TEST(GBuffer, EachDrawReadsItsOwnMaterial) {
   const render::GpuScene gpu(s);
   RecordProperty("uniform_buffer_offset_alignment", align);
   RecordProperty("material_stride", int(gpu.materialStride()));
-  EXPECT_GE(gpu.materialStride(), sizeof(render::GpuMaterial));
+  EXPECT_GE(gpu.materialStride(), sizeof(GpuMaterial));
   EXPECT_EQ(gpu.materialStride() % size_t(std::max(align, 1)), 0u);
 }
 

@@ -27,6 +27,7 @@
 #pragma GCC diagnostic ignored "-Wunused-parameter"
 namespace ltc {
 using namespace glm;
+using hv::GpuLight;  // gpu_records.glsl, declared once outside the variants
 using uint = unsigned int;
 namespace {
 #include "halfvec/shaders/common/math.glsl"

@@ -153,3 +153,17 @@ TEST(GBufferEncoding, Roughness16KeepsTheHighlightPeak) {
                 100 * e16.max_rel);
   }
 }
+
+// The shading-model code (gbuffer.glsl, the one encode/decode the passes and the read-backs use):
+// every 8-bit ID survives the RGBA8 target's unorm8 quantization, and the IDs are hv::ShadingModel.
+TEST(GBufferEncoding, ShadingModelRoundTripsEveryCode) {
+  for (uint id = 0; id < 256; ++id) {
+    ASSERT_EQ(decodeShadingModel(quantizeUnorm8(encodeShadingModel(id))), id) << id;
+  }
+  // Half a code off still decodes to the nearest (what a driver's rounding may leave).
+  EXPECT_EQ(decodeShadingModel((2.0f + 0.49f) / 255.0f), 2u);
+  EXPECT_EQ(decodeShadingModel((2.0f - 0.49f) / 255.0f), 2u);
+  EXPECT_EQ(HV_MODEL_BACKGROUND, 0u);
+  EXPECT_EQ(HV_MODEL_UNLIT, 1u);
+  EXPECT_EQ(HV_MODEL_DEFAULT_LIT, 2u);
+}

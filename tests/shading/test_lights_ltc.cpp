@@ -40,6 +40,7 @@
 #pragma GCC diagnostic ignored "-Wunused-parameter"
 namespace both {
 using namespace glm;
+using hv::GpuLight;  // gpu_records.glsl, declared once outside the variants
 using uint = unsigned int;
 namespace {
 #include "halfvec/shaders/common/math.glsl"
@@ -61,6 +62,7 @@ namespace {
 #define HV_DIRECT_TERMS 1
 namespace diffuse {
 using namespace glm;
+using hv::GpuLight;  // gpu_records.glsl, declared once outside the variants
 using uint = unsigned int;
 namespace {
 #include "halfvec/shaders/common/math.glsl"
@@ -81,6 +83,7 @@ namespace {
 #define HV_DIRECT_TERMS 2
 namespace specular {
 using namespace glm;
+using hv::GpuLight;  // gpu_records.glsl, declared once outside the variants
 using uint = unsigned int;
 namespace {
 #include "halfvec/shaders/common/math.glsl"

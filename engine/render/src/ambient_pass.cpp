@@ -59,20 +59,13 @@ GpuEnvironment::GpuEnvironment(const Scene& scene) {
   glNamedBufferSubData(block_.id(), 0, sizeof block, &block);
 }
 
-void GpuEnvironment::bind(GLuint fallback_2d) const {
+void GpuEnvironment::bind(gl::PassBindings& b, GLuint fallback_2d) const {
   // The units always hold a texture of the right type (GL requires it for a sampled unit).
   const GLuint radiance = radiance_ ? radiance_.id() : black_cube_.id();
-  glBindTextureUnit(HV_UNIT_RADIANCE, radiance);
-  glBindTextureUnit(HV_UNIT_ENV_BRDF, env_brdf_ ? env_brdf_.id() : fallback_2d);
-  glBindTextureUnit(HV_UNIT_IRRADIANCE, irradiance_ ? irradiance_.id() : radiance);
-  for (GLuint u : {HV_UNIT_RADIANCE, HV_UNIT_ENV_BRDF, HV_UNIT_IRRADIANCE}) {
-    glBindSampler(u, trilinear_.id());
-  }
-  glBindBufferBase(GL_UNIFORM_BUFFER, HV_UBO_ENVIRONMENT, block_.id());
-}
-
-void GpuEnvironment::unbind() const {
-  for (GLuint u : {HV_UNIT_RADIANCE, HV_UNIT_ENV_BRDF, HV_UNIT_IRRADIANCE}) glBindSampler(u, 0);
+  b.texture(HV_UNIT_RADIANCE, radiance, trilinear_.id());
+  b.texture(HV_UNIT_ENV_BRDF, env_brdf_ ? env_brdf_.id() : fallback_2d, trilinear_.id());
+  b.texture(HV_UNIT_IRRADIANCE, irradiance_ ? irradiance_.id() : radiance, trilinear_.id());
+  b.uniform(HV_UBO_ENVIRONMENT, block_.id());
 }
 
 void runAmbientPass(const PassContext& ctx, const AmbientPassInput& in, GLuint hdr, int width,
@@ -80,22 +73,14 @@ void runAmbientPass(const PassContext& ctx, const AmbientPassInput& in, GLuint h
   gl::ScopedPass pass(ctx.timer, "ambient");
   applyState(PipelineState{});
   // Defines from the variant key: environment presence, shading models, IBL options.
-  const GLuint prog = ctx.programs.get(in.program);
-  glUseProgram(prog);
-  bindGBuffer(in.gbuffer, ctx.nearest);
-  in.environment.bind(in.gbuffer.base_cavity);
-  if (in.ao) {
-    glBindTextureUnit(HV_UNIT_AO, in.ao);
-    glBindSampler(HV_UNIT_AO, ctx.nearest);
-  }
-  glBindImageTexture(HV_IMAGE_HDR, hdr, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
+  gl::PassBindings b(kPassSlots, "ambient");
+  b.use(ctx.programs.get(in.program));
+  bindGBuffer(b, in.gbuffer, ctx.nearest);
+  in.environment.bind(b, in.gbuffer.base_cavity);
+  if (in.ao) b.texture(HV_UNIT_AO, in.ao, ctx.nearest);
+  b.image(HV_IMAGE_HDR, hdr, GL_READ_WRITE, GL_RGBA16F);
   glDispatchCompute((width + kTileSize - 1) / kTileSize, (height + kTileSize - 1) / kTileSize, 1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-  unbindGBuffer();
-  in.environment.unbind();
-  if (in.ao) glBindSampler(HV_UNIT_AO, 0);
-  glBindImageTexture(HV_IMAGE_HDR, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
-  glUseProgram(0);
 }
 
 }  // namespace hv::render

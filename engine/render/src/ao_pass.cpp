@@ -37,10 +37,11 @@ GLuint AoPass::run(const PassContext& ctx, const GBufferView& gbuffer,
   }
   const GLuint groups_x = GLuint((w + kTileSize - 1) / kTileSize);
   const GLuint groups_y = GLuint((h + kTileSize - 1) / kTileSize);
+  gl::PassBindings b(kPassSlots, "ao");
   const GLuint gtao = ctx.programs.get(gtao_);
-  glUseProgram(gtao);
+  b.use(gtao);
   glProgramUniform4f(gtao, HV_LOC_AO_PARAMS, settings.ao_radius, float(scale), float(w), float(h));
-  bindGBuffer(gbuffer, ctx.nearest);
+  bindGBuffer(b, gbuffer, ctx.nearest);
   // The horizon search filters depth bilinearly (gtao.comp, horizonCos); texelFetch ignores it.
   if (!linear_) {
     linear_ = gl::createSampler("ao depth bilinear");
@@ -49,24 +50,19 @@ GLuint AoPass::run(const PassContext& ctx, const GBufferView& gbuffer,
     glSamplerParameteri(linear_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glSamplerParameteri(linear_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   }
-  glBindSampler(HV_UNIT_DEPTH, linear_.id());
-  glBindImageTexture(HV_IMAGE_AO, raw_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  b.texture(HV_UNIT_DEPTH, gbuffer.depth, linear_.id());
+  b.image(HV_IMAGE_AO, raw_.id(), GL_WRITE_ONLY, GL_RGBA16F);
   glDispatchCompute(groups_x, groups_y, 1);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-  glBindSampler(HV_UNIT_DEPTH, ctx.nearest);
+  b.texture(HV_UNIT_DEPTH, gbuffer.depth, ctx.nearest);
   const GLuint denoise = ctx.programs.get(denoise_);
-  glUseProgram(denoise);
+  b.use(denoise);
   glProgramUniform4f(denoise, HV_LOC_AO_PARAMS, settings.ao_radius, float(scale), float(w),
                      float(h));
-  glBindTextureUnit(HV_UNIT_AO, raw_.id());
-  glBindSampler(HV_UNIT_AO, ctx.nearest);
-  glBindImageTexture(HV_IMAGE_AO, denoised_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  b.texture(HV_UNIT_AO, raw_.id(), ctx.nearest);
+  b.image(HV_IMAGE_AO, denoised_.id(), GL_WRITE_ONLY, GL_RGBA16F);
   glDispatchCompute(groups_x, groups_y, 1);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-  glBindSampler(HV_UNIT_AO, 0);
-  unbindGBuffer();
-  glBindImageTexture(HV_IMAGE_AO, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-  glUseProgram(0);
   return denoised_.id();
 }
 

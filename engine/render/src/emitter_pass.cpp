@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "halfvec/shaders/common/bindings.glsl"
+#include "pass_slots.hpp"
 #include "pipeline_state.hpp"
 #include "post_stages.hpp"
 
@@ -156,15 +157,16 @@ void EmitterPass::run(gl::ProgramCache& programs, GLuint hdr, GLuint depth, int 
   }
   glNamedBufferSubData(draw_.id(), 0, sizeof reset, reset);
   const GLuint groups = GLuint((count_ + kCullGroup - 1) / kCullGroup);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_EMITTERS, instances_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_VISIBLE_EMITTERS, visible_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_EMITTER_DRAW, draw_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_EMITTER_GROUPS, groups_.id());
+  gl::PassBindings b(kPassSlots, "emitters");
+  b.storage(HV_BINDING_EMITTERS, instances_.id());
+  b.storage(HV_BINDING_VISIBLE_EMITTERS, visible_.id());
+  b.storage(HV_BINDING_EMITTER_DRAW, draw_.id());
+  b.storage(HV_BINDING_EMITTER_GROUPS, groups_.id());
   for (const char* stage : {"0", "1", "2"}) {  // count, scan, write (emitter_cull.comp)
     const GLuint cull = programs.get({"emitter_cull",
                                       {{GL_COMPUTE_SHADER, "passes/emitter_cull.comp"}},
                                       {{"HV_EMITTER_CULL_STAGE", stage}}});
-    glUseProgram(cull);
+    b.use(cull);
     glProgramUniform1ui(cull, 0, GLuint(count_));
     glDispatchCompute(stage[0] == '1' ? 1 : groups, 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
@@ -184,13 +186,12 @@ void EmitterPass::run(gl::ProgramCache& programs, GLuint hdr, GLuint depth, int 
        {}});
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, width, height);
-  glUseProgram(prog);
+  b.use(prog);
   glBindVertexArray(vao_.id());
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, draw_.id());
   glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, nullptr, GLsizei(kEmitterLods), 0);
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
   glBindVertexArray(0);
-  glUseProgram(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   applyState(PipelineState{});
 }

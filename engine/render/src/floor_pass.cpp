@@ -9,14 +9,12 @@ void runFloorPass(const PassContext& ctx, const GBufferView& gbuffer, GLuint scr
                   int height) {
   gl::ScopedPass pass(ctx.timer, "floor");
   applyState(PipelineState{});
-  glUseProgram(ctx.programs.get({"floor", {{GL_COMPUTE_SHADER, "passes/floor.comp"}}, {}}));
-  bindGBuffer(gbuffer, ctx.nearest);
-  glBindImageTexture(HV_IMAGE_FLOOR, scratch, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  gl::PassBindings b(kPassSlots, "floor");
+  b.use(ctx.programs.get({"floor", {{GL_COMPUTE_SHADER, "passes/floor.comp"}}, {}}));
+  bindGBuffer(b, gbuffer, ctx.nearest);
+  b.image(HV_IMAGE_FLOOR, scratch, GL_WRITE_ONLY, GL_RGBA16F);
   glDispatchCompute((width + kTileSize - 1) / kTileSize, (height + kTileSize - 1) / kTileSize, 1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-  unbindGBuffer();
-  glBindImageTexture(HV_IMAGE_FLOOR, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-  glUseProgram(0);
 }
 
 }  // namespace hv::render

@@ -8,30 +8,42 @@
 
 namespace hv::render {
 
+static_assert(uint32_t(ShadingModel::Background) == glsl::HV_MODEL_BACKGROUND &&
+                  uint32_t(ShadingModel::Unlit) == glsl::HV_MODEL_UNLIT &&
+                  uint32_t(ShadingModel::DefaultLit) == glsl::HV_MODEL_DEFAULT_LIT,
+              "GpuMaterial::shading_model holds hv::ShadingModel (gbuffer.glsl's HV_MODEL_*)");
+
 GpuMaterial packMaterial(const Material& m) {
   GpuMaterial g{};
   g.base_color = glm::vec4(m.base_color, m.base_alpha);
-  g.params = glm::vec4(m.metallic, m.roughness, m.cavity, m.alpha_cutoff);
-  g.emissive = glm::vec4(m.emissive, 0.0f);
-  g.extra = glm::vec4(m.normal_tex.scale, m.occlusion_tex.scale, float(m.emissive_tex.texcoord), 0);
-  g.texcoords = glm::uvec4(m.base_color_tex.texcoord, m.metallic_roughness_tex.texcoord,
-                           m.normal_tex.texcoord, m.occlusion_tex.texcoord);
-  uint32_t bits = 0;
-  if (m.base_color_tex.valid()) bits |= kBaseColorTex;
-  if (m.metallic_roughness_tex.valid()) bits |= kMetalRoughTex;
-  if (m.normal_tex.valid()) bits |= kNormalTex;
-  if (m.occlusion_tex.valid()) bits |= kOcclusionTex;
-  if (m.emissive_tex.valid()) bits |= kEmissiveTex;
-  if (m.vertex_color) bits |= kVertexColor;
-  const TextureRef* refs[5] = {&m.base_color_tex, &m.metallic_roughness_tex, &m.normal_tex,
-                               &m.occlusion_tex, &m.emissive_tex};
-  for (int i = 0; i < 5; ++i) {
+  g.metallic = m.metallic;
+  g.roughness = m.roughness;
+  g.cavity = m.cavity;
+  g.alpha_cutoff = m.alpha_cutoff;
+  g.emissive = m.emissive;
+  g.normal_scale = m.normal_tex.scale;
+  g.occlusion_strength = m.occlusion_tex.scale;
+  g.alpha_mode = m.alpha_mode == AlphaMode::Mask ? HV_ALPHA_MASK : HV_ALPHA_OPAQUE;
+  g.shading_model = static_cast<uint32_t>(m.model);
+  g.texcoord_base_color = static_cast<uint32_t>(m.base_color_tex.texcoord);
+  g.texcoord_metal_rough = static_cast<uint32_t>(m.metallic_roughness_tex.texcoord);
+  g.texcoord_normal = static_cast<uint32_t>(m.normal_tex.texcoord);
+  g.texcoord_occlusion = static_cast<uint32_t>(m.occlusion_tex.texcoord);
+  g.texcoord_emissive = static_cast<uint32_t>(m.emissive_tex.texcoord);
+  // In the order of the slots, HV_MAT_SLOT_*.
+  const TextureRef* refs[HV_MAT_SLOTS] = {&m.base_color_tex, &m.metallic_roughness_tex,
+                                          &m.normal_tex, &m.occlusion_tex, &m.emissive_tex};
+  const uint32_t tex_bits[HV_MAT_SLOTS] = {HV_MAT_BASE_COLOR_TEX, HV_MAT_METAL_ROUGH_TEX,
+                                           HV_MAT_NORMAL_TEX, HV_MAT_OCCLUSION_TEX,
+                                           HV_MAT_EMISSIVE_TEX};
+  uint32_t bits = m.vertex_color ? HV_MAT_VERTEX_COLOR_BIT : 0u;
+  for (int i = 0; i < HV_MAT_SLOTS; ++i) {
+    if (refs[i]->valid()) bits |= tex_bits[i];
     g.uv_linear[i] = glsl::textureTransformLinear(refs[i]->uv_scale, refs[i]->uv_rotation);
     g.uv_offset[i] = glm::vec4(refs[i]->uv_offset, 0.0f, 0.0f);
-    if (refs[i]->valid() && refs[i]->transformed()) bits |= kTexTransform;
+    if (refs[i]->valid() && refs[i]->transformed()) bits |= HV_MAT_TEX_TRANSFORM_BIT;
   }
-  g.flags = glm::uvec4(bits, m.alpha_mode == AlphaMode::Mask ? 1u : 0u,
-                       static_cast<uint32_t>(m.model), 0u);
+  g.texture_bits = bits;
   return g;
 }
 
@@ -57,7 +69,7 @@ FrameBlock makeFrameBlock(const Scene& scene, int width, int height) {
   const uint32_t tx = (width + kTileSize - 1) / kTileSize;
   const uint32_t ty = (height + kTileHeight - 1) / kTileHeight;
   f.viewport = glm::uvec4(width, height, tx, ty);
-  f.counts = glm::uvec4(static_cast<uint32_t>(scene.lights.size()), 0, 0, 0);
+  f.light_count = static_cast<uint32_t>(scene.lights.size());
   f.output = glm::vec4(scene.settings.exposure, scene.settings.dither ? 1.0f : 0.0f,
                        scene.environment.intensity, glm::radians(scene.environment.rotation_deg));
   f.near_params = glm::vec4(c.near_plane, 0, 0, 0);

@@ -31,6 +31,7 @@ void runGBufferPass(const PassContext& ctx, const GBufferPassInput& in,
   if (!in.emissive) glColorMaski(3, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
 
   glBindVertexArray(in.gpu.vertexArray());
+  gl::PassBindings b(kPassSlots, "gbuffer");
   int bound_material = -1;
   int bound_variant = -1;
   bool culling = true;
@@ -41,7 +42,7 @@ void runGBufferPass(const PassContext& ctx, const GBufferPassInput& in,
     const int variant = in.key.material_variant[size_t(d.material)];
     if (variant != bound_variant) {
       bound_variant = variant;
-      glUseProgram(ctx.programs.get(in.programs.at(size_t(variant))));
+      b.use(ctx.programs.get(in.programs.at(size_t(variant))));
     }
     const glm::mat4& model = in.scene.objects[d.object].transform;
     const glm::mat4 normal_matrix = glm::transpose(glm::inverse(model));
@@ -56,26 +57,20 @@ void runGBufferPass(const PassContext& ctx, const GBufferPassInput& in,
     }
     if (d.material != bound_material) {
       bound_material = d.material;
-      glBindBufferRange(GL_UNIFORM_BUFFER, HV_UBO_MATERIAL, in.gpu.materialBuffer(),
-                        GLintptr(size_t(d.material) * in.gpu.materialStride()),
-                        GLsizeiptr(sizeof(GpuMaterial)));
+      b.uniformRange(HV_UBO_MATERIAL, in.gpu.materialBuffer(),
+                     GLintptr(size_t(d.material) * in.gpu.materialStride()),
+                     GLsizeiptr(sizeof(GpuMaterial)));
       const auto tex = in.gpu.materialTextures(d.material);
       static_assert(std::tuple_size_v<decltype(tex)> == HV_MATERIAL_TEXTURE_COUNT);
       for (GLuint u = 0; u < tex.size(); ++u) {
-        glBindTextureUnit(HV_UNIT_MATERIAL_TEXTURES + u, tex[u].texture);
-        glBindSampler(HV_UNIT_MATERIAL_TEXTURES + u, tex[u].sampler);
+        b.texture(HV_UNIT_MATERIAL_TEXTURES + u, tex[u].texture, tex[u].sampler);
       }
     }
     glDrawElementsBaseVertex(
         GL_TRIANGLES, GLsizei(d.index_count), GL_UNSIGNED_INT,
         reinterpret_cast<const void*>(size_t(d.first_index) * sizeof(uint32_t)), d.base_vertex);
   }
-  for (GLuint u = 0; u < HV_MATERIAL_TEXTURE_COUNT; ++u) {
-    glBindSampler(HV_UNIT_MATERIAL_TEXTURES + u, 0);
-  }
-  glBindBufferBase(GL_UNIFORM_BUFFER, HV_UBO_MATERIAL, 0);
   glBindVertexArray(0);
-  glUseProgram(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glFrontFace(GL_CCW);
   if (!in.emissive) glColorMaski(3, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);

@@ -4,6 +4,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "halfvec/render/frame_data.hpp"
+#include "pass_slots.hpp"
 #include "pipeline_state.hpp"
 #include "post_stages.hpp"
 
@@ -64,12 +65,13 @@ void HighlightPass::run(gl::ProgramCache& programs, const GpuScene& gpu, const S
   glViewport(0, 0, width, height);
   const float zero[4] = {0, 0, 0, 0};
   glClearNamedFramebufferfv(mask_fbo_.id(), GL_COLOR, 0, zero);
-  glUseProgram(programs.get({"highlight mask",
-                             {{GL_VERTEX_SHADER, "passes/highlight_mask.vert"},
-                              {GL_FRAGMENT_SHADER, "passes/highlight_mask.frag"}},
-                             {}}));
+  gl::PassBindings b(kPassSlots, "highlight");
+  b.use(programs.get({"highlight mask",
+                      {{GL_VERTEX_SHADER, "passes/highlight_mask.vert"},
+                       {GL_FRAGMENT_SHADER, "passes/highlight_mask.frag"}},
+                      {}}));
   glUniformMatrix4fv(0, 1, GL_FALSE, glm::value_ptr(scene.objects[size_t(object)].transform));
-  glBindTextureUnit(0, depth);
+  b.texture(0, depth);  // t_depth (highlight_mask.frag)
   glBindVertexArray(gpu.vertexArray());
   for (const DrawItem& d : gpu.draws()) {
     if (d.object != object) continue;
@@ -83,11 +85,11 @@ void HighlightPass::run(gl::ProgramCache& programs, const GpuScene& gpu, const S
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glBindFramebuffer(GL_FRAMEBUFFER, output_fbo);
   glViewport(0, 0, width, height);
-  glUseProgram(programs.get({"highlight composite",
-                             {{GL_VERTEX_SHADER, "passes/fullscreen.vert"},
-                              {GL_FRAGMENT_SHADER, "passes/highlight_composite.frag"}},
-                             {}}));
-  glBindTextureUnit(0, mask_.id());
+  b.use(programs.get({"highlight composite",
+                      {{GL_VERTEX_SHADER, "passes/fullscreen.vert"},
+                       {GL_FRAGMENT_SHADER, "passes/highlight_composite.frag"}},
+                      {}}));
+  b.texture(0, mask_.id());  // t_mask (highlight_composite.frag)
   const glm::ivec4 r = screenRect(scene, object, width, height);
   glEnable(GL_SCISSOR_TEST);
   glScissor(r.x, r.y, std::max(r.z - r.x, 0), std::max(r.w - r.y, 0));
@@ -95,8 +97,6 @@ void HighlightPass::run(gl::ProgramCache& programs, const GpuScene& gpu, const S
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
   glDisable(GL_SCISSOR_TEST);
-  glBindTextureUnit(0, 0);
-  glUseProgram(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   applyState(PipelineState{});  // blending off, blend function back to the default state's
 }

@@ -118,124 +118,155 @@ void LightCulling::ensureBuffers(size_t tiles, size_t groups, size_t lights, siz
 // Input::bound_limit (32 Mi entries, 128 MiB, by default) is the exact total read back after the
 // dispatches (a pipeline stall on a GPU) and, if the list was too small, the list grown to it
 // and the culling run again.
+// What one frame's culling dispatches: the grid of groups, the batches and their records.
+struct LightCulling::Plan {
+  size_t tiles = 0, groups = 0;
+  GLuint groups_x = 0, groups_y = 0;
+  GLuint bands = 0;  // bands of HV_CULL_BIN_GROUP_ROWS group rows (binning)
+  size_t batch_lights = 0, batches = 0;
+  size_t words = 0, summary = 0;  // mask and summary words per group
+  bool fused = false;             // one batch, binned and walked in one dispatch each
+  // The dispatches' CullBatch records, one uniform-buffer range each: record 0 for the stages
+  // that read no batch (bounds, reserve), record 1 + b for batch b.
+  std::vector<glsl::CullBatch> records;
+};
+
+LightCulling::Plan LightCulling::plan(const FrameBlock& f, const Input& in) {
+  Plan p;
+  p.tiles = size_t(f.viewport.z) * f.viewport.w;
+  p.groups_x = (f.viewport.z + HV_CULL_GROUP_TILES - 1) / HV_CULL_GROUP_TILES;
+  p.groups_y = (f.viewport.w + HV_CULL_GROUP_TILES - 1) / HV_CULL_GROUP_TILES;
+  p.groups = size_t(p.groups_x) * p.groups_y;
+  p.bands = (p.groups_y + HV_CULL_BIN_GROUP_ROWS - 1) / HV_CULL_BIN_GROUP_ROWS;
+  p.batch_lights = in.batch_lights > 0 && in.batch_lights < HV_CULL_FUSED_MAX_LIGHTS
+                       ? in.batch_lights
+                       : HV_CULL_FUSED_MAX_LIGHTS;
+  p.fused = in.light_count <= p.batch_lights && p.batch_lights == HV_CULL_FUSED_MAX_LIGHTS;
+  // Mask words per group: one bit per light of a batch; summary words: one bit per mask word.
+  p.words = (std::min(in.light_count, p.batch_lights) + 31) / 32;
+  p.summary = (p.words + 31) / 32;
+  p.batches = (in.light_count + p.batch_lights - 1) / p.batch_lights;
+  p.records.assign(1 + p.batches, {0, 0, uint32_t(p.words), uint32_t(p.summary)});
+  for (size_t b = 0; b < p.batches; ++b) {
+    p.records[1 + b].first = uint32_t(b * p.batch_lights);
+    p.records[1 + b].end = uint32_t(std::min((b + 1) * p.batch_lights, in.light_count));
+  }
+  return p;
+}
+
+// One stage with batch record `record` (BIN: per light of the batch and band; others: per group
+// of tiles).
+void LightCulling::dispatch(gl::PassBindings& b, const Plan& p, GLuint program, size_t record,
+                            bool per_light) const {
+  b.use(program);
+  b.uniformRange(HV_UBO_CULL_BATCH, batches_.id(), GLintptr(record * batch_stride_),
+                 sizeof(glsl::CullBatch));
+  if (per_light) {
+    const size_t n = p.records[record].end - p.records[record].first;
+    glDispatchCompute(GLuint((n + HV_CULL_BIN_LIGHTS - 1) / HV_CULL_BIN_LIGHTS), p.bands, 1);
+  } else {
+    glDispatchCompute(p.groups_x, p.groups_y, 1);
+  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+// Every stage once: bounds, then binning and walks (one dispatch each, or per batch).
+void LightCulling::cull(const PassContext& ctx, gl::PassBindings& b, const Plan& p,
+                        bool stage_timers) const {
+  auto stage = [&](const char* name) {
+    return ctx.programs.get(
+        {name, {{GL_COMPUTE_SHADER, std::string("passes/") + name + ".comp"}}, {}});
+  };
+  b.storage(HV_BINDING_TILE_INDICES, indices_.id());
+  const GLuint bin = stage("light_cull_bin");
+  {
+    const StageTimer t(ctx.timer, stage_timers, "light_cull_bounds");
+    dispatch(b, p, stage("light_cull_bounds"), 0, false);  // also sets the list's total to 0
+  }
+  if (p.fused) {
+    {
+      const StageTimer t(ctx.timer, stage_timers, "light_cull_bin");
+      dispatch(b, p, bin, 1, true);
+    }
+    const StageTimer t(ctx.timer, stage_timers, "light_cull_tiles");
+    dispatch(b, p, stage("light_cull_tiles"), 1, false);
+  } else {  // batches: binning and walks interleave, timed together
+    const StageTimer t(ctx.timer, stage_timers, "light_cull_batches");
+    const GLuint count = stage("light_cull_count"), fill = stage("light_cull_fill");
+    for (size_t k = 0; k < p.batches; ++k) {
+      dispatch(b, p, bin, 1 + k, true);
+      dispatch(b, p, count, 1 + k, false);
+    }
+    dispatch(b, p, stage("light_cull_reserve"), 0, false);
+    for (size_t k = 0; k < p.batches; ++k) {
+      dispatch(b, p, bin, 1 + k, true);
+      dispatch(b, p, fill, 1 + k, false);
+    }
+  }
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+// Tiled culling (shaders/passes/light_cull_*.comp; docs/lights.md): per tile, its surface bounds
+// (and per block of 2 x 4 tiles and per group of 8 x 8 tiles); per light and band of group rows,
+// its view sphere and tile rectangle, and its bit in the light mask of every group its sphere
+// touches; per group, the mask refined per block, then each tile's walk of its block's mask in
+// light order, twice: count, then (after one reservation per group) write. Up to
+// HV_CULL_FUSED_MAX_LIGHTS lights the last steps are one dispatch; above, the lights are binned
+// and walked in batches. No cap on a tile's list: the index list is sized before the dispatches
+// from an upper bound computed on the CPU (listBound: the lights' tile rectangles, which contain
+// every pair the GPU can find), so nothing waits for the GPU. Only when that bound exceeds
+// Input::bound_limit (32 Mi entries, 128 MiB, by default) is the exact total read back after the
+// dispatches (a pipeline stall on a GPU) and, if the list was too small, the list grown to it
+// and the culling run again.
 TileListView LightCulling::run(const PassContext& ctx, FrameUniforms& frame, const Input& in) {
   // One timer for the pass, or with Input::stage_timers one per stage instead (the timer does not
   // nest: the frame's total is the sum of its timers).
   std::optional<gl::ScopedPass> pass;
   if (!in.stage_timers) pass.emplace(ctx.timer, "light_cull");
   applyState(PipelineState{});
-  const FrameBlock& f = frame.block;
-  const size_t tiles = size_t(f.viewport.z) * f.viewport.w;
-  const GLuint groups_x = (f.viewport.z + HV_CULL_GROUP_TILES - 1) / HV_CULL_GROUP_TILES;
-  const GLuint groups_y = (f.viewport.w + HV_CULL_GROUP_TILES - 1) / HV_CULL_GROUP_TILES;
-  const size_t groups = size_t(groups_x) * groups_y;
-  const size_t batch_lights = in.batch_lights > 0 && in.batch_lights < HV_CULL_FUSED_MAX_LIGHTS
-                                  ? in.batch_lights
-                                  : HV_CULL_FUSED_MAX_LIGHTS;
-  const bool fused = in.light_count <= batch_lights && batch_lights == HV_CULL_FUSED_MAX_LIGHTS;
-  // Mask words per group: one bit per light of a batch; summary words: one bit per mask word.
-  const size_t words = (std::min(in.light_count, batch_lights) + 31) / 32;
-  const size_t summary = (words + 31) / 32;
-  ensureBuffers(tiles, groups, in.light_count, groups * (words + summary));
-  if (!indices_) growList(std::max<size_t>(tiles * 16, 1 << 16));
+  const Plan p = plan(frame.block, in);
+  ensureBuffers(p.tiles, p.groups, in.light_count, p.groups * (p.words + p.summary));
+  if (!indices_) growList(std::max<size_t>(p.tiles * 16, 1 << 16));
   const uint32_t zero = 0;
   if (in.light_count == 0) {  // empty lists
     glClearNamedBufferSubData(indices_.id(), GL_R32UI, 0, sizeof zero, GL_RED_INTEGER,
                               GL_UNSIGNED_INT, &zero);
     for (GLuint b : {ranges_.id(), types_.id()}) {
-      glClearNamedBufferSubData(b, GL_R32UI, 0, tiles * 2 * sizeof(uint32_t), GL_RED_INTEGER,
+      glClearNamedBufferSubData(b, GL_R32UI, 0, p.tiles * 2 * sizeof(uint32_t), GL_RED_INTEGER,
                                 GL_UNSIGNED_INT, &zero);
     }
     return view();
   }
   // Size the list before anything runs, from the CPU bound when it is small enough.
-  const size_t bound = listBound(*in.cull_spheres, f);
+  const size_t bound = listBound(*in.cull_spheres, frame.block);
   const bool bounded = bound <= in.bound_limit;
   if (bounded && bound > capacity_) growList(bound);
-  auto stage = [&](const char* name) {
-    return ctx.programs.get(
-        {name, {{GL_COMPUTE_SHADER, std::string("passes/") + name + ".comp"}}, {}});
-  };
-  // The dispatches' CullBatch records, one uniform-buffer range each: record 0 for the stages that
-  // read no batch (bounds, reserve), record 1 + b for batch b.
-  const size_t batches = (in.light_count + batch_lights - 1) / batch_lights;
-  std::vector<glsl::CullBatch> records(1 + batches, {0, 0, uint32_t(words), uint32_t(summary)});
-  for (size_t b = 0; b < batches; ++b) {
-    records[1 + b].first = uint32_t(b * batch_lights);
-    records[1 + b].end = uint32_t(std::min((b + 1) * batch_lights, in.light_count));
-  }
-  uploadBatches(records.data(), records.size());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_LIGHTS, in.lights);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_CULL_LIGHTS, lights_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_CULL_BOUNDS, bounds_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_CULL_MASKS, masks_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_CULL_TILE_STATE, tile_state_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_TILE_RANGES, ranges_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_TILE_TYPES, types_.id());
-  glBindTextureUnit(HV_UNIT_DEPTH, in.depth);
-  glBindSampler(HV_UNIT_DEPTH, ctx.nearest);
-  const GLuint bands = (groups_y + HV_CULL_BIN_GROUP_ROWS - 1) / HV_CULL_BIN_GROUP_ROWS;
-  // One stage with batch record `record` (BIN: per light of the batch and band; others: per
-  // group of tiles).
-  auto dispatch = [&](GLuint program, size_t record, bool per_light) {
-    glUseProgram(program);
-    glBindBufferRange(GL_UNIFORM_BUFFER, HV_UBO_CULL_BATCH, batches_.id(),
-                      GLintptr(record * batch_stride_), sizeof(glsl::CullBatch));
-    if (per_light) {
-      const size_t n = records[record].end - records[record].first;
-      glDispatchCompute(GLuint((n + HV_CULL_BIN_LIGHTS - 1) / HV_CULL_BIN_LIGHTS), bands, 1);
-    } else {
-      glDispatchCompute(groups_x, groups_y, 1);
-    }
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  };
-  auto cull = [&] {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_TILE_INDICES, indices_.id());
-    const GLuint bin = stage("light_cull_bin");
-    {
-      const StageTimer t(ctx.timer, in.stage_timers, "light_cull_bounds");
-      dispatch(stage("light_cull_bounds"), 0, false);  // also sets the list's total to 0
-    }
-    if (fused) {
-      {
-        const StageTimer t(ctx.timer, in.stage_timers, "light_cull_bin");
-        dispatch(bin, 1, true);
-      }
-      const StageTimer t(ctx.timer, in.stage_timers, "light_cull_tiles");
-      dispatch(stage("light_cull_tiles"), 1, false);
-    } else {  // batches: binning and walks interleave, timed together
-      const StageTimer t(ctx.timer, in.stage_timers, "light_cull_batches");
-      const GLuint count = stage("light_cull_count"), fill = stage("light_cull_fill");
-      for (size_t b = 0; b < batches; ++b) {
-        dispatch(bin, 1 + b, true);
-        dispatch(count, 1 + b, false);
-      }
-      dispatch(stage("light_cull_reserve"), 0, false);
-      for (size_t b = 0; b < batches; ++b) {
-        dispatch(bin, 1 + b, true);
-        dispatch(fill, 1 + b, false);
-      }
-    }
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  };
-  if (frame.block.counts.y != capacity_) {  // the list was created or grown: tell the shaders
-    frame.block.counts.y = static_cast<uint32_t>(capacity_);
+  uploadBatches(p.records.data(), p.records.size());
+  gl::PassBindings b(kPassSlots, "light_cull");
+  b.storage(HV_BINDING_LIGHTS, in.lights);
+  b.storage(HV_BINDING_CULL_LIGHTS, lights_.id());
+  b.storage(HV_BINDING_CULL_BOUNDS, bounds_.id());
+  b.storage(HV_BINDING_CULL_MASKS, masks_.id());
+  b.storage(HV_BINDING_CULL_TILE_STATE, tile_state_.id());
+  b.storage(HV_BINDING_TILE_RANGES, ranges_.id());
+  b.storage(HV_BINDING_TILE_TYPES, types_.id());
+  b.texture(HV_UNIT_DEPTH, in.depth, ctx.nearest);
+  if (frame.block.tile_capacity != capacity_) {  // the list was created or grown: tell the shaders
+    frame.block.tile_capacity = static_cast<uint32_t>(capacity_);
     frame.upload();
   }
-  cull();
+  cull(ctx, b, p, in.stage_timers);
   if (!bounded) {  // the bound is too loose to allocate: read the exact total back (a stall)
     uint32_t total = 0;
     glGetNamedBufferSubData(indices_.id(), 0, sizeof total, &total);
     ++readbacks_;
     if (total > capacity_) {  // the fill left entries out: grow to the need, cull again
       growList(total);
-      frame.block.counts.y = static_cast<uint32_t>(capacity_);
+      frame.block.tile_capacity = static_cast<uint32_t>(capacity_);
       frame.upload();
-      cull();
+      cull(ctx, b, p, in.stage_timers);
     }
   }
-  glBindSampler(HV_UNIT_DEPTH, 0);
-  glUseProgram(0);
   return view();
 }
 

@@ -32,14 +32,15 @@ void LightPass::run(const PassContext& ctx, const FrameBlock& frame, const Input
   }
   const GLuint prog =
       ctx.programs.get({"light", {{GL_COMPUTE_SHADER, "passes/light_shade.comp"}}, defines});
-  glUseProgram(prog);
-  bindGBuffer(in.gbuffer, ctx.nearest);
-  glBindImageTexture(HV_IMAGE_HDR, hdr, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_LIGHTS, in.lights);
+  gl::PassBindings b(kPassSlots, "light");
+  b.use(prog);
+  bindGBuffer(b, in.gbuffer, ctx.nearest);
+  b.image(HV_IMAGE_HDR, hdr, GL_READ_WRITE, GL_RGBA16F);
+  b.storage(HV_BINDING_LIGHTS, in.lights);
   if (tiled) {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_TILE_RANGES, in.tiles.ranges);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_TILE_INDICES, in.tiles.indices);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_TILE_TYPES, in.tiles.types);
+    b.storage(HV_BINDING_TILE_RANGES, in.tiles.ranges);
+    b.storage(HV_BINDING_TILE_INDICES, in.tiles.indices);
+    b.storage(HV_BINDING_TILE_TYPES, in.tiles.types);
   }
   if (use_textures) {
     if (!light_texels_) {
@@ -51,26 +52,21 @@ void LightPass::run(const PassContext& ctx, const FrameBlock& frame, const Input
     // Re-pointed every frame: either buffer may have been re-created (scene edit, list growth).
     glTextureBuffer(light_texels_.id(), GL_RGBA32F, in.lights);
     glTextureBuffer(tile_index_texels_.id(), GL_R32UI, in.tiles.indices);
-    glBindTextureUnit(HV_UNIT_LIGHT_TEXELS, light_texels_.id());
-    glBindTextureUnit(HV_UNIT_TILE_INDEX_TEXELS, tile_index_texels_.id());
+    b.texture(HV_UNIT_LIGHT_TEXELS, light_texels_.id());
+    b.texture(HV_UNIT_TILE_INDEX_TEXELS, tile_index_texels_.id());
   }
   if (in.ltc) {
     if (!ltc_) ltc_ = std::make_unique<LtcTextures>();
-    ltc_->bind();
+    ltc_->bind(b);
   }
-  if (in.shadows) in.shadows->bind();
+  if (in.shadows) {  // ShadowMaps binds its two units itself (shadow_pass.cpp): declared here
+    in.shadows->bind();
+    b.declareTexture(HV_UNIT_SHADOW_DEPTH);
+    b.declareTexture(HV_UNIT_SHADOW_COMPARE);
+  }
   glDispatchCompute(frame.viewport.z, (frame.viewport.w + kLightGroupTiles - 1) / kLightGroupTiles,
                     1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-  if (in.ltc) LtcTextures::unbind();
-  if (in.shadows) ShadowMaps::unbind();
-  unbindGBuffer();
-  if (use_textures) {
-    glBindTextureUnit(HV_UNIT_LIGHT_TEXELS, 0);
-    glBindTextureUnit(HV_UNIT_TILE_INDEX_TEXELS, 0);
-  }
-  glBindImageTexture(HV_IMAGE_HDR, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
-  glUseProgram(0);
 }
 
 }  // namespace hv::render

@@ -7,7 +7,7 @@
 
 namespace hv::render {
 
-void LtcTextures::bind() {
+void LtcTextures::bind(gl::PassBindings& b) {
   if (!sampler_) {
     constexpr int n = HV_LTC_TABLE_SIZE;
     const std::span<const float> data = ltcTableData();
@@ -29,17 +29,7 @@ void LtcTextures::bind() {
     glSamplerParameteri(sampler_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   }
   const GLuint units[2] = {HV_LTC_TEXTURE_UNIT0, HV_LTC_TEXTURE_UNIT1};
-  for (int t = 0; t < 2; ++t) {
-    glBindTextureUnit(units[t], tex_[t].id());
-    glBindSampler(units[t], sampler_.id());
-  }
-}
-
-void LtcTextures::unbind() {
-  for (GLuint u : {GLuint(HV_LTC_TEXTURE_UNIT0), GLuint(HV_LTC_TEXTURE_UNIT1)}) {
-    glBindTextureUnit(u, 0);
-    glBindSampler(u, 0);
-  }
+  for (int t = 0; t < 2; ++t) b.texture(units[t], tex_[t].id(), sampler_.id());
 }
 
 }  // namespace hv::render

@@ -3,17 +3,16 @@
 // only for a light pass whose program reads them (an LTC sphere or tube specular mode).
 #pragma once
 
+#include "halfvec/gl/bindings.hpp"
 #include "halfvec/gl/objects.hpp"
 
 namespace hv::render {
 
 class LtcTextures {
  public:
-  // Binds the two textures with the sampler to HV_LTC_TEXTURE_UNIT0 / UNIT1, uploading the table
-  // the first time.
-  void bind();
-  // Unbinds both units (textures and sampler), as every pass leaves its bindings.
-  static void unbind();
+  // Binds the two textures with the sampler to HV_LTC_TEXTURE_UNIT0 / UNIT1 in the pass's scope
+  // (which releases them), uploading the table the first time.
+  void bind(gl::PassBindings& b);
 
  private:
   gl::Texture tex_[2];

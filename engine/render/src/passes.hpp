@@ -3,7 +3,10 @@
 // names; the Renderer (renderer.cpp) owns the targets and wires one pass's output into the next.
 // Adding a pass: a struct of what it reads and writes, a run function in its own .cpp, one line in
 // Renderer::render. Resource slots are the #defines of shaders/common/bindings.glsl, which the
-// shaders include too.
+// shaders include too. Every pass binds through one gl::PassBindings scope opened with kPassSlots
+// (halfvec/gl/bindings.hpp): the scope clears the shared slots when it opens, declares what the
+// pass binds, releases it at the end and, under GL debug output, reports a program that reads a
+// slot the pass did not bind.
 #pragma once
 
 #include <memory>
@@ -11,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "halfvec/gl/bindings.hpp"
 #include "halfvec/gl/objects.hpp"
 #include "halfvec/gl/program.hpp"
 #include "halfvec/gl/timer.hpp"
@@ -21,6 +25,7 @@
 #include "halfvec/render/variant_key.hpp"
 #include "halfvec/shaders/common/bindings.glsl"
 #include "ltc_textures.hpp"
+#include "pass_slots.hpp"
 
 namespace hv::render {
 
@@ -47,9 +52,7 @@ struct GBufferView {
   GLuint base_cavity = 0, material = 0, normal = 0, depth = 0;
 };
 // Binds the G-buffer on units HV_UNIT_BASE_CAVITY .. HV_UNIT_DEPTH with `sampler`.
-void bindGBuffer(const GBufferView& g, GLuint sampler);
-// Releases what bindGBuffer bound (the samplers of those units).
-void unbindGBuffer();
+void bindGBuffer(gl::PassBindings& b, const GBufferView& g, GLuint sampler);
 
 // The tile light lists: culling's output, read by the light pass, the lights_per_tile view and
 // Renderer::lightWork. `ranges`: per tile (offset, count) into `indices` (after a 4-uint header
@@ -88,13 +91,18 @@ class LightCulling {
     size_t batch_lights = 0;                               // DebugOptions::cull_batch_lights
     bool stage_timers = false;                             // DebugOptions::cull_stage_timers
   };
-  // Builds the lists for `frame`; updates frame.block.counts.y (list capacity) when it grows.
+  // Builds the lists for `frame`; updates frame.block.tile_capacity when it grows.
   TileListView run(const PassContext& ctx, FrameUniforms& frame, const Input& in);
   TileListView view() const;
   size_t readbacks() const { return readbacks_; }
   size_t capacity() const { return capacity_; }
 
  private:
+  struct Plan;  // the frame's grid of groups and batches (light_cull_pass.cpp)
+  static Plan plan(const FrameBlock& frame, const Input& in);
+  void cull(const PassContext& ctx, gl::PassBindings& b, const Plan& p, bool stage_timers) const;
+  void dispatch(gl::PassBindings& b, const Plan& p, GLuint program, size_t record,
+                bool per_light) const;
   void growList(size_t need);
   // Sizes the per-tile, per-group and per-light buffers (masks cleared when created).
   void ensureBuffers(size_t tiles, size_t groups, size_t lights, size_t mask_uints);
@@ -144,8 +152,7 @@ class GpuEnvironment {
   const BakeTimings& timings() const { return timings_; }
   // Binds units HV_UNIT_RADIANCE .. HV_UNIT_IRRADIANCE and the environment block; a missing
   // texture is replaced by one of the right type (`fallback_2d`, a black cube).
-  void bind(GLuint fallback_2d) const;
-  void unbind() const;
+  void bind(gl::PassBindings& b, GLuint fallback_2d) const;
 
  private:
   gl::Texture radiance_, irradiance_, env_brdf_, black_cube_;

@@ -1,6 +1,7 @@
 // FXAA pass (halfvec/render/post_aa.hpp): one fullscreen triangle, input texture unit 0.
 #include "halfvec/render/post_aa.hpp"
 
+#include "pass_slots.hpp"
 #include "pipeline_state.hpp"
 
 namespace hv::render {
@@ -33,15 +34,14 @@ void FxaaPass::run(gl::ProgramCache& programs, GLuint input, GLuint output_fbo, 
        {}});
   glBindFramebuffer(GL_FRAMEBUFFER, output_fbo);
   glViewport(0, 0, width, height);
-  glUseProgram(prog);
-  glBindTextureUnit(0, input);
-  glBindSampler(0, linear_.id());
-  glBindVertexArray(vao_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindVertexArray(0);
-  glBindSampler(0, 0);
-  glBindTextureUnit(0, 0);
-  glUseProgram(0);
+  {
+    gl::PassBindings b(kPassSlots, "fxaa");
+    b.use(prog);
+    b.texture(0, input, linear_.id());  // t_ldr (fxaa.frag)
+    glBindVertexArray(vao_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

@@ -180,6 +180,12 @@ void Renderer::ensureTargets(int w, int h) {
   t.output = gl::createFramebuffer("output", {{&t.ldr}});
 }
 
+struct Renderer::FrameLighting {
+  ShadowMaps::Stats shadows;
+  TileListView tiles;   // the culling's lists, when culled
+  bool culled = false;  // the culling pass ran
+};
+
 FrameStats Renderer::render(int width, int height, DebugView view,
                             std::optional<GLuint> present_fbo) {
   if (!scene_) throw gl::GlError("Renderer::render called before setScene");
@@ -191,36 +197,61 @@ FrameStats Renderer::render(int width, int height, DebugView view,
   // Settings edited in place (viewer), or another term view: other term masks.
   if (!(scene_->settings == key_settings_) || terms_changed) refreshVariants();
   programs_.beginFrame();
+  FrameUniforms frame = frameUniforms(width, height, view);
+  const PassContext ctx{programs_, timer_, nearest_.id()};
+  const FrameLighting lit = lightFrame(ctx, frame, view);
   Targets& t = *targets_;
-  Passes& p = *passes_;
+  const bool post = postPassesActive(view);
+  final_ldr_ = 0;
+  // With post passes, the tone map writes the output target and postPasses presents it.
+  const bool present = present_fbo.has_value() && !post;
+  runTonemapPass(
+      ctx, {t.hdr.id(), t.gbufferView(), passes_->culling.view().ranges, view, scene_->settings},
+      {present ? *present_fbo : t.output.id(), present ? t.output.id() : 0u, width, height},
+      empty_vao_.id());
+  if (post) postPasses(view, present_fbo, width, height);
+  if (debug_.floor_pass) {
+    if (!t.floor) t.floor = gl::createTexture2D("floor pass scratch", GL_RGBA16F, width, height);
+    runFloorPass(ctx, t.gbufferView(), t.floor.id(), width, height);
+  }
+  applyState(PipelineState{});
+  return frameStats(lit, width, height);
+}
+
+FrameUniforms Renderer::frameUniforms(int width, int height, DebugView view) const {
   FrameUniforms frame{makeFrameBlock(*scene_, width, height), frame_ubo_.id()};
-  frame.block.counts.x = static_cast<uint32_t>(gpu_->lightCount());
-  frame.block.counts.y = static_cast<uint32_t>(p.culling.capacity());
-  frame.block.counts.z = static_cast<uint32_t>(view);
+  frame.block.light_count = static_cast<uint32_t>(gpu_->lightCount());
+  frame.block.tile_capacity = static_cast<uint32_t>(passes_->culling.capacity());
+  frame.block.debug_view = static_cast<uint32_t>(view);
   // Term views: no background (ambient.comp), no emissive (masked out in the G-buffer pass).
-  frame.block.counts.w = !terms            ? 0u
-                         : terms->emissive ? kFrameNoBackground
-                                           : kFrameNoBackground | kFrameNoEmissive;
+  frame.block.frame_flags = !term_view_            ? 0u
+                            : term_view_->emissive ? kFrameNoBackground
+                                                   : kFrameNoBackground | kFrameNoEmissive;
   frame.upload();
   glBindBufferBase(GL_UNIFORM_BUFFER, HV_UBO_FRAME, frame_ubo_.id());
-  const PassContext ctx{programs_, timer_, nearest_.id()};
-  const GBufferView gbuffer = t.gbufferView();
+  return frame;
+}
 
+// Shadow maps, G-buffer, culling, direct and ambient light and the emitters: the HDR target.
+Renderer::FrameLighting Renderer::lightFrame(const PassContext& ctx, FrameUniforms& frame,
+                                             DebugView view) {
+  Targets& t = *targets_;
+  Passes& p = *passes_;
+  const GBufferView gbuffer = t.gbufferView();
+  FrameLighting lit;
   // Shadow maps of the shadowed lights (cached until a light or a caster changes).
-  ShadowMaps::Stats shadow_stats;
   if (key_.shadows) {
-    shadow_stats =
+    lit.shadows =
         p.shadows.run(ctx, {*scene_, *gpu_, key_.settings.shadow_map_size, lights_version_});
   }
   runGBufferPass(ctx,
                  {*scene_, *gpu_, key_, gbuffer_descs_, draw_order_,
-                  (frame.block.counts.w & kFrameNoEmissive) == 0},
-                 {t.gbuffer.id(), width, height});
+                  (frame.block.frame_flags & kFrameNoEmissive) == 0},
+                 {t.gbuffer.id(), t.width, t.height});
   // key_.settings: culling auto resolved (chooseCulling).
-  const bool culled = key_.settings.culling == Culling::Tiled || view == DebugView::LightsPerTile;
-  TileListView tiles;
-  if (culled) {
-    tiles = p.culling.run(
+  lit.culled = key_.settings.culling == Culling::Tiled || view == DebugView::LightsPerTile;
+  if (lit.culled) {
+    lit.tiles = p.culling.run(
         ctx, frame,
         {t.depth.id(), gpu_->lightBuffer(), gpu_->lightCount(), &gpu_->lightCullSpheres(),
          debug_.tile_bound_limit, debug_.cull_batch_lights, debug_.cull_stage_timers});
@@ -239,39 +270,29 @@ FrameStats Renderer::render(int width, int height, DebugView view,
   // Without an environment the ambient pass would add nothing: the background is black, the HDR
   // target's clear value (docs/performance.md "Passes of the frame").
   if (p.environment->present()) {
-    const GLuint ao = key_.ao ? p.ao.run(ctx, gbuffer, key_.settings, width, height) : 0u;
-    runAmbientPass(ctx, {gbuffer, *p.environment, ambient_desc_, ao}, t.hdr.id(), width, height);
+    const GLuint ao = key_.ao ? p.ao.run(ctx, gbuffer, key_.settings, t.width, t.height) : 0u;
+    runAmbientPass(ctx, {gbuffer, *p.environment, ambient_desc_, ao}, t.hdr.id(), t.width,
+                   t.height);
   }
   emitterPass(view);
-  const bool post = postPassesActive(view);
-  final_ldr_ = 0;
-  // With post passes, the tone map writes the output target and postPasses presents it.
-  const bool present = present_fbo.has_value() && !post;
-  runTonemapPass(
-      ctx, {t.hdr.id(), gbuffer, p.culling.view().ranges, view, scene_->settings},
-      {present ? *present_fbo : t.output.id(), present ? t.output.id() : 0u, width, height},
-      empty_vao_.id());
-  if (post) postPasses(view, present_fbo, width, height);
-  if (debug_.floor_pass) {
-    if (!t.floor) t.floor = gl::createTexture2D("floor pass scratch", GL_RGBA16F, width, height);
-    runFloorPass(ctx, gbuffer, t.floor.id(), width, height);
-  }
-  applyState(PipelineState{});
+  return lit;
+}
 
+FrameStats Renderer::frameStats(const FrameLighting& lit, int width, int height) {
   FrameStats stats;
   stats.passes = timer_.resolve();
   for (auto& [name, ms] : stats.passes) stats.total_ms += ms;
   stats.width = width;
   stats.height = height;
-  if (culled) {
+  if (lit.culled) {
     // The scan's total, for the stats: read after the timers, which already waited for the frame.
     uint32_t total = 0;
-    glGetNamedBufferSubData(tiles.indices, 0, sizeof total, &total);
+    glGetNamedBufferSubData(lit.tiles.indices, 0, sizeof total, &total);
     tile_entries_ = total;
   }
   stats.tile_light_entries = tile_entries_;
-  stats.shadow_maps = shadow_stats.maps;
-  stats.shadow_maps_rendered = shadow_stats.rendered;
+  stats.shadow_maps = lit.shadows.maps;
+  stats.shadow_maps_rendered = lit.shadows.rendered;
   return stats;
 }
 
@@ -345,8 +366,9 @@ Renderer::LightWork Renderer::lightWork() const {
   LightWork w;
   for (int y = 0; y < t.height; ++y) {
     for (int x = 0; x < t.width; ++x) {
-      const uint8_t model = mat[(size_t(y) * t.width + x) * 4 + 2];
-      if (model != static_cast<uint8_t>(ShadingModel::DefaultLit)) continue;
+      // The byte read back is the stored unorm8 code: as a float, what the shaders decode.
+      const uint8_t stored = mat[(size_t(y) * t.width + x) * 4 + 2];
+      if (glsl::decodeShadingModel(stored / 255.0f) != glsl::HV_MODEL_DEFAULT_LIT) continue;
       ++w.lit_pixels;
       const size_t tile = size_t(y / kTileHeight) * tiles_x + x / kTileSize;
       w.light_pixel_evaluations += brute ? gpu_->lightCount() : ranges[tile * 2 + 1];
@@ -388,7 +410,7 @@ GBufferReadback Renderer::readGBuffer() const {
     g.cavity[i] = base[4 * i + 3] / 255.0f;  // alpha of an sRGB format is linear
     g.metallic[i] = mat[4 * i];
     g.roughness[i] = glsl::decodeRoughness16(glsl::vec2(mat[4 * i + 1], mat[4 * i + 3]));
-    g.model[i] = static_cast<uint32_t>(mat[4 * i + 2] * 255.0f + 0.5f);
+    g.model[i] = glsl::decodeShadingModel(mat[4 * i + 2]);
     g.normal[i] = glsl::octDecode(glsl::vec2(nrm[2 * i], nrm[2 * i + 1]));
   }
   return g;

@@ -13,6 +13,7 @@ void runTonemapPass(const PassContext& ctx, const TonemapPassInput& in,
   gl::ScopedPass pass(ctx.timer, "tonemap");
   applyState(PipelineState{});
   const RenderSettings& s = in.settings;
+  gl::PassBindings b(kPassSlots, "tonemap");
   GLuint prog;
   const bool tone_mapped = in.view == DebugView::None || termView(in.view);
   if (tone_mapped) {
@@ -23,21 +24,19 @@ void runTonemapPass(const PassContext& ctx, const TonemapPassInput& in,
                              {{GL_VERTEX_SHADER, "passes/fullscreen.vert"},
                               {GL_FRAGMENT_SHADER, "passes/tonemap.frag"}},
                              defines});
-    glBindTextureUnit(HV_UNIT_HDR, in.hdr);
-    glBindSampler(HV_UNIT_HDR, ctx.nearest);
+    b.texture(HV_UNIT_HDR, in.hdr, ctx.nearest);
   } else {
     prog = ctx.programs.get({"debug_view",
                              {{GL_VERTEX_SHADER, "passes/fullscreen.vert"},
                               {GL_FRAGMENT_SHADER, "passes/debug_view.frag"}},
                              {}});
-    bindGBuffer(in.gbuffer, ctx.nearest);
-    if (in.tile_ranges) {
-      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HV_BINDING_TILE_RANGES, in.tile_ranges);
-    }
+    bindGBuffer(b, in.gbuffer, ctx.nearest);
+    // 0 before any culling ran: the lights_per_tile view is the only reader, and it culls.
+    b.storage(HV_BINDING_TILE_RANGES, in.tile_ranges);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, out.framebuffer);
   glViewport(0, 0, out.width, out.height);
-  glUseProgram(prog);
+  b.use(prog);
   glBindVertexArray(fullscreen_vao);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   if (out.capture != 0 && out.capture != out.framebuffer) {
@@ -46,12 +45,6 @@ void runTonemapPass(const PassContext& ctx, const TonemapPassInput& in,
                            out.width, out.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   }
   glBindVertexArray(0);
-  glUseProgram(0);
-  if (tone_mapped) {
-    glBindSampler(HV_UNIT_HDR, 0);
-  } else {
-    unbindGBuffer();
-  }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

@@ -5,6 +5,11 @@
 
 namespace hv {
 
+static_assert(int(LightType::Point) == HV_LIGHT_POINT &&
+                  int(LightType::Sphere) == HV_LIGHT_SPHERE &&
+                  int(LightType::Tube) == HV_LIGHT_TUBE,
+              "GpuLight.params.y holds hv::LightType (gpu_records.glsl)");
+
 GpuLight packLight(const Light& light) {
   GpuLight g{};
   float radius = light.type == LightType::Point ? 0.0f : std::max(light.radius, 0.0f);

@@ -24,6 +24,9 @@ struct BakeTimings;
 
 namespace hv::render {
 
+struct FrameUniforms;  // engine/render/src/passes.hpp
+struct PassContext;
+
 enum class DebugView : uint32_t {
   None = 0,
   BaseColor,
@@ -184,6 +187,12 @@ class Renderer {
   struct Targets;
   struct Passes;  // the pass objects and their resources (engine/render/src/passes.hpp)
   void ensureTargets(int width, int height);
+  // The steps of render(): the frame's uniforms (uploaded, bound on HV_UBO_FRAME), the passes that
+  // fill the HDR target, the frame's statistics (after the tone map and post passes).
+  struct FrameLighting;  // what lightFrame leaves for frameStats (renderer.cpp)
+  FrameUniforms frameUniforms(int width, int height, DebugView view) const;
+  FrameLighting lightFrame(const PassContext& ctx, FrameUniforms& frame, DebugView view);
+  FrameStats frameStats(const FrameLighting& lit, int width, int height);
   void refreshVariants();  // key, program descriptions, draw order
   // Overrides the key's term masks with those of the per-term view being rendered (none: the
   // scene's own). refreshVariants applies it; render sets it from its view.

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "halfvec/shading/glsl.hpp"
+#include "halfvec/shading/gpu_records.hpp"
 #include "halfvec/shading/ltc_table.hpp"
 
 #pragma GCC diagnostic push

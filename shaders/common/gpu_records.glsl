@@ -1,0 +1,89 @@
+// The records the C++ uploads and the shaders read, declared once for both languages
+// (zeux/niagara's src/shaders/mesh.h does the same): GLSL includes this file, C++ includes it via
+// halfvec/shading/gpu_records.hpp, which checks every size and offset with static_asserts. Rules
+// of a shared header: halfvec/shading/glsl.hpp. Plain structs only (no functions), so the C++ side
+// can hold them outside the shading headers' anonymous namespace: hv::GpuLight, hv::GpuMaterial.
+//
+// Layout rules: every member is placed so that std140 and std430 give the same offsets as a C++
+// struct of glm types (a vec4 or a uvec4 on a 16-byte boundary; a vec3 on a 16-byte boundary with a
+// 4-byte scalar after it in the same 16 bytes; scalars on 4 bytes; arrays of vec4 only, whose
+// stride is 16 in both rules). Each struct's size is a multiple of 16, so an array of it has the
+// same stride in C++, std140 and std430.
+#ifndef HV_GPU_RECORDS_GLSL
+#define HV_GPU_RECORDS_GLSL
+
+// ---- Lights -------------------------------------------------------------------------------------
+// Light type codes stored (as float) in GpuLight.params.y; = hv::LightType.
+#define HV_LIGHT_POINT 0
+#define HV_LIGHT_SPHERE 1
+#define HV_LIGHT_TUBE 2
+
+// One light as the GPU reads it: std430 storage buffer HV_BINDING_LIGHTS, or 4 RGBA32F texels of
+// a buffer texture (light_shade.comp, HV_LIGHTS_TEXTURE), 64 bytes. Points and spheres read only
+// the first two vec4 in the light pass, tubes three, which is why the fields are vec4 texels.
+//  position_radius: x,y,z world position (tube: segment center), w sphere/capsule radius (m)
+//  color_inv_range: rgb linear color premultiplied by intensity I (W/sr), w 1/R (Karis eq. 9
+//                   window)
+//  axis_length:     x,y,z unit tube axis, w tube segment length (m); 0 for point and sphere
+//  params:          x range R (Karis eq. 9 window), y type (HV_LIGHT_*), z culling radius, w the
+//                   light's cube in the shadow atlas + 1 (0: no shadow map; written by the shadow
+//                   pass, engine/render/src/shadow_pass.cpp). Named by the accessors lightRange,
+//                   lightType, lightCullRadius, lightShadowCube (lights.glsl).
+struct GpuLight {
+  vec4 position_radius;
+  vec4 color_inv_range;
+  vec4 axis_length;
+  vec4 params;
+};
+
+// ---- Materials ----------------------------------------------------------------------------------
+// GpuMaterial::texture_bits
+#define HV_MAT_BASE_COLOR_TEX 1u
+#define HV_MAT_METAL_ROUGH_TEX 2u
+#define HV_MAT_NORMAL_TEX 4u
+#define HV_MAT_OCCLUSION_TEX 8u
+#define HV_MAT_EMISSIVE_TEX 16u
+#define HV_MAT_VERTEX_COLOR_BIT 32u   // multiply base colour and alpha by the vertex colour
+#define HV_MAT_TEX_TRANSFORM_BIT 64u  // some texture has a KHR_texture_transform
+// GpuMaterial::alpha_mode
+#define HV_ALPHA_OPAQUE 0u
+#define HV_ALPHA_MASK 1u
+// Texture slots: the index of uv_linear / uv_offset and of the texture unit after
+// HV_UNIT_MATERIAL_TEXTURES (bindings.glsl).
+#define HV_MAT_SLOT_BASE_COLOR 0u
+#define HV_MAT_SLOT_METAL_ROUGH 1u
+#define HV_MAT_SLOT_NORMAL 2u
+#define HV_MAT_SLOT_OCCLUSION 3u
+#define HV_MAT_SLOT_EMISSIVE 4u
+#define HV_MAT_SLOTS 5
+
+// One material as the G-buffer pass reads it: std140 uniform block HV_UBO_MATERIAL
+// (material.glsl), 256 bytes; GpuScene keeps every material in one buffer, one per
+// GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT stride. Offsets in bytes on the right.
+struct GpuMaterial {
+  vec4 base_color;             //   0 linear rgb, alpha
+  float metallic;              //  16
+  float roughness;             //  20 perceptual
+  float cavity;                //  24
+  float alpha_cutoff;          //  28 glTF alphaCutoff (alpha_mode HV_ALPHA_MASK)
+  vec3 emissive;               //  32 linear rgb radiance
+  float normal_scale;          //  44 glTF normalTexture.scale
+  float occlusion_strength;    //  48 glTF occlusionTexture.strength
+  uint texture_bits;           //  52 HV_MAT_* bits
+  uint alpha_mode;             //  56 HV_ALPHA_*
+  uint shading_model;          //  60 HV_MODEL_* (gbuffer.glsl) = hv::ShadingModel
+  uint texcoord_base_color;    //  64 the UV set each texture reads (0 or 1)
+  uint texcoord_metal_rough;   //  68
+  uint texcoord_normal;        //  72
+  uint texcoord_occlusion;     //  76
+  uint texcoord_emissive;      //  80
+  uint unused0;                //  84
+  uint unused1;                //  88
+  uint unused2;                //  92
+  // KHR_texture_transform per slot (HV_MAT_SLOT_*): uv_linear[i] = textureTransformLinear
+  // (texture_transform.glsl), uv_offset[i].xy the offset.
+  vec4 uv_linear[HV_MAT_SLOTS];  //  96
+  vec4 uv_offset[HV_MAT_SLOTS];  // 176
+};
+
+#endif
