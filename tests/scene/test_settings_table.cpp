@@ -1,9 +1,13 @@
 // The settings table (halfvec/scene/render_settings.hpp) is the one description of every render
 // setting: each row must load from its key, be written back at its path, and give its define the
-// value the shaders compare with (setting_values.glsl), for every value of its type.
+// value the shaders compare with (setting_values.glsl, generated from the table), for every value
+// of its type.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <type_traits>
 
@@ -116,6 +120,52 @@ TEST(SettingsTable, EveryValueReachesItsDefine) {
     }
   });
   EXPECT_GE(defines, 18);
+}
+
+// The shaders (and the GLSL headers compiled as C++) read the committed file; it must be what the
+// value lists give, so that a value's define is its enum's number. The build checks it too
+// (hv_setting_values --check); this names the first line that differs.
+TEST(SettingsTable, ShaderValuesAreGeneratedFromTheLists) {
+  const std::string path = std::string(HV_SOURCE_DIR) + "/shaders/common/setting_values.glsl";
+  std::ifstream in(path, std::ios::binary);
+  ASSERT_TRUE(in) << path;
+  const std::string committed{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const std::string generated = settingValuesGlsl();
+  if (committed == generated) return;
+  size_t at = 0;
+  while (at < committed.size() && at < generated.size() && committed[at] == generated[at]) ++at;
+  const size_t line =
+      committed.rfind('\n', at) == std::string::npos ? 0 : committed.rfind('\n', at) + 1;
+  ADD_FAILURE() << path << " is stale at \""
+                << committed.substr(line, committed.find('\n', line) - line) << "\": expected \""
+                << generated.substr(line, generated.find('\n', line) - line)
+                << "\"; regenerate with build/shaders/hv_setting_values --out " << path;
+}
+
+// Every enumerated row's values name a define each, or are a flag's numbers (0, 1, ...).
+TEST(SettingsTable, EnumListsNameDefinesOrNumbers) {
+  int lists = 0;
+  forEachSetting([&](const auto& row) {
+    using T = typename std::decay_t<decltype(row)>::Type;
+    if constexpr (std::is_enum_v<T> && requires { EnumNames<T>::defines; }) {
+      ++lists;
+      const auto& defines = EnumNames<T>::defines;
+      ASSERT_EQ(defines.size(), EnumNames<T>::names.size()) << row.key;
+      const bool numbers = std::isdigit(static_cast<unsigned char>(defines[0][0]));
+      for (size_t i = 0; i < defines.size(); ++i) {
+        if (numbers) {
+          EXPECT_EQ(defines[i], std::to_string(i)) << row.key;
+        } else {
+          EXPECT_TRUE(defines[i].starts_with("HV_")) << row.key << ": " << defines[i];
+          EXPECT_NE(settingValuesGlsl().find("#define " + std::string(defines[i]) + " " +
+                                             std::to_string(i) + "\n"),
+                    std::string::npos)
+              << defines[i];
+        }
+      }
+    }
+  });
+  EXPECT_GE(lists, 15);
 }
 
 TEST(SettingsTable, UnknownKeyNamesTheTablesKeys) {

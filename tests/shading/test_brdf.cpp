@@ -304,7 +304,8 @@ TEST(Brdf, WhiteFurnaceAlbedoAtMostOne) {
 
 // The settings table's defaults are the GLSL defaults of the light code (a program compiled
 // without a define behaves as the default scene); that every enum value reaches its define as
-// setting_values.glsl's number is tests/scene/test_settings_table.cpp's.
+// setting_values.glsl's number (generated from the same lists) is
+// tests/scene/test_settings_table.cpp's.
 TEST(Brdf, TableDefaultsAreTheGlslDefaults) {
   std::map<std::string, std::string> def;
   for (auto& [k, v] : hv::brdfDefines(hv::RenderSettings{})) def[k] = v;

@@ -2,58 +2,54 @@
 // table, HV_RENDER_SETTINGS, with a row per setting. Everything that lists settings is generated
 // from it: the RenderSettings struct, the scene loader's keys and parser, the scene writer, the
 // variant key's canonical form, validation and the reasons of the manifest, the shader defines,
-// the viewer's Render panel and the trade report's option rows. The enum values that reach the
-// shaders are defined once, in shaders/common/setting_values.glsl, for GLSL and C++ alike.
+// the viewer's Render panel, the trade report's option rows, and the values the shaders compare
+// the defines against (shaders/common/setting_values.glsl, generated from the value lists below
+// by hv_setting_values; the build fails while it is stale).
 //
-// Adding a setting: one row below (and, for an enum, its list of values above, each value's define
-// in setting_values.glsl), the shader code it selects, and a test.
+// Adding a setting: one row below (and, for an enum, its list of values above), the shader code
+// it selects, and a test; then regenerate setting_values.glsl when the list names a define:
+//   build/shaders/hv_setting_values --out shaders/common/setting_values.glsl
 #pragma once
 
 #include <array>
 #include <cstdint>
-#include <initializer_list>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
-
-#include "halfvec/shaders/common/setting_values.glsl"
 
 namespace hv {
 
 template <class E>
 struct EnumNames;  // names of an enum's values, indexed by value (halfvec/scene/enums.hpp)
 
-// An enumerated setting's values, each V(ENUMERATOR, "scene-file name", VALUE): VALUE is the
-// define of setting_values.glsl the shaders compare against (0 and 1 for a flag). HV_SETTING_ENUM
-// declares the enum class and its names from one list, and fails to compile unless the values
-// are 0, 1, 2, ... in list order (the names are indexed by value).
-constexpr bool settingValuesInListOrder(std::initializer_list<int> values) {
-  int expected = 0;
-  for (int v : values) {
-    if (v != expected++) return false;
-  }
-  return true;
-}
-#define HV_SETTING_ENUMERATOR(NAME, STR, VALUE) NAME = VALUE,
-#define HV_SETTING_ENUM_NAME(NAME, STR, VALUE) STR,
-#define HV_SETTING_ENUM_VALUE(NAME, STR, VALUE) VALUE,
+// An enumerated setting's values, each V(ENUMERATOR, "scene-file name", DEFINE): the value is its
+// position in the list (0, 1, 2, ...; the names are indexed by value), and DEFINE the name of the
+// GLSL define of that value the shaders compare against, written into setting_values.glsl by
+// settingValuesGlsl(). A flag's list (its define is 0 or 1) gives the numbers instead, which
+// define nothing. HV_SETTING_ENUM declares the enum class, its names and its define names from one
+// list.
+#define HV_SETTING_ENUMERATOR(NAME, STR, DEFINE) NAME,
+#define HV_SETTING_ENUM_NAME(NAME, STR, DEFINE) STR,
+#define HV_SETTING_ENUM_DEFINE(NAME, STR, DEFINE) #DEFINE,
 #define HV_SETTING_ENUM(E, VALUES)                                         \
   enum class E : uint8_t { VALUES(HV_SETTING_ENUMERATOR) };                \
-  static_assert(settingValuesInListOrder({VALUES(HV_SETTING_ENUM_VALUE)}), \
-                #E ": the values must be 0, 1, 2, ... in list order");     \
   template <>                                                              \
   struct EnumNames<E> {                                                    \
     static constexpr std::array names =                                    \
         std::to_array<std::string_view>({VALUES(HV_SETTING_ENUM_NAME)});   \
+    static constexpr std::array defines =                                  \
+        std::to_array<std::string_view>({VALUES(HV_SETTING_ENUM_DEFINE)}); \
   }
 
 // Term choices; defaults are Karis 2013's choice (docs/brdf.md).
+// brdf.d: the microfacet distribution (Karis 2013, "Specular D").
 #define HV_DISTRIBUTION_TERMS(V)         \
   V(GGX, "ggx", HV_D_GGX)                \
   V(Beckmann, "beckmann", HV_D_BECKMANN) \
   V(BlinnPhong, "blinn_phong", HV_D_BLINN_PHONG)
 HV_SETTING_ENUM(DistributionTerm, HV_DISTRIBUTION_TERMS);
+// brdf.v: the visibility term G / (4 NoL NoV) (Karis 2013, "Specular G").
 #define HV_VISIBILITY_TERMS(V)                                                           \
   /* k = alpha/2 (Karis 2013 eq. 4; remap_roughness for lights) */                       \
   V(SchlickGGX, "schlick_ggx", HV_V_SCHLICK_GGX)                                         \
@@ -68,6 +64,7 @@ HV_SETTING_ENUM(DistributionTerm, HV_DISTRIBUTION_TERMS);
   V(CookTorrance, "cook_torrance", HV_V_COOK_TORRANCE)                                   \
   V(Implicit, "implicit", HV_V_IMPLICIT)
 HV_SETTING_ENUM(VisibilityTerm, HV_VISIBILITY_TERMS);
+// brdf.f: Fresnel (Karis 2013, "Specular F").
 #define HV_FRESNEL_TERMS(V)                    \
   V(SchlickPow5, "schlick_pow5", HV_F_SCHLICK) \
   V(SchlickSG, "schlick_sg", HV_F_SCHLICK_SG)  \
@@ -76,19 +73,25 @@ HV_SETTING_ENUM(VisibilityTerm, HV_VISIBILITY_TERMS);
 HV_SETTING_ENUM(FresnelTerm, HV_FRESNEL_TERMS);
 #define HV_DIFFUSE_TERMS(V) V(Lambert, "lambert", HV_FD_LAMBERT) V(Burley, "burley", HV_FD_BURLEY)
 HV_SETTING_ENUM(DiffuseTerm, HV_DIFFUSE_TERMS);
+// sphere_diffuse: Karis's point approximation or the horizon-correct sphere irradiance (Lagarde
+// & de Rousiers 2014, section 4.7).
 #define HV_SPHERE_DIFFUSES(V)                                 \
   V(KarisPoint, "karis_point", HV_SPHERE_DIFFUSE_KARIS_POINT) \
   V(HorizonCorrect, "horizon_correct", HV_SPHERE_DIFFUSE_HORIZON)
 HV_SETTING_ENUM(SphereDiffuse, HV_SPHERE_DIFFUSES);
+// sphere_specular: representative point (Karis 2013 eqs. 10, 11, 14) or LTC (docs/lights.md).
 #define HV_SPHERE_SPECULARS(V)                                                            \
   V(RepresentativePoint, "representative_point", HV_SPHERE_SPECULAR_REPRESENTATIVE_POINT) \
   V(Ltc, "ltc", HV_SPHERE_SPECULAR_LTC)
 HV_SETTING_ENUM(SphereSpecular, HV_SPHERE_SPECULARS);
+// tube_specular: closest point to the reflection ray (Karis 2013 eq. 19), smallest angle
+// (eq. 18), LTC over the capsule.
 #define HV_TUBE_SPECULARS(V)                                                   \
   V(ClosestPointEq19, "closest_point_eq19", HV_TUBE_SPECULAR_CLOSEST_POINT)    \
   V(SmallestAngleEq18, "smallest_angle_eq18", HV_TUBE_SPECULAR_SMALLEST_ANGLE) \
   V(Ltc, "ltc", HV_TUBE_SPECULAR_LTC)
 HV_SETTING_ENUM(TubeSpecular, HV_TUBE_SPECULARS);
+// tube_diffuse: Karis 2013 eq. 16 or the capsule's irradiance (identity LTC).
 #define HV_TUBE_DIFFUSES(V) \
   V(KarisEq16, "karis_eq16", HV_TUBE_DIFFUSE_KARIS_EQ16) V(Ltc, "ltc", HV_TUBE_DIFFUSE_LTC)
 HV_SETTING_ENUM(TubeDiffuse, HV_TUBE_DIFFUSES);
@@ -102,10 +105,14 @@ HV_SETTING_ENUM(Culling, HV_CULLINGS);
 HV_SETTING_ENUM(EnvBrdf, HV_ENV_BRDFS);
 #define HV_IRRADIANCES(V) V(SH9, "sh9", 0) V(Cubemap, "cubemap", 1)
 HV_SETTING_ENUM(Irradiance, HV_IRRADIANCES);
+// ibl_direction: the prefiltered radiance is read along the dominant direction of the specular
+// lobe (Lagarde & de Rousiers 2014, section 4.9.3) or the mirror direction R (Karis 2013).
 #define HV_IBL_DIRECTIONS(V)                         \
   V(Dominant, "dominant", HV_IBL_DIRECTION_DOMINANT) \
   V(Reflect, "reflect", HV_IBL_DIRECTION_REFLECT)
 HV_SETTING_ENUM(IblDirection, HV_IBL_DIRECTIONS);
+// tone_map: Reinhard per channel (Reinhard et al. 2002, eq. 3), on luminance, none (clamp),
+// Khronos PBR Neutral, ACES (Narkowicz's fit).
 #define HV_TONE_MAPS(V)                                                     \
   V(Reinhard, "reinhard", HV_TONEMAP_REINHARD)                              \
   V(ReinhardLuminance, "reinhard_luminance", HV_TONEMAP_REINHARD_LUMINANCE) \
@@ -113,6 +120,7 @@ HV_SETTING_ENUM(IblDirection, HV_IBL_DIRECTIONS);
   V(PbrNeutral, "pbr_neutral", HV_TONEMAP_PBR_NEUTRAL)                      \
   V(Aces, "aces", HV_TONEMAP_ACES)
 HV_SETTING_ENUM(ToneMap, HV_TONE_MAPS);
+// gamma: gamma 2.2 or exact sRGB (IEC 61966-2-1).
 #define HV_GAMMAS(V) V(Gamma22, "gamma22", HV_GAMMA_22) V(SRGB, "srgb", HV_GAMMA_SRGB)
 HV_SETTING_ENUM(Gamma, HV_GAMMAS);
 // Shadows of lights with `shadows: true` (docs/lights.md, "Shadows").
@@ -352,5 +360,9 @@ constexpr void forEachSetting(F&& f) {
 // value, "1" / "0" for a bool.
 std::vector<std::pair<std::string, std::string>> settingDefines(const RenderSettings& s,
                                                                 SettingPass pass);
+
+// The text of shaders/common/setting_values.glsl: a `#define` per value of every enumerated
+// setting whose list names defines (HV_SETTING_ENUM), numbered by its position, in row order.
+std::string settingValuesGlsl();
 
 }  // namespace hv
