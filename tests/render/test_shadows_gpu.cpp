@@ -362,8 +362,12 @@ TEST(Shadows, AlphaMaskedCasterCastsItsHoles) {
   r.render(w, h);
   const ImageRGBf img = r.readHdr(), ref = renderHdr(off, w, h);
   bool masked_program = false;
-  for (const gl::VariantInfo& v : r.manifest().programs)
-    masked_program |= v.name == "shadow_masked";
+  for (const gl::VariantInfo& v : r.manifest().programs) {
+    if (v.name != "shadow_masked") continue;
+    masked_program = true;
+    ASSERT_EQ(v.reasons.size(), 1u);  // the manifest says why it was compiled
+    EXPECT_NE(v.reasons[0].find("HV_SHADOW_ALPHA_MASK=1: "), std::string::npos) << v.reasons[0];
+  }
   EXPECT_TRUE(masked_program) << "the masked variant of the shadow pass was not used";
   {  // The same quad opaque: the masked variant is not compiled.
     Scene solid = on;

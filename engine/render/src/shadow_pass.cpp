@@ -45,11 +45,15 @@ bool maskedDraw(const Scene& scene, const DrawItem& d) {
 }
 
 gl::ProgramDesc shadowProgram(bool masked) {
-  gl::DefineSet defines;
-  if (masked) defines.push_back({"HV_SHADOW_ALPHA_MASK", "1"});
-  return {masked ? "shadow_masked" : "shadow",
-          {{GL_VERTEX_SHADER, "passes/shadow.vert"}, {GL_FRAGMENT_SHADER, "passes/shadow.frag"}},
-          defines};
+  gl::ProgramDesc desc{
+      masked ? "shadow_masked" : "shadow",
+      {{GL_VERTEX_SHADER, "passes/shadow.vert"}, {GL_FRAGMENT_SHADER, "passes/shadow.frag"}},
+      {}};
+  if (masked) {
+    desc.defines.push_back({"HV_SHADOW_ALPHA_MASK", "1"});
+    desc.reasons["HV_SHADOW_ALPHA_MASK"] = "the scene has alpha-masked materials (alphaMode MASK)";
+  }
+  return desc;
 }
 
 // The six faces in the order of GL's cube map layers (+X, -X, +Y, -Y, +Z, -Z), each a view
