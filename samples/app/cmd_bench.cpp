@@ -75,11 +75,9 @@ ratios.
                frames interleaved, as the median ratio with its 95% interval, with each
                scene's lights, their coverage (lights per tile) and what culling auto picks;
                --cull-stages: the culling pass timed per stage (bounds, bin, tiles);
-               --shadow-sweep: instead, for each scene with shadowed lights, the light pass's
-               and the frame's extra cost over the scene with shadows off, per filter (hard,
-               pcf, pcss) and per number of shadowed lights (the first 1, 2, ... of the
-               scene's), all frames interleaved, with the shadow maps each frame re-rendered
-               (0 when cached)
+               --shadow-sweep: instead, the light pass's and frame's extra cost over shadows
+               off per filter and number of shadowed lights (the scene's first 1, 2, ...),
+               frames interleaved, and the maps rendered meanwhile (0: cached)
   --variants   instead: programs specialized to the scene vs the uber build, GPU ms per pass on
                every scene of samples/scenes, as a markdown table (--quick: at most 640x360)
 )";
