@@ -5,6 +5,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "app/bench_report.hpp"
 #include "app/commands.hpp"
@@ -13,6 +17,7 @@
 #include "halfvec/platform/context.hpp"
 #include "halfvec/render/renderer.hpp"
 #include "halfvec/render/variant_key.hpp"
+#include "halfvec/scene/render_settings.hpp"
 #include "halfvec/scene/scene_loader.hpp"
 
 namespace hv::app {
@@ -104,6 +109,92 @@ void printShadowCost(const Scene& scene, int w, int h, int frames) {
   std::fflush(stdout);
 }
 
+// --shadow-sweep (docs/lights.md, "Shadows"): one renderer of the scene with shadows off and one
+// per filter and number k of shadowed lights (the first k of the scene's, the others off), all
+// frames interleaved so that the load hits them alike. Per configuration: the light pass's and
+// the whole frame's extra ms over the scene without shadows, per frame over that frame's floor,
+// and the shadow maps rendered in the measured frames (0: the cached maps were reused).
+void printShadowSweep(const Scene& scene, int w, int h, int frames) {
+  std::vector<size_t> shadowed;
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    if (scene.lights[i].shadows) shadowed.push_back(i);
+  }
+  if (shadowed.empty()) {
+    std::printf("  no shadowed light: nothing to sweep\n");
+    return;
+  }
+  struct Config {
+    std::string name;
+    Scene scene;
+    render::Renderer renderer;
+    eval::PassSeries series;
+    size_t rendered = 0;
+  };
+  std::vector<std::unique_ptr<Config>> cs;
+  auto add = [&](const std::string& name, ShadowFilter f, size_t k) {
+    auto c = std::make_unique<Config>();
+    c->name = name;
+    c->scene = scene;
+    c->scene.settings.shadow_filter = f;
+    for (size_t j = 0; j < shadowed.size(); ++j) c->scene.lights[shadowed[j]].shadows = j < k;
+    cs.push_back(std::move(c));
+  };
+  add("no shadows", ShadowFilter::Pcss, 0);
+  const std::pair<const char*, ShadowFilter> filters[] = {
+      {"hard", ShadowFilter::Hard}, {"pcf", ShadowFilter::Pcf}, {"pcss", ShadowFilter::Pcss}};
+  for (const auto& [label, f] : filters) {
+    for (size_t k = 1; k <= shadowed.size(); ++k) {
+      add(std::string(label) + ", " + std::to_string(k) + " light" + (k == 1 ? "" : "s"), f, k);
+    }
+  }
+  render::DebugOptions d;
+  d.floor_pass = true;
+  d.finish_each_pass = true;
+  for (auto& c : cs) {
+    c->renderer.setDebugOptions(d);
+    c->renderer.setScene(c->scene);
+    c->renderer.render(w, h);  // warm-up: compiles, renders the maps
+  }
+  for (int f = 0; f < frames; ++f) {
+    for (auto& c : cs) {
+      const render::FrameStats st = c->renderer.render(w, h);
+      c->rendered += st.shadow_maps_rendered;
+      c->series.add(st);
+    }
+  }
+  auto total = [](const eval::PassSeries& p, size_t k) {
+    double t = 0.0;
+    for (const std::string& pass : p.order) {
+      if (pass != "floor" && k < p.of(pass).size()) t += p.of(pass)[k];
+    }
+    return t;
+  };
+  std::printf(
+      "  shadow sweep, %d interleaved frames: extra cost over no shadows, x floor of the same "
+      "frame (95%% interval)\n  %-18s %22s %22s %10s %14s\n",
+      frames, "configuration", "light pass", "whole frame", "light ms", "maps rendered");
+  const eval::PassSeries& none = cs[0]->series;
+  std::printf("  %-18s %22s %22s %10.2f %14zu\n", cs[0]->name.c_str(), "", "", none.median("light"),
+              cs[0]->rendered);
+  for (size_t i = 1; i < cs.size(); ++i) {
+    const eval::PassSeries& s = cs[i]->series;
+    std::vector<double> light, frame;
+    for (size_t k = 0; k < size_t(frames); ++k) {
+      const double floor = s.of("floor").at(k);
+      light.push_back((s.of("light").at(k) - none.of("light").at(k)) / floor);
+      frame.push_back((total(s, k) - total(none, k)) / floor);
+    }
+    const eval::MedianInterval l = eval::medianInterval(light), fr = eval::medianInterval(frame);
+    char lc[64], fc[64];
+    std::snprintf(lc, sizeof lc, "%.2f (%.2f - %.2f)", l.median, l.lo, l.hi);
+    std::snprintf(fc, sizeof fc, "%.2f (%.2f - %.2f)", fr.median, fr.lo, fr.hi);
+    std::printf("  %-18s %22s %22s %10.2f %14zu\n", cs[i]->name.c_str(), lc, fc, s.median("light"),
+                cs[i]->rendered);
+  }
+  std::printf("  (floor %.2f ms, median of the no-shadows renderer)\n", none.median("floor"));
+  std::fflush(stdout);
+}
+
 // --vs-brute: one line per scene, and the markdown table for --report.
 std::string tiledVsBrute(const std::vector<Scene>& scenes, const std::vector<std::string>& paths,
                          const FrameBenchOptions& o) {
@@ -148,6 +239,9 @@ int benchFrame(const FrameBenchOptions& o) {
   if (!o.report.empty()) report_tmp = outputs.add(o.report);
   const std::vector<std::string> scenes =
       o.scene.empty() ? sampleScenePaths() : std::vector<std::string>{o.scene};
+  if (o.shadow_sweep && (o.vs_brute || !o.shader_dirs.empty() || !o.report.empty())) {
+    throw UsageError{"--shadow-sweep takes no --vs-brute, --shaders or --report"};
+  }
   if (!o.shader_dirs.empty() && scenes.size() != 1) {
     throw UsageError{"--frame --shaders needs --scene FILE"};
   }
@@ -169,7 +263,10 @@ int benchFrame(const FrameBenchOptions& o) {
   std::vector<eval::FrameCost> costs;
   for (size_t i = 0; i < scenes.size() && !o.vs_brute; ++i) {
     const std::string name = std::filesystem::path(scenes[i]).stem().string();
-    if (o.shader_dirs.empty()) {
+    if (o.shadow_sweep) {
+      std::printf("%s (%dx%d)\n", name.c_str(), o.width, o.height);
+      printShadowSweep(loaded[i], o.width, o.height, o.frames);
+    } else if (o.shader_dirs.empty()) {
       costs.push_back(
           eval::measureFrameCost(loaded[i], name, o.width, o.height, o.frames, o.cull_stages));
       printCost(costs.back());

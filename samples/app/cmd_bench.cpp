@@ -74,7 +74,10 @@ ratios.
                same scene with culling brute_force (every pixel loops over every light),
                frames interleaved, as the median ratio with its 95% interval, with each
                scene's lights, their coverage (lights per tile) and what culling auto picks;
-               --cull-stages: the culling pass timed per stage (bounds, bin, tiles)
+               --cull-stages: the culling pass timed per stage (bounds, bin, tiles);
+               --shadow-sweep: instead, the light pass's and frame's extra cost over shadows
+               off per filter and number of shadowed lights (the scene's first 1, 2, ...),
+               frames interleaved, and the maps rendered meanwhile (0: cached)
   --variants   instead: programs specialized to the scene vs the uber build, GPU ms per pass on
                every scene of samples/scenes, as a markdown table (--quick: at most 640x360)
 )";
@@ -144,6 +147,7 @@ struct BenchArgs {
   float only_range = 0.0f;
   bool quick = false, variants = false, show_breakdown = false, frame_mode = false;
   bool vs_brute = false, frames_given = false, methods = false, cull_stages = false;
+  bool shadow_sweep = false;
   std::string report;
   int types = -1;  // --types: -1 mixed, else a hv::LightType
   std::vector<std::string> shader_dirs;
@@ -201,6 +205,8 @@ BenchArgs parseBenchArgs(const Args& args) {
       b.vs_brute = true;
     } else if (a == "--cull-stages") {
       b.cull_stages = true;
+    } else if (a == "--shadow-sweep") {
+      b.shadow_sweep = true;
     } else if (a == "--report") {
       b.report = value();
     } else {
@@ -209,6 +215,7 @@ BenchArgs parseBenchArgs(const Args& args) {
   }
   if (b.vs_brute && !b.frame_mode) throw UsageError{"--vs-brute goes with --frame"};
   if (b.cull_stages && !b.frame_mode) throw UsageError{"--cull-stages goes with --frame"};
+  if (b.shadow_sweep && !b.frame_mode) throw UsageError{"--shadow-sweep goes with --frame"};
   return b;
 }
 
@@ -359,6 +366,7 @@ int cmdBench(const Args& args) {
     o.report = b.report;
     o.vs_brute = b.vs_brute;
     o.cull_stages = b.cull_stages;
+    o.shadow_sweep = b.shadow_sweep;
     return benchFrame(o);
   }
   if (b.variants)

@@ -31,8 +31,9 @@ struct FrameBenchOptions {
   std::string scene;                     // empty: every sample scene
   std::vector<std::string> shader_dirs;  // A/B shader trees (needs `scene`)
   std::string report;                    // markdown table to write (empty: none)
-  bool vs_brute = false;     // instead: whole frame, tiled culling vs brute force (interleaved)
-  bool cull_stages = false;  // the culling timed per stage (DebugOptions::cull_stage_timers)
+  bool vs_brute = false;      // instead: whole frame, tiled culling vs brute force (interleaved)
+  bool cull_stages = false;   // the culling timed per stage (DebugOptions::cull_stage_timers)
+  bool shadow_sweep = false;  // instead: shadow cost per filter and shadowed-light count
 };
 int benchFrame(const FrameBenchOptions& options);
 // The sample scene files (samples/scenes/*.json), sorted.

@@ -396,12 +396,13 @@ vec3 evaluateLight(GpuLight light, Surface s, vec3 P, vec3 V) {
 float lightCullRadius(GpuLight light) { return light.params.z; }
 
 #if HV_SHADOWS && !defined(HV_CPP)
-// The shadow of light l at the shading point (shadows.glsl): its map is cube params.w - 1 of the
-// atlas, distances over the culling radius; the emitter's radius, axis and length size PCSS's
-// penumbra. Multiplies the light's whole contribution, diffuse and specular (light_shade.comp).
-float lightShadow(GpuLight l, Surface s, ShadingPoint sp) {
+// The shadow of light l at the light pass's receivers (shadows.glsl): its map is cube
+// params.w - 1 of the atlas, distances over the culling radius; the emitter's radius, axis and
+// length size PCSS's penumbra. Multiplies the light's whole contribution, diffuse and specular
+// (light_shade.comp).
+vec4 lightShadow(GpuLight l, vec3 P[HV_SHADOW_RECEIVERS], vec3 N[HV_SHADOW_RECEIVERS], bvec4 use) {
   return shadowVisibility(vec3(l.position_radius), lightCullRadius(l), l.params.w - 1.0f,
-                          l.position_radius.w, vec3(l.axis_length), l.axis_length.w, sp.P, s.N);
+                          l.position_radius.w, vec3(l.axis_length), l.axis_length.w, P, N, use);
 }
 #endif
 

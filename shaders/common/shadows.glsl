@@ -47,6 +47,8 @@ const float HV_SHADOW_PCF_RADIUS = 1.5f;
 const float HV_PCSS_SEARCH_SCALE = 2.0f;
 // The blocker search takes every HV_PCSS_SEARCH_STEP-th tap of the filter's Vogel disk.
 #define HV_PCSS_SEARCH_STEP 1
+// Most taps of PCSS's coarse blocker test shared by a light pass invocation's receivers.
+#define HV_PCSS_COARSE_MAX_TAPS 32
 // Widest filter, radians: a receiver far behind a close blocker under a large light would
 // otherwise sample half the cube.
 const float HV_SHADOW_MAX_FILTER = 0.35f;
@@ -88,6 +90,15 @@ vec2 vogelTap(int i, int n) {
   return vec2(r * cos(a), r * sin(a));
 }
 
+// The lookups walk the Vogel disk by rotating the tap's direction by the golden angle, (cos,
+// sin) of 2.39996323 as a complex product: tap i is sqrt((i + 0.5) / n) times the i-th rotation
+// of (1, 0), the points of vogelTap without a sine and a cosine per tap.
+const vec2 HV_VOGEL_STEP = vec2(-0.73736888f, 0.67549029f);
+vec2 vogelNext(vec2 rot) {
+  return vec2(rot.x * HV_VOGEL_STEP.x - rot.y * HV_VOGEL_STEP.y,
+              rot.x * HV_VOGEL_STEP.y + rot.y * HV_VOGEL_STEP.x);
+}
+
 // Distance from the light, along unit direction dir, to the receiver's plane (through the point
 // at toP from the light, normal N): the depth a tap of the filter compares against (receiver-
 // plane depth; Isidoro 2006). A ray that misses the plane (it faces away or is parallel)
@@ -115,73 +126,157 @@ float shadowDepthBias(float d, float cos_theta) {
 layout(binding = HV_UNIT_SHADOW_DEPTH) uniform samplerCubeArray t_shadow_depth;
 layout(binding = HV_UNIT_SHADOW_COMPARE) uniform samplerCubeArrayShadow t_shadow_compare;
 
-// Visibility (0 shadowed .. 1 lit) at P, normal N, of a light centered at Lpos whose map is
-// cube `layer` of the atlas (< 0: none; lit), distances stored over `far`; the emitter (PCSS):
-// radius, segment axis and length. The loops run 0 times for a light without a map or a
-// receiver beyond the map: on a SIMD CPU implementation (llvmpipe) an `if` costs its body even
-// when no lane takes it, a loop that no lane enters costs nothing.
-float shadowVisibility(vec3 Lpos, float far, float layer, float radius, vec3 axis, float len,
-                       vec3 P, vec3 N) {
-  float vis = 1.0f;
+// Receivers per call of shadowVisibility: the light pass's pixels per invocation, which share
+// PCSS's coarse blocker test (light_shade.comp checks that the two agree).
+#define HV_SHADOW_RECEIVERS 4
+
+// Percentage-closer filtering (Reeves et al. 1987) of n taps over the ellipse of half-axes
+// `radii` (radians) along u and v around D: the fraction of taps whose receiver-plane depth is
+// not behind the map's (PCF, and PCSS step 3). 1 when n = 0.
+float shadowPcf(vec3 toP, vec3 N, vec3 D, vec3 u, vec3 v, vec2 radii, float bias, float far,
+                float layer, int n) {
+  float lit = 0.0f;
+  vec2 rot = vec2(1.0f, 0.0f);
+  for (int i = 0; i < n; ++i) {
+    vec2 o = sqrt((float(i) + 0.5f) / float(HV_SHADOW_TAPS)) * rot * radii;
+    rot = vogelNext(rot);
+    vec3 dir = normalize(D + u * o.x + v * o.y);
+    float t = receiverPlaneDistance(toP, N, dir, far);
+    lit += texture(t_shadow_compare, vec4(dir, layer), (t - bias) / far);
+  }
+  return n > 0 ? lit / float(n) : 1.0f;
+}
+
+// Visibility (0 shadowed .. 1 lit) of a light centered at Lpos whose map is cube `layer` of the
+// atlas (< 0: none; lit), distances stored over `far`, at HV_SHADOW_RECEIVERS receivers P[j]
+// with normals N[j] (`use[j]` false: not needed, e.g. a background pixel); the emitter (PCSS):
+// radius, segment axis and length. Every skip is a loop that runs 0 times: on a SIMD CPU
+// implementation (llvmpipe) an `if` costs its body even when no lane takes it, a loop that no
+// lane enters costs nothing.
+vec4 shadowVisibility(vec3 Lpos, float far, float layer, float radius, vec3 axis, float len,
+                      vec3 P[HV_SHADOW_RECEIVERS], vec3 N[HV_SHADOW_RECEIVERS], bvec4 use) {
+  vec4 vis = vec4(1.0f);
   // A loop of one pass or none: nothing below runs for a light without a map.
   int lookups = layer >= 0.0f ? 1 : 0;
   for (int k = 0; k < lookups; ++k) {
     float texel = shadowTexelAngle();
-    // Normal offset: the receiver moves along its normal (towards the light on a lit face).
-    vec3 toP0 = P - Lpos;
-    vec3 toP = toP0 + N * (HV_SHADOW_NORMAL_OFFSET * texel * length(toP0));
-    float d = length(toP);
-    vec3 D = toP / max(d, 1e-6f);
-    float bias = shadowDepthBias(d, abs(dot(N, D)));
-    // Beyond the map (the light's culling radius) the light is 0 anyway.
-    int n = d < far ? HV_SHADOW_TAPS : 0;
+    vec3 toP[HV_SHADOW_RECEIVERS];
+    vec3 D[HV_SHADOW_RECEIVERS];
+    float d[HV_SHADOW_RECEIVERS];
+    float bias[HV_SHADOW_RECEIVERS];
+    int n[HV_SHADOW_RECEIVERS];
+    for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
+      // Normal offset: the receiver moves along its normal (towards the light on a lit face).
+      vec3 toP0 = P[j] - Lpos;
+      toP[j] = toP0 + N[j] * (HV_SHADOW_NORMAL_OFFSET * texel * length(toP0));
+      d[j] = length(toP[j]);
+      D[j] = toP[j] / max(d[j], 1e-6f);
+      bias[j] = shadowDepthBias(d[j], abs(dot(N[j], D[j])));
+      // The emitter wholly below the receiver's horizon (its highest point over the tangent
+      // plane, -N.toP0 + radius + len / 2 |N.axis|, below it): the surface shadows itself and
+      // the light's evaluation is 0 there too; no lookup.
+      bool below = radius + 0.5f * len * abs(dot(N[j], axis)) < dot(N[j], toP0);
+      vis[j] = below ? 0.0f : 1.0f;
+      // Beyond the map (the light's culling radius) the light is 0 anyway.
+      n[j] = use[j] && !below && d[j] < far ? HV_SHADOW_TAPS : 0;
+    }
 #if HV_SHADOW_FILTER == HV_SHADOW_FILTER_HARD
-    for (int i = 0; i < n; i += HV_SHADOW_TAPS) {
-      float z = textureLod(t_shadow_depth, vec4(D, layer), 0.0f).r * far;
-      vis = step(d - bias, z);
+    for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
+      for (int i = 0; i < n[j]; i += HV_SHADOW_TAPS) {
+        float z = textureLod(t_shadow_depth, vec4(D[j], layer), 0.0f).r * far;
+        vis[j] = step(d[j] - bias[j], z);
+      }
+    }
+#elif HV_SHADOW_FILTER == HV_SHADOW_FILTER_PCF
+    for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
+      vec3 u;
+      vec3 v;
+      tangentFrame(D[j], u, v);
+      vec2 radii = vec2(HV_SHADOW_PCF_RADIUS * texel);
+      vis[j] =
+          n[j] > 0 ? shadowPcf(toP[j], N[j], D[j], u, v, radii, bias[j], far, layer, n[j]) : vis[j];
     }
 #else
-    vec3 u;
-    vec3 v;
-#if HV_SHADOW_FILTER == HV_SHADOW_FILTER_PCF
-    tangentFrame(D, u, v);
-    vec2 radii = vec2(HV_SHADOW_PCF_RADIUS * texel);
-#else
-    vec2 ext = emitterExtent(D, axis, radius, len, u, v);
-    // Blocker search (Fernando 2005, step 1), over the emitter's extent seen from the receiver:
-    // the farthest texel nearer than the receiver, not the paper's mean. The penumbra is cast by
-    // the occluder's silhouette as seen from the light, and a convex occluder's silhouette is
-    // the farthest part of it in the search region: the mean, pulled towards the light by the
-    // occluder's near side, widens the penumbra (docs/accuracy.md, "Shadows").
-    float search = clamp(HV_PCSS_SEARCH_SCALE * ext.x / d, HV_SHADOW_PCF_RADIUS * texel,
-                         HV_SHADOW_MAX_FILTER);
-    float blockers = 0.0f;
-    float blocker_far = 0.0f;
-    for (int i = 0; i < n; i += HV_PCSS_SEARCH_STEP) {
-      vec2 o = vogelTap(i, HV_SHADOW_TAPS) * search;
-      vec3 dir = normalize(D + u * o.x + v * o.y);
-      float t = receiverPlaneDistance(toP, N, dir, far);
+    vec3 u[HV_SHADOW_RECEIVERS];
+    vec3 v[HV_SHADOW_RECEIVERS];
+    vec2 ext[HV_SHADOW_RECEIVERS];
+    float search[HV_SHADOW_RECEIVERS];
+    // Coarse blocker test, shared by the receivers: the farthest tangent offset of a receiver's
+    // search disk from their mean direction Dc bounds a disk holding all of them; taps at least
+    // as dense as one receiver's own search that find nothing nearer than any receiver's plane
+    // there make every receiver lit (no blocker, PCSS's own outcome) and skip the per-receiver
+    // search and filter, which otherwise run as before.
+    vec3 Dsum = vec3(0.0f);
+    for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
+      ext[j] = emitterExtent(D[j], axis, radius, len, u[j], v[j]);
+      // Blocker search (Fernando 2005, step 1), over the emitter's extent seen from the
+      // receiver: the farthest texel nearer than the receiver, not the paper's mean. The
+      // penumbra is cast by the occluder's silhouette as seen from the light, and a convex
+      // occluder's silhouette is the farthest part of it in the search region: the mean, pulled
+      // towards the light by the occluder's near side, widens the penumbra (docs/accuracy.md,
+      // "Shadows").
+      search[j] = clamp(HV_PCSS_SEARCH_SCALE * ext[j].x / d[j], HV_SHADOW_PCF_RADIUS * texel,
+                        HV_SHADOW_MAX_FILTER);
+      Dsum += n[j] > 0 ? D[j] : vec3(0.0f);
+    }
+    vec3 Dc = Dsum / max(length(Dsum), 1e-12f);
+    float reach = 0.0f;
+    float narrowest = HV_SHADOW_MAX_FILTER;
+    int coarse = 0;
+    for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
+      float c = max(dot(D[j], Dc), 1e-3f);
+      float off = sqrt(max(1.0f - c * c, 0.0f)) / c;  // tan of the angle between D[j] and Dc
+      reach = n[j] > 0 ? max(reach, off + search[j] / (c * c)) : reach;
+      narrowest = n[j] > 0 ? min(narrowest, search[j]) : narrowest;
+      coarse = max(coarse, n[j]);
+    }
+    // As many taps per unit area as a receiver's own search has (16 over its disk), at most
+    // HV_PCSS_COARSE_MAX_TAPS.
+    float ratio = reach / narrowest;
+    coarse =
+        coarse > 0
+            ? int(min(ceil(float(HV_SHADOW_TAPS) * ratio * ratio), float(HV_PCSS_COARSE_MAX_TAPS)))
+            : 0;
+    vec3 uc;
+    vec3 vc;
+    tangentFrame(Dc, uc, vc);
+    bool found = false;
+    vec2 rot = vec2(1.0f, 0.0f);
+    for (int i = 0; i < coarse; ++i) {
+      vec2 o = sqrt((float(i) + 0.5f) / float(coarse)) * reach * rot;
+      rot = vogelNext(rot);
+      vec3 dir = normalize(Dc + uc * o.x + vc * o.y);
       float z = textureLod(t_shadow_depth, vec4(dir, layer), 0.0f).r * far;
-      float b = step(z, t - bias);
-      blockers += b;
-      blocker_far = max(blocker_far, b * z);
+      for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
+        float t = receiverPlaneDistance(toP[j], N[j], dir, far);
+        found = found || (n[j] > 0 && z < t - bias[j]);
+      }
     }
-    // Penumbra (step 2) from the emitter's half-extents, at least PCF's radius.
-    float zb = blocker_far;
-    vec2 radii = clamp(vec2(pcssPenumbraAngle(d, zb, ext.x), pcssPenumbraAngle(d, zb, ext.y)),
-                       vec2(HV_SHADOW_PCF_RADIUS * texel), vec2(HV_SHADOW_MAX_FILTER));
-    // No blocker: lit, nothing to filter.
-    n = blockers > 0.0f ? n : 0;
-#endif
-    // Percentage-closer filtering (Reeves et al. 1987) over the ellipse (PCSS step 3).
-    float lit = 0.0f;
-    for (int i = 0; i < n; ++i) {
-      vec2 o = vogelTap(i, HV_SHADOW_TAPS) * radii;
-      vec3 dir = normalize(D + u * o.x + v * o.y);
-      float t = receiverPlaneDistance(toP, N, dir, far);
-      lit += texture(t_shadow_compare, vec4(dir, layer), (t - bias) / far);
+    for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
+      int m = found ? n[j] : 0;
+      float blockers = 0.0f;
+      float blocker_far = 0.0f;
+      rot = vec2(1.0f, 0.0f);
+      for (int i = 0; i < m; i += HV_PCSS_SEARCH_STEP) {
+        vec2 o = sqrt((float(i) + 0.5f) / float(HV_SHADOW_TAPS)) * search[j] * rot;
+        for (int k = 0; k < HV_PCSS_SEARCH_STEP; ++k) rot = vogelNext(rot);
+        vec3 dir = normalize(D[j] + u[j] * o.x + v[j] * o.y);
+        float t = receiverPlaneDistance(toP[j], N[j], dir, far);
+        float z = textureLod(t_shadow_depth, vec4(dir, layer), 0.0f).r * far;
+        float b = step(z, t - bias[j]);
+        blockers += b;
+        blocker_far = max(blocker_far, b * z);
+      }
+      // Penumbra (step 2) from the emitter's half-extents, at least PCF's radius.
+      float zb = blocker_far;
+      vec2 radii =
+          clamp(vec2(pcssPenumbraAngle(d[j], zb, ext[j].x), pcssPenumbraAngle(d[j], zb, ext[j].y)),
+                vec2(HV_SHADOW_PCF_RADIUS * texel), vec2(HV_SHADOW_MAX_FILTER));
+      // No blocker: lit, nothing to filter.
+      m = blockers > 0.0f ? m : 0;
+      vis[j] =
+          m > 0 ? shadowPcf(toP[j], N[j], D[j], u[j], v[j], radii, bias[j], far, layer, m) : vis[j];
     }
-    vis = n > 0 ? lit / float(n) : 1.0f;
 #endif
   }
   return vis;

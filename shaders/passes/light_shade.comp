@@ -82,15 +82,25 @@ vec3 probeLight(GpuLight l) { return l.color_inv_range.rgb * step(0.0, l.positio
 #define HV_EVAL_SPHERE(l, j) probeLight(l)
 #define HV_EVAL_TUBE(l, j) (probeLight(l) * step(0.0, l.axis_length.w))
 #elif HV_SHADOWS
-// Shadowed lights (shadows.glsl): each light's radiance times its visibility; a light without a
-// map (params.w = 0) costs the test only.
-#define HV_EVAL_POINT(l, j) (evaluatePointLightAt(l, s[j], sp[j]) * lightShadow(l, s[j], sp[j]))
-#define HV_EVAL_SPHERE(l, j) (evaluateSphereLightAt(l, s[j], sp[j]) * lightShadow(l, s[j], sp[j]))
-#define HV_EVAL_TUBE(l, j) (evaluateTubeLightAt(l, s[j], sp[j]) * lightShadow(l, s[j], sp[j]))
+// Shadowed lights (shadows.glsl): each light's radiance times its visibility at the
+// invocation's pixels, computed for all of them at once (HV_SHADOW_OF, before the pixel loop:
+// PCSS's coarse blocker test is shared); a light without a map (params.w = 0) costs the test
+// only.
+#if HV_SHADOW_RECEIVERS != HV_LIGHT_PIXELS
+#error "shadowVisibility takes one receiver per pixel of the invocation"
+#endif
+#define HV_SHADOW_OF(l) vec4 vis = lightShadow(l, shadow_P, shadow_N, bvec4(lit[0], lit[1], lit[2], lit[3]))
+#define HV_EVAL_POINT(l, j) (evaluatePointLightAt(l, s[j], sp[j]) * vis[j])
+#define HV_EVAL_SPHERE(l, j) (evaluateSphereLightAt(l, s[j], sp[j]) * vis[j])
+#define HV_EVAL_TUBE(l, j) (evaluateTubeLightAt(l, s[j], sp[j]) * vis[j])
 #else
 #define HV_EVAL_POINT(l, j) evaluatePointLightAt(l, s[j], sp[j])
 #define HV_EVAL_SPHERE(l, j) evaluateSphereLightAt(l, s[j], sp[j])
 #define HV_EVAL_TUBE(l, j) evaluateTubeLightAt(l, s[j], sp[j])
+#endif
+
+#ifndef HV_SHADOW_OF
+#define HV_SHADOW_OF(l)
 #endif
 
 // This invocation's tile row (may lie below the viewport in the last row of workgroups).
@@ -125,6 +135,14 @@ void main() {
     sp[j] = makeShadingPoint(s[j], P, normalize(u_camera_pos.xyz - P));
   }
   if (!any_lit) return;
+#if HV_SHADOWS
+  vec3 shadow_P[HV_LIGHT_PIXELS];
+  vec3 shadow_N[HV_LIGHT_PIXELS];
+  for (int j = 0; j < HV_LIGHT_PIXELS; ++j) {
+    shadow_P[j] = sp[j].P;
+    shadow_N[j] = s[j].N;
+  }
+#endif
 
   vec3 sum[HV_LIGHT_PIXELS];
 #if HV_LIGHT_PROBE != 0
@@ -137,8 +155,8 @@ void main() {
   for (uint i = 0u; i < n; ++i) {
     GpuLight l = lights[i];
 #if HV_SHADOWS
-    for (int j = 0; j < HV_LIGHT_PIXELS; ++j)
-      sum[j] += evaluateLightAt(l, s[j], sp[j]) * lightShadow(l, s[j], sp[j]);
+    HV_SHADOW_OF(l);
+    for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += evaluateLightAt(l, s[j], sp[j]) * vis[j];
 #else
     for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += evaluateLightAt(l, s[j], sp[j]);
 #endif
@@ -159,6 +177,7 @@ void main() {
     uint i = range.x;
     do {
       GpuLight l = tileLight(i);
+      HV_SHADOW_OF(l);
       for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += HV_EVAL_POINT(l, j);
     } while (++i < end_point);
   }
@@ -168,6 +187,7 @@ void main() {
     uint i = end_point;
     do {
       GpuLight l = tileLight(i);
+      HV_SHADOW_OF(l);
       for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += HV_EVAL_SPHERE(l, j);
     } while (++i < end_sphere);
   }
@@ -177,6 +197,7 @@ void main() {
     uint i = end_sphere;
     do {
       GpuLight l = tileLight(i);
+      HV_SHADOW_OF(l);
       for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += HV_EVAL_TUBE(l, j);
     } while (++i < end);
   }

@@ -149,3 +149,32 @@ TEST(Cli, CompareReportsMetrics) {
   EXPECT_NEAR(j["max_abs"].get<double>(), 1.0, 1e-9);
   EXPECT_TRUE(fs::exists(tmp("h.png")));
 }
+
+// bench --frame --shadow-sweep: one row per filter and number of shadowed lights, and the cached
+// maps are not rendered again in the measured frames (the last column, maps rendered, is 0);
+// misplaced options are usage errors naming the option.
+TEST(Cli, ShadowSweepHasEveryRowAndReusesTheMaps) {
+  testing::internal::CaptureStderr();
+  EXPECT_EQ(hv::app::runCli({"bench", "--shadow-sweep"}), 2);
+  EXPECT_NE(testing::internal::GetCapturedStderr().find("--shadow-sweep goes with --frame"),
+            std::string::npos);
+  testing::internal::CaptureStderr();
+  EXPECT_EQ(hv::app::runCli({"bench", "--frame", "--shadow-sweep", "--scene",
+                             samples() + "/shadows.json", "--shaders", "a,b"}),
+            2);
+  EXPECT_NE(testing::internal::GetCapturedStderr().find("--shadow-sweep takes no"),
+            std::string::npos);
+  testing::internal::CaptureStdout();
+  EXPECT_EQ(hv::app::runCli({"bench", "--frame", "--shadow-sweep", "--scene",
+                             samples() + "/shadows.json", "--size", "64x36", "--frames", "2"}),
+            0);
+  const std::string out = testing::internal::GetCapturedStdout();
+  for (const char* row : {"hard, 1 light ", "hard, 2 lights", "pcf, 1 light ", "pcf, 2 lights",
+                          "pcss, 1 light ", "pcss, 2 lights"}) {
+    const size_t at = out.find(row);
+    ASSERT_NE(at, std::string::npos) << row << "\n" << out;
+    const std::string line = out.substr(at, out.find('\n', at) - at);
+    EXPECT_EQ(line.substr(line.find_last_not_of(' ')), "0") << line;
+    EXPECT_EQ(line[line.find_last_not_of(' ') - 1], ' ') << line;
+  }
+}

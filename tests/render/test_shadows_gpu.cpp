@@ -126,6 +126,37 @@ float risingWidth(const Profile& p, float lo = 0.1f, float hi = 0.9f) {
   return b.first - a.first;
 }
 
+// Per-pixel shadow states of a w x h frame, -1 for pixels not judged, 0 lit, 1 shadowed: the
+// truth's shadowed pixels, the pixels whose state differs, and those of them beyond one pixel
+// of the true boundary (no neighbour has the other true state).
+struct StateDiff {
+  size_t shadowed = 0, lit = 0, wrong = 0, far_wrong = 0;
+};
+StateDiff compareStates(const std::vector<int>& truth, const std::vector<int>& seen, int w, int h) {
+  StateDiff r;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const size_t i = size_t(y) * w + x;
+      if (truth[i] < 0) continue;
+      r.shadowed += truth[i] == 1;
+      r.lit += truth[i] == 0;
+      if (seen[i] == truth[i]) continue;
+      ++r.wrong;
+      bool near = false;
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int xx = x + dx, yy = y + dy;
+          if (xx < 0 || yy < 0 || xx >= w || yy >= h) continue;
+          const int t = truth[size_t(yy) * w + xx];
+          near = near || (t >= 0 && t != truth[i]);
+        }
+      }
+      r.far_wrong += !near;
+    }
+  }
+  return r;
+}
+
 // A sphere light over the floor, a sphere occluder between; camera above looking down the
 // +x side of the shadow, where the penumbra is.
 Scene penumbraScene(float light_radius, float occluder_height, ShadowFilter filter) {
@@ -271,34 +302,121 @@ TEST(Shadows, HardPointShadowBoundaryWithinOnePixel) {
         seen[i] = lum(img.px[i]) < 0.5f * lum(ref.px[i]) ? 1 : 0;
       }
     }
-    size_t shadowed = 0, wrong = 0, far_wrong = 0;
-    for (int y = 0; y < h; ++y) {
-      for (int x = 0; x < w; ++x) {
-        const size_t i = size_t(y) * w + x;
-        if (truth[i] < 0) continue;
-        shadowed += truth[i] == 1;
-        if (seen[i] == truth[i]) continue;
-        ++wrong;
-        // Within one pixel of the boundary: a neighbour has the other true state.
-        bool near = false;
-        for (int dy = -1; dy <= 1; ++dy) {
-          for (int dx = -1; dx <= 1; ++dx) {
-            const int xx = x + dx, yy = y + dy;
-            if (xx < 0 || yy < 0 || xx >= w || yy >= h) continue;
-            const int t = truth[size_t(yy) * w + xx];
-            near = near || (t >= 0 && t != truth[i]);
-          }
-        }
-        far_wrong += !near;
-      }
-    }
+    const StateDiff diff = compareStates(truth, seen, w, h);
     std::printf(
         "hard boundary, box at %.1f m: %zu shadowed floor pixels, %zu differ, %zu beyond "
         "one pixel\n",
-        height, shadowed, wrong, far_wrong);
-    EXPECT_GT(shadowed, 500u);
-    EXPECT_EQ(far_wrong, 0u);
+        height, diff.shadowed, diff.wrong, diff.far_wrong);
+    EXPECT_GT(diff.shadowed, 500u);
+    EXPECT_EQ(diff.far_wrong, 0u);
   }
+}
+
+// Alpha-masked casters (glTF alphaMode MASK) cut their holes in the shadow map as in the
+// G-buffer: a 1 m quad 1 m over the floor, masked by an 8 x 8 texture whose alpha is 0 in a
+// block of 3 x 4 texels off its center, under a point light 3 m up (hard filter, map 2048). The
+// floor is seen from below the quad, so the eye rays never cross it. Truth: the segment from the
+// floor point to the light crosses the quad's plane at a texel of alpha 1. Without the mask in
+// the shadow pass, the hole's footprint (about 0.56 x 0.75 m on the floor) would be shadowed.
+TEST(Shadows, AlphaMaskedCasterCastsItsHoles) {
+  testContext();
+  Scene on = floorScene(20.0f);
+  on.camera.position = {2.6f, 0.7f, 0.0f};
+  on.camera.target = {0.0f, 0.0f, 0.0f};
+  on.camera.up = {0.0f, 1.0f, 0.0f};
+  on.camera.fov_y_deg = 50.0f;
+  constexpr int kTex = 8;
+  auto opaque = [](int col, int row) { return !(col >= 1 && col <= 3 && row >= 2 && row <= 5); };
+  ImageData mask{"mask", kTex, kTex, std::vector<uint8_t>(size_t(kTex) * kTex * 4, 255)};
+  for (int row = 0; row < kTex; ++row) {
+    for (int col = 0; col < kTex; ++col) {
+      mask.rgba[size_t(row * kTex + col) * 4 + 3] = opaque(col, row) ? 255 : 0;
+    }
+  }
+  on.images.push_back(mask);
+  Material cut = matte();
+  cut.alpha_mode = AlphaMode::Mask;
+  cut.alpha_cutoff = 0.5f;
+  cut.base_color_tex.image = 0;
+  cut.base_color_tex.sampler.mag = Filter::Nearest;
+  cut.base_color_tex.sampler.min = Filter::Nearest;
+  cut.base_color_tex.sampler.mipmaps = false;
+  on.materials.push_back(cut);
+  on.meshes.push_back(makePlane(1.0f, 1.0f));  // u = x + 0.5, v = z + 0.5
+  on.meshes.back().material = 1;
+  Object quad;
+  quad.name = "masked quad";
+  quad.meshes = {int(on.meshes.size()) - 1};
+  const float qh = 1.0f;
+  quad.transform = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, qh, 0.0f));
+  on.objects.push_back(quad);
+  const glm::vec3 lp(0.0f, 3.0f, 0.0f);
+  on.lights.push_back(light(LightType::Point, lp, 0.0f, true));
+  on.settings.shadow_filter = ShadowFilter::Hard;
+  on.settings.shadow_map_size = 2048;
+  Scene off = on;
+  off.lights[0].shadows = false;
+  const int w = 256, h = 256;
+  render::Renderer r;
+  r.setScene(on);
+  r.render(w, h);
+  const ImageRGBf img = r.readHdr(), ref = renderHdr(off, w, h);
+  bool masked_program = false;
+  for (const gl::VariantInfo& v : r.manifest().programs) {
+    if (v.name != "shadow_masked") continue;
+    masked_program = true;
+    ASSERT_EQ(v.reasons.size(), 1u);  // the manifest says why it was compiled
+    EXPECT_NE(v.reasons[0].find("HV_SHADOW_ALPHA_MASK=1: "), std::string::npos) << v.reasons[0];
+  }
+  EXPECT_TRUE(masked_program) << "the masked variant of the shadow pass was not used";
+  {  // The same quad opaque: the masked variant is not compiled.
+    Scene solid = on;
+    solid.materials[1].alpha_mode = AlphaMode::Opaque;
+    render::Renderer rs;
+    rs.setScene(solid);
+    rs.render(64, 64);
+    bool plain = false, masked = false;
+    for (const gl::VariantInfo& v : rs.manifest().programs) {
+      plain |= v.name == "shadow";
+      masked |= v.name == "shadow_masked";
+    }
+    EXPECT_TRUE(plain);
+    EXPECT_FALSE(masked);
+  }
+  // Where a segment from p towards the light crosses the quad's plane: -1 outside the quad, else
+  // whether the texel there is opaque.
+  auto quadAt = [&](glm::vec3 p, glm::vec3 to) {
+    const float t = (qh - p.y) / (to.y - p.y);
+    if (!(t > 0.0f && t < 1.0f)) return -1;
+    const glm::vec3 q = p + t * (to - p);
+    if (std::abs(q.x) >= 0.5f || std::abs(q.z) >= 0.5f) return -1;
+    const int col = std::min(kTex - 1, int((q.x + 0.5f) * kTex));
+    const int row = std::min(kTex - 1, int((q.z + 0.5f) * kTex));
+    return opaque(col, row) ? 1 : 0;
+  };
+  std::vector<int> truth(size_t(w) * h, -1), seen(size_t(w) * h, -1);
+  size_t in_hole = 0;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const size_t i = size_t(y) * w + x;
+      if (!(lum(ref.px[i]) > 0.0f)) continue;
+      const glm::vec3 p = floorPoint(on, w, h, x, y);
+      if (std::abs(p.x) > 5.0f || std::abs(p.z) > 5.0f) continue;
+      ASSERT_EQ(quadAt(on.camera.position, p), -1) << "the eye ray crosses the quad";
+      const int q = quadAt(p, lp);
+      truth[i] = q == 1 ? 1 : 0;
+      in_hole += q == 0;
+      seen[i] = lum(img.px[i]) < 0.5f * lum(ref.px[i]) ? 1 : 0;
+    }
+  }
+  const StateDiff diff = compareStates(truth, seen, w, h);
+  std::printf(
+      "masked quad: %zu shadowed floor pixels, %zu lit through the hole, %zu differ, %zu beyond "
+      "one pixel\n",
+      diff.shadowed, in_hole, diff.wrong, diff.far_wrong);
+  EXPECT_GT(diff.shadowed, 500u);
+  EXPECT_GT(in_hole, 300u);
+  EXPECT_EQ(diff.far_wrong, 0u);
 }
 
 // PCSS: the 10%-90% width of the penumbra grows with the light's radius and with the

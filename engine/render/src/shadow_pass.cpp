@@ -1,7 +1,7 @@
 // Shadow-map pass. In: the scene's geometry and its shadowed lights. Out: the atlas (a depth cube
 // map array, six layers per light: the distance from the light's center over its culling radius)
 // and each light's cube in GpuLight.params.w. A cube is rendered again only when its light's
-// shape or place, the casters' transforms, the scene or the map size changed.
+// shape or place, the casters' transforms or alpha masks, the scene or the map size changed.
 #include <cstring>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -16,14 +16,44 @@ namespace hv::render {
 
 namespace {
 
-// Hash (FNV-1a) of every object's transform: a caster that moved changes it.
+// Hash (FNV-1a) of what the maps are rendered from besides the lights: every object's
+// transform (a caster that moved) and what makes a material's triangles cut holes in them (its
+// alpha mode, cutoff, alpha, base colour texture and vertex colour use).
 uint64_t castersHash(const Scene& scene) {
   uint64_t h = 1469598103934665603ull;
-  for (const Object& o : scene.objects) {
-    const auto* b = reinterpret_cast<const unsigned char*>(glm::value_ptr(o.transform));
-    for (size_t i = 0; i < sizeof(glm::mat4); ++i) h = (h ^ b[i]) * 1099511628211ull;
+  auto mix = [&h](const void* p, size_t n) {
+    const auto* b = static_cast<const unsigned char*>(p);
+    for (size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
+  };
+  for (const Object& o : scene.objects) mix(glm::value_ptr(o.transform), sizeof(glm::mat4));
+  for (const Material& m : scene.materials) {
+    const bool masked = m.alpha_mode == AlphaMode::Mask;
+    mix(&masked, sizeof masked);
+    if (!masked) continue;
+    const float f[2] = {m.alpha_cutoff, m.base_alpha};
+    const int t[3] = {m.base_color_tex.image, m.base_color_tex.texcoord, int(m.vertex_color)};
+    mix(f, sizeof f);
+    mix(t, sizeof t);
   }
   return h ^ scene.objects.size();
+}
+
+// Masked draws (alphaMode MASK) go through the variant of the pass that samples the base
+// colour's alpha (shadow.frag); it is compiled only for a scene that has one.
+bool maskedDraw(const Scene& scene, const DrawItem& d) {
+  return scene.materials[size_t(d.material)].alpha_mode == AlphaMode::Mask;
+}
+
+gl::ProgramDesc shadowProgram(bool masked) {
+  gl::ProgramDesc desc{
+      masked ? "shadow_masked" : "shadow",
+      {{GL_VERTEX_SHADER, "passes/shadow.vert"}, {GL_FRAGMENT_SHADER, "passes/shadow.frag"}},
+      {}};
+  if (masked) {
+    desc.defines.push_back({"HV_SHADOW_ALPHA_MASK", "1"});
+    desc.reasons["HV_SHADOW_ALPHA_MASK"] = "the scene has alpha-masked materials (alphaMode MASK)";
+  }
+  return desc;
 }
 
 // The six faces in the order of GL's cube map layers (+X, -X, +Y, -Y, +Z, -Z), each a view
@@ -71,26 +101,50 @@ void ShadowMaps::ensureAtlas(int size, size_t cubes) {
   }
 }
 
-void ShadowMaps::renderCube(const Input& in, size_t cube, const Light& light, float far) {
+void ShadowMaps::renderCube(const PassContext& ctx, const Input& in, size_t cube,
+                            const Light& light, float far) {
   const float near_plane = std::max(1e-3f, 1e-6f * far);
   const glm::mat4 proj = glm::perspective(glm::radians(90.0f), 1.0f, near_plane, far);
   const glm::vec3 p = light.position;
-  glUniform4f(HV_LOC_SHADOW_LIGHT, p.x, p.y, p.z, 1.0f / far);
   const auto& draws = in.gpu.draws();
+  bool any_masked = false;
+  for (const DrawItem& d : draws) any_masked = any_masked || maskedDraw(in.scene, d);
   for (int f = 0; f < 6; ++f) {
     glNamedFramebufferTextureLayer(fbo_.id(), GL_DEPTH_ATTACHMENT, atlas_.id(), 0,
                                    GLint(cube * 6 + size_t(f)));
     const float one = 1.0f;
     glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
     const glm::mat4 view_proj = proj * glm::lookAt(p, p + kFaces[f].dir, kFaces[f].up);
-    glUniformMatrix4fv(HV_LOC_SHADOW_VIEW_PROJ, 1, GL_FALSE, glm::value_ptr(view_proj));
-    for (const DrawItem& d : draws) {
-      glUniformMatrix4fv(HV_LOC_MODEL, 1, GL_FALSE,
-                         glm::value_ptr(in.scene.objects[size_t(d.object)].transform));
-      glDrawElementsBaseVertex(
-          GL_TRIANGLES, GLsizei(d.index_count), GL_UNSIGNED_INT,
-          reinterpret_cast<const void*>(size_t(d.first_index) * sizeof(uint32_t)), d.base_vertex);
+    // The opaque draws, then (a second program) the masked ones with their materials.
+    for (const bool masked : {false, true}) {
+      if (masked && !any_masked) break;
+      glUseProgram(ctx.programs.get(shadowProgram(masked)));
+      glUniform4f(HV_LOC_SHADOW_LIGHT, p.x, p.y, p.z, 1.0f / far);
+      glUniformMatrix4fv(HV_LOC_SHADOW_VIEW_PROJ, 1, GL_FALSE, glm::value_ptr(view_proj));
+      int bound_material = -1;
+      for (const DrawItem& d : draws) {
+        if (maskedDraw(in.scene, d) != masked) continue;
+        if (masked && d.material != bound_material) {
+          bound_material = d.material;
+          glBindBufferRange(GL_UNIFORM_BUFFER, HV_UBO_MATERIAL, in.gpu.materialBuffer(),
+                            GLintptr(size_t(d.material) * in.gpu.materialStride()),
+                            GLsizeiptr(sizeof(GpuMaterial)));
+          const BoundTexture base = in.gpu.materialTextures(d.material)[0];
+          glBindTextureUnit(HV_UNIT_MATERIAL_TEXTURES, base.texture);
+          glBindSampler(HV_UNIT_MATERIAL_TEXTURES, base.sampler);
+        }
+        glUniformMatrix4fv(HV_LOC_MODEL, 1, GL_FALSE,
+                           glm::value_ptr(in.scene.objects[size_t(d.object)].transform));
+        glDrawElementsBaseVertex(
+            GL_TRIANGLES, GLsizei(d.index_count), GL_UNSIGNED_INT,
+            reinterpret_cast<const void*>(size_t(d.first_index) * sizeof(uint32_t)), d.base_vertex);
+      }
     }
+  }
+  if (any_masked) {
+    glBindBufferBase(GL_UNIFORM_BUFFER, HV_UBO_MATERIAL, 0);
+    glBindTextureUnit(HV_UNIT_MATERIAL_TEXTURES, 0);
+    glBindSampler(HV_UNIT_MATERIAL_TEXTURES, 0);
   }
 }
 
@@ -141,14 +195,10 @@ ShadowMaps::Stats ShadowMaps::run(const PassContext& ctx, const Input& in) {
       applyState(s);
       glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
       glViewport(0, 0, in.map_size, in.map_size);
-      glUseProgram(ctx.programs.get(
-          {"shadow",
-           {{GL_VERTEX_SHADER, "passes/shadow.vert"}, {GL_FRAGMENT_SHADER, "passes/shadow.frag"}},
-           {}}));
       glBindVertexArray(in.gpu.vertexArray());
       bound = true;
     }
-    renderCube(in, c, l, far);
+    renderCube(ctx, in, c, l, far);
     cubes_[c] = key;
     ++st.rendered;
   }

@@ -47,12 +47,13 @@ class ShadowMaps {
   // What a cube was rendered from: the light's shape and place, and the casters.
   struct CubeKey {
     std::array<float, 9> light{};  // position, radius, axis, length, far
-    uint64_t casters = 0;          // hash of the object transforms
+    uint64_t casters = 0;          // hash of the object transforms and alpha masks
     int size = 0;
     bool operator==(const CubeKey&) const = default;
   };
   void ensureAtlas(int size, size_t cubes);
-  void renderCube(const Input& in, size_t cube, const Light& light, float far);
+  void renderCube(const PassContext& ctx, const Input& in, size_t cube, const Light& light,
+                  float far);
   gl::Texture atlas_;
   gl::Framebuffer fbo_;
   gl::Sampler raw_, compare_;
