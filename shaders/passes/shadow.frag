@@ -29,21 +29,21 @@ layout(location = 3) in float v_alpha;  // the vertex colour's alpha
 float baseAlpha() {
   GpuMaterial m = u_material;
   float a = m.base_color.a;
-  if ((m.flags.x & HV_MAT_BASE_COLOR_TEX) != 0u) {
-    vec2 uv = m.texcoords.x == 0u ? v_uv0 : v_uv1;
-    if ((m.flags.x & HV_MAT_TEX_TRANSFORM_BIT) != 0u) {
-      uv = applyTextureTransform(uv, m.uv_linear[0], m.uv_offset[0].xy);
+  if ((m.texture_bits & HV_MAT_BASE_COLOR_TEX) != 0u) {
+    vec2 uv = m.texcoord_base_color == 0u ? v_uv0 : v_uv1;
+    if ((m.texture_bits & HV_MAT_TEX_TRANSFORM_BIT) != 0u) {
+      uv = applyTextureTransform(uv, m.uv_linear[HV_MAT_SLOT_BASE_COLOR], m.uv_offset[HV_MAT_SLOT_BASE_COLOR].xy);
     }
     a *= texture(t_base_color, uv).a;
   }
-  if ((m.flags.x & HV_MAT_VERTEX_COLOR_BIT) != 0u) a *= v_alpha;
+  if ((m.texture_bits & HV_MAT_VERTEX_COLOR_BIT) != 0u) a *= v_alpha;
   return a;
 }
 #endif
 
 void main() {
 #if HV_SHADOW_ALPHA_MASK
-  if (baseAlpha() < u_material.params.w) discard;
+  if (baseAlpha() < u_material.alpha_cutoff) discard;
 #endif
   gl_FragDepth = length(v_world - u_light.xyz) * u_light.w;
 }
