@@ -47,8 +47,6 @@ const float HV_SHADOW_PCF_RADIUS = 1.5f;
 const float HV_PCSS_SEARCH_SCALE = 2.0f;
 // The blocker search takes every HV_PCSS_SEARCH_STEP-th tap of the filter's Vogel disk.
 #define HV_PCSS_SEARCH_STEP 1
-// Most taps of PCSS's coarse blocker test shared by a light pass invocation's receivers.
-#define HV_PCSS_COARSE_MAX_TAPS 32
 // Widest filter, radians: a receiver far behind a close blocker under a large light would
 // otherwise sample half the cube.
 const float HV_SHADOW_MAX_FILTER = 0.35f;
@@ -126,8 +124,8 @@ float shadowDepthBias(float d, float cos_theta) {
 layout(binding = HV_UNIT_SHADOW_DEPTH) uniform samplerCubeArray t_shadow_depth;
 layout(binding = HV_UNIT_SHADOW_COMPARE) uniform samplerCubeArrayShadow t_shadow_compare;
 
-// Receivers per call of shadowVisibility: the light pass's pixels per invocation, which share
-// PCSS's coarse blocker test (light_shade.comp checks that the two agree).
+// Receivers per call of shadowVisibility: the light pass's pixels per invocation
+// (light_shade.comp checks that the two agree).
 #define HV_SHADOW_RECEIVERS 4
 
 // Percentage-closer filtering (Reeves et al. 1987) of n taps over the ellipse of half-axes
@@ -201,12 +199,6 @@ vec4 shadowVisibility(vec3 Lpos, float far, float layer, float radius, vec3 axis
     vec3 v[HV_SHADOW_RECEIVERS];
     vec2 ext[HV_SHADOW_RECEIVERS];
     float search[HV_SHADOW_RECEIVERS];
-    // Coarse blocker test, shared by the receivers: the farthest tangent offset of a receiver's
-    // search disk from their mean direction Dc bounds a disk holding all of them; taps at least
-    // as dense as one receiver's own search that find nothing nearer than any receiver's plane
-    // there make every receiver lit (no blocker, PCSS's own outcome) and skip the per-receiver
-    // search and filter, which otherwise run as before.
-    vec3 Dsum = vec3(0.0f);
     for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
       ext[j] = emitterExtent(D[j], axis, radius, len, u[j], v[j]);
       // Blocker search (Fernando 2005, step 1), over the emitter's extent seen from the
@@ -217,46 +209,12 @@ vec4 shadowVisibility(vec3 Lpos, float far, float layer, float radius, vec3 axis
       // "Shadows").
       search[j] = clamp(HV_PCSS_SEARCH_SCALE * ext[j].x / d[j], HV_SHADOW_PCF_RADIUS * texel,
                         HV_SHADOW_MAX_FILTER);
-      Dsum += n[j] > 0 ? D[j] : vec3(0.0f);
-    }
-    vec3 Dc = Dsum / max(length(Dsum), 1e-12f);
-    float reach = 0.0f;
-    float narrowest = HV_SHADOW_MAX_FILTER;
-    int coarse = 0;
-    for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
-      float c = max(dot(D[j], Dc), 1e-3f);
-      float off = sqrt(max(1.0f - c * c, 0.0f)) / c;  // tan of the angle between D[j] and Dc
-      reach = n[j] > 0 ? max(reach, off + search[j] / (c * c)) : reach;
-      narrowest = n[j] > 0 ? min(narrowest, search[j]) : narrowest;
-      coarse = max(coarse, n[j]);
-    }
-    // As many taps per unit area as a receiver's own search has (16 over its disk), at most
-    // HV_PCSS_COARSE_MAX_TAPS.
-    float ratio = reach / narrowest;
-    coarse =
-        coarse > 0
-            ? int(min(ceil(float(HV_SHADOW_TAPS) * ratio * ratio), float(HV_PCSS_COARSE_MAX_TAPS)))
-            : 0;
-    vec3 uc;
-    vec3 vc;
-    tangentFrame(Dc, uc, vc);
-    bool found = false;
-    vec2 rot = vec2(1.0f, 0.0f);
-    for (int i = 0; i < coarse; ++i) {
-      vec2 o = sqrt((float(i) + 0.5f) / float(coarse)) * reach * rot;
-      rot = vogelNext(rot);
-      vec3 dir = normalize(Dc + uc * o.x + vc * o.y);
-      float z = textureLod(t_shadow_depth, vec4(dir, layer), 0.0f).r * far;
-      for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
-        float t = receiverPlaneDistance(toP[j], N[j], dir, far);
-        found = found || (n[j] > 0 && z < t - bias[j]);
-      }
     }
     for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
-      int m = found ? n[j] : 0;
+      int m = n[j];
       float blockers = 0.0f;
       float blocker_far = 0.0f;
-      rot = vec2(1.0f, 0.0f);
+      vec2 rot = vec2(1.0f, 0.0f);
       for (int i = 0; i < m; i += HV_PCSS_SEARCH_STEP) {
         vec2 o = sqrt((float(i) + 0.5f) / float(HV_SHADOW_TAPS)) * search[j] * rot;
         for (int k = 0; k < HV_PCSS_SEARCH_STEP; ++k) rot = vogelNext(rot);

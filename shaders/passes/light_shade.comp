@@ -83,9 +83,8 @@ vec3 probeLight(GpuLight l) { return l.color_inv_range.rgb * step(0.0, l.positio
 #define HV_EVAL_TUBE(l, j) (probeLight(l) * step(0.0, l.axis_length.w))
 #elif HV_SHADOWS
 // Shadowed lights (shadows.glsl): each light's radiance times its visibility at the
-// invocation's pixels, computed for all of them at once (HV_SHADOW_OF, before the pixel loop:
-// PCSS's coarse blocker test is shared); a light without a map (params.w = 0) costs the test
-// only.
+// invocation's pixels, computed for all of them at once (HV_SHADOW_OF, before the pixel loop);
+// a light without a map (params.w = 0) costs the test only.
 #if HV_SHADOW_RECEIVERS != HV_LIGHT_PIXELS
 #error "shadowVisibility takes one receiver per pixel of the invocation"
 #endif
