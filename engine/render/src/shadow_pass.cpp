@@ -3,6 +3,7 @@
 // and each light's cube in GpuLight.params.w. A cube is rendered again only when its light's
 // shape or place, the casters' transforms or alpha masks, the scene or the map size changed.
 #include <cstring>
+#include <optional>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -101,8 +102,8 @@ void ShadowMaps::ensureAtlas(int size, size_t cubes) {
   }
 }
 
-void ShadowMaps::renderCube(const PassContext& ctx, const Input& in, size_t cube,
-                            const Light& light, float far) {
+void ShadowMaps::renderCube(const PassContext& ctx, const Input& in, gl::PassBindings& b,
+                            size_t cube, const Light& light, float far) {
   const float near_plane = std::max(1e-3f, 1e-6f * far);
   const glm::mat4 proj = glm::perspective(glm::radians(90.0f), 1.0f, near_plane, far);
   const glm::vec3 p = light.position;
@@ -118,7 +119,7 @@ void ShadowMaps::renderCube(const PassContext& ctx, const Input& in, size_t cube
     // The opaque draws, then (a second program) the masked ones with their materials.
     for (const bool masked : {false, true}) {
       if (masked && !any_masked) break;
-      glUseProgram(ctx.programs.get(shadowProgram(masked)));
+      b.use(ctx.programs.get(shadowProgram(masked)));
       glUniform4f(HV_LOC_SHADOW_LIGHT, p.x, p.y, p.z, 1.0f / far);
       glUniformMatrix4fv(HV_LOC_SHADOW_VIEW_PROJ, 1, GL_FALSE, glm::value_ptr(view_proj));
       int bound_material = -1;
@@ -126,12 +127,11 @@ void ShadowMaps::renderCube(const PassContext& ctx, const Input& in, size_t cube
         if (maskedDraw(in.scene, d) != masked) continue;
         if (masked && d.material != bound_material) {
           bound_material = d.material;
-          glBindBufferRange(GL_UNIFORM_BUFFER, HV_UBO_MATERIAL, in.gpu.materialBuffer(),
-                            GLintptr(size_t(d.material) * in.gpu.materialStride()),
-                            GLsizeiptr(sizeof(GpuMaterial)));
+          b.uniformRange(HV_UBO_MATERIAL, in.gpu.materialBuffer(),
+                         GLintptr(size_t(d.material) * in.gpu.materialStride()),
+                         GLsizeiptr(sizeof(GpuMaterial)));
           const BoundTexture base = in.gpu.materialTextures(d.material)[0];
-          glBindTextureUnit(HV_UNIT_MATERIAL_TEXTURES, base.texture);
-          glBindSampler(HV_UNIT_MATERIAL_TEXTURES, base.sampler);
+          b.texture(HV_UNIT_MATERIAL_TEXTURES, base.texture, base.sampler);
         }
         glUniformMatrix4fv(HV_LOC_MODEL, 1, GL_FALSE,
                            glm::value_ptr(in.scene.objects[size_t(d.object)].transform));
@@ -140,11 +140,6 @@ void ShadowMaps::renderCube(const PassContext& ctx, const Input& in, size_t cube
             reinterpret_cast<const void*>(size_t(d.first_index) * sizeof(uint32_t)), d.base_vertex);
       }
     }
-  }
-  if (any_masked) {
-    glBindBufferBase(GL_UNIFORM_BUFFER, HV_UBO_MATERIAL, 0);
-    glBindTextureUnit(HV_UNIT_MATERIAL_TEXTURES, 0);
-    glBindSampler(HV_UNIT_MATERIAL_TEXTURES, 0);
   }
 }
 
@@ -175,6 +170,9 @@ ShadowMaps::Stats ShadowMaps::run(const PassContext& ctx, const Input& in) {
   if (a.maps.empty()) return st;
   ensureAtlas(in.map_size, a.maps.size());
   const uint64_t casters = castersHash(in.scene);
+  // The pass's bindings (the masked casters' material block and base colour texture), opened
+  // with the first cube rendered: a frame whose maps are all cached binds nothing.
+  std::optional<gl::PassBindings> bindings;
   bool bound = false;
   for (size_t c = 0; c < a.maps.size(); ++c) {
     const Light& l = in.scene.lights[a.maps[c]];
@@ -196,13 +194,15 @@ ShadowMaps::Stats ShadowMaps::run(const PassContext& ctx, const Input& in) {
       glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
       glViewport(0, 0, in.map_size, in.map_size);
       glBindVertexArray(in.gpu.vertexArray());
+      bindings.emplace(kPassSlots, "shadows");
       bound = true;
     }
-    renderCube(ctx, in, c, l, far);
+    renderCube(ctx, in, *bindings, c, l, far);
     cubes_[c] = key;
     ++st.rendered;
   }
   if (bound) {
+    bindings.reset();  // releases and checks what the pass bound
     glBindVertexArray(0);
     glUseProgram(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "halfvec/gl/bindings.hpp"
 #include "halfvec/gl/objects.hpp"
 #include "halfvec/render/gpu_scene.hpp"
 #include "halfvec/render/shadows.hpp"
@@ -52,8 +53,8 @@ class ShadowMaps {
     bool operator==(const CubeKey&) const = default;
   };
   void ensureAtlas(int size, size_t cubes);
-  void renderCube(const PassContext& ctx, const Input& in, size_t cube, const Light& light,
-                  float far);
+  void renderCube(const PassContext& ctx, const Input& in, gl::PassBindings& b, size_t cube,
+                  const Light& light, float far);
   gl::Texture atlas_;
   gl::Framebuffer fbo_;
   gl::Sampler raw_, compare_;
