@@ -27,8 +27,8 @@
 //  axis_length:     x,y,z unit tube axis, w tube segment length (m); 0 for point and sphere
 //  params:          x range R (Karis eq. 9 window), y type (HV_LIGHT_*), z culling radius, w the
 //                   light's cube in the shadow atlas + 1 (0: no shadow map; written by the shadow
-//                   pass, engine/render/src/shadow_pass.cpp). Named by the accessors lightRange,
-//                   lightType, lightCullRadius, lightShadowCube (lights.glsl).
+//                   pass, engine/render/src/shadow_pass.cpp). The type and the culling radius
+//                   are read through lightType and lightCullRadius (lights.glsl).
 struct GpuLight {
   vec4 position_radius;
   vec4 color_inv_range;
