@@ -144,6 +144,7 @@ TEST(SettingsTable, ShaderValuesAreGeneratedFromTheLists) {
 
 // Every enumerated row's values name a define each, or are a flag's numbers (0, 1, ...).
 TEST(SettingsTable, EnumListsNameDefinesOrNumbers) {
+  const std::string generated = settingValuesGlsl();
   int lists = 0;
   forEachSetting([&](const auto& row) {
     using T = typename std::decay_t<decltype(row)>::Type;
@@ -157,9 +158,9 @@ TEST(SettingsTable, EnumListsNameDefinesOrNumbers) {
           EXPECT_EQ(defines[i], std::to_string(i)) << row.key;
         } else {
           EXPECT_TRUE(defines[i].starts_with("HV_")) << row.key << ": " << defines[i];
-          EXPECT_NE(settingValuesGlsl().find("#define " + std::string(defines[i]) + " " +
-                                             std::to_string(i) + "\n"),
-                    std::string::npos)
+          EXPECT_NE(
+              generated.find("#define " + std::string(defines[i]) + " " + std::to_string(i) + "\n"),
+              std::string::npos)
               << defines[i];
         }
       }
