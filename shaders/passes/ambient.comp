@@ -64,10 +64,13 @@ layout(binding = HV_UNIT_ENV_BRDF) uniform sampler2D t_env_brdf;      // (scale,
 layout(binding = HV_UNIT_IRRADIANCE) uniform samplerCube t_irradiance;  // E(n), not divided by pi
 layout(rgba16f, binding = HV_IMAGE_HDR) uniform image2D i_hdr;
 
+#define HV_BLOCK_MEMBER(type, name) type u_##name;
+#define HV_BLOCK_ARRAY(type, name, count) type u_##name[count];
 layout(std140, binding = HV_UBO_ENVIRONMENT) uniform EnvironmentBlock {
-  vec4 u_sh[9];      // radiance SH9 (ibl.glsl order)
-  vec4 u_env;        // max mip, env BRDF table size, 1 = environment present, unused
+#include "../common/environment_block.glsl"
 };
+#undef HV_BLOCK_ARRAY
+#undef HV_BLOCK_MEMBER
 
 #if HV_AO && HV_HAS_DEFAULT_LIT && HV_ENVIRONMENT
 #include "../common/ao.glsl"

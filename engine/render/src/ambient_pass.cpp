@@ -7,10 +7,17 @@
 namespace hv::render {
 
 namespace {
+// The members of shaders/common/environment_block.glsl, the list ambient.comp declares the block
+// from.
 struct alignas(16) EnvironmentBlock {
-  glm::vec4 sh[9];
-  glm::vec4 env;  // max mip, table size, present, unused
+#define HV_BLOCK_MEMBER(type, name) glm::type name;
+#define HV_BLOCK_ARRAY(type, name, count) glm::type name[count];
+#include "halfvec/shaders/common/environment_block.glsl"
+#undef HV_BLOCK_ARRAY
+#undef HV_BLOCK_MEMBER
 };
+static_assert(sizeof(EnvironmentBlock) == 10 * 16, "EnvironmentBlock must match std140 layout");
+static_assert(offsetof(EnvironmentBlock, env) == 9 * 16);
 
 gl::Texture uploadCube(const char* name, const CubeMapF& c) {
   gl::Texture t = gl::createTextureCube(name, GL_RGBA16F, c.size, c.mipCount());

@@ -1,5 +1,5 @@
-// C++ mirror of shaders/common/frame.glsl's FrameBlock (std140), and the packing of materials
-// into hv::GpuMaterial (shaders/common/gpu_records.glsl).
+// FrameBlock (std140), declared from the member list shaders/common/frame.glsl declares it from,
+// and the packing of materials into hv::GpuMaterial (shaders/common/gpu_records.glsl).
 #pragma once
 
 #include <cstddef>
@@ -24,19 +24,11 @@ enum FrameFlag : uint32_t {
   kFrameNoEmissive = HV_FRAME_NO_EMISSIVE,      // the G-buffer pass leaves the HDR target at 0
 };
 
+// The members of shaders/common/frame_block.glsl, the list frame.glsl declares the block from.
 struct alignas(16) FrameBlock {
-  glm::mat4 view;
-  glm::mat4 proj;
-  glm::mat4 view_proj;
-  glm::mat4 inv_view_proj;
-  glm::vec4 camera_pos;
-  glm::uvec4 viewport;  // width, height, tiles x, tiles y
-  uint32_t light_count;
-  uint32_t tile_capacity;  // entries the tile index list holds after its header
-  uint32_t debug_view;     // DebugView
-  uint32_t frame_flags;    // FrameFlag bits
-  glm::vec4 output;        // exposure, dither, environment intensity, environment rotation (rad)
-  glm::vec4 near_params;   // near plane
+#define HV_BLOCK_MEMBER(type, name) glm::type name;
+#include "halfvec/shaders/common/frame_block.glsl"
+#undef HV_BLOCK_MEMBER
 };
 static_assert(sizeof(FrameBlock) == 4 * 64 + 5 * 16, "FrameBlock must match std140 layout");
 static_assert(offsetof(FrameBlock, viewport) == 4 * 64 + 16);
