@@ -29,8 +29,8 @@ float sphereHorizonFactor(float cos_theta, float sin_sigma2) {
   float s2 = clamp(sin_sigma2, 1e-8f, 1.0f);
   float above = saturate(cos_theta);
   // cos^2 >= sin^2(sigma): the sphere does not cross the horizon. The common case, and one that
-  // neighbouring pixels share: a branch (on llvmpipe, which runs both sides of a branch under a
-  // mask, measured 4-8% faster for `ltc` spheres than computing both and selecting).
+  // neighbouring pixels share: a branch, which measured faster than computing both and selecting
+  // even on llvmpipe, where both sides run under a mask (docs/lights.md).
   if (cos_theta * cos_theta >= s2) return above;
   // Straddling the horizon. sin_theta >= 1e-4 and x >= 1e-4 only guard 0/0 inside the sphere
   // (s2 = 1), where the value is bounded anyway.

@@ -39,8 +39,8 @@ float pixelNdc(int p, float size) { return (float(p) + 0.5) / size * 2.0 - 1.0; 
 #endif
 // The tile's view-space surface AABB (lo > hi: no surface), from its depth texels four at a
 // time: textureGather at the corner shared by pixels (x, y) .. (x + 1, y + 1) returns exactly those
-// four (the footprint of linear filtering), a quarter of the fetches of texelFetch (measured on
-// llvmpipe: the bounds 0.54 -> 0.31 floor passes, default scene). Past the viewport's edge the
+// four (the footprint of linear filtering), a quarter of the fetches of texelFetch (its cost:
+// docs/lights.md, "Tiled culling"). Past the viewport's edge the
 // clamp-to-edge sampler returns the last row or column again, which leaves the bounds as they are.
 void tileBounds(uvec2 tile, out vec3 lo, out vec3 hi) {
   lo = vec3(3.0e38);
