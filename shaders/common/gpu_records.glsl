@@ -13,27 +13,27 @@
 #define HV_GPU_RECORDS_GLSL
 
 // ---- Lights -------------------------------------------------------------------------------------
-// Light type codes stored (as float) in GpuLight.params.y; = hv::LightType.
+// Light type codes stored in GpuLight.type; = hv::LightType.
 #define HV_LIGHT_POINT 0
 #define HV_LIGHT_SPHERE 1
 #define HV_LIGHT_TUBE 2
 
 // One light as the GPU reads it: std430 storage buffer HV_BINDING_LIGHTS, or 4 RGBA32F texels of
-// a buffer texture (light_shade.comp, HV_LIGHTS_TEXTURE), 64 bytes. Points and spheres read only
-// the first two vec4 in the light pass, tubes three, which is why the fields are vec4 texels.
-//  position_radius: x,y,z world position (tube: segment center), w sphere/capsule radius (m)
-//  color_inv_range: rgb linear color premultiplied by intensity I (W/sr), w 1/R (Karis eq. 9
-//                   window)
-//  axis_length:     x,y,z unit tube axis, w tube segment length (m); 0 for point and sphere
-//  params:          x range R (Karis eq. 9 window), y type (HV_LIGHT_*), z culling radius, w the
-//                   light's cube in the shadow atlas + 1 (0: no shadow map; written by the shadow
-//                   pass, engine/render/src/shadow_pass.cpp). The type and the culling radius
-//                   are read through lightType and lightCullRadius (lights.glsl).
+// a buffer texture (light_shade.comp, HV_LIGHTS_TEXTURE, which decodes the uint fields with
+// floatBitsToUint), 64 bytes. Points and spheres read only the first two vec4 in the light pass,
+// tubes three, which is why the first fields are vec4 texels. Offsets in bytes on the right.
 struct GpuLight {
-  vec4 position_radius;
-  vec4 color_inv_range;
-  vec4 axis_length;
-  vec4 params;
+  vec4 position_radius;  //  0 x,y,z world position (tube: segment center), w sphere/capsule
+                         //    radius (m)
+  vec4 color_inv_range;  // 16 rgb linear color premultiplied by intensity I (W/sr), w 1/R (Karis
+                         //    eq. 9 window)
+  vec4 axis_length;      // 32 x,y,z unit tube axis, w tube segment length (m); 0 for point and
+                         //    sphere
+  float range;           // 48 range R (Karis eq. 9 window)
+  uint type;             // 52 HV_LIGHT_*; read through lightType (lights.glsl)
+  float cull_radius;     // 56 culling radius; read through lightCullRadius (lights.glsl)
+  uint shadow_cube;      // 60 the light's cube in the shadow atlas + 1 (0: no shadow map), written
+                         //    by the shadow pass (engine/render/src/shadow_pass.cpp)
 };
 
 // ---- Materials ----------------------------------------------------------------------------------

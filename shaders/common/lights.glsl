@@ -82,8 +82,8 @@
   ((HV_HAS_SPHERE_LIGHTS && HV_SPHERE_SPECULAR == HV_SPHERE_SPECULAR_LTC) || \
    (HV_HAS_TUBE_LIGHTS && HV_TUBE_SPECULAR == HV_TUBE_SPECULAR_LTC))
 
-// The light's type code (HV_LIGHT_*, gpu_records.glsl), stored as float in params.y; +0.5 rounds.
-int lightType(GpuLight light) { return int(light.params.y + 0.5f); }
+// The light's type code (HV_LIGHT_*, gpu_records.glsl).
+int lightType(GpuLight light) { return int(light.type); }
 
 // Smallest squared light distance (1 cm)^2. With HV_FALLOFF_PLUS_ONE = 0 a point light at
 // distance 0 would be 1/0; Filament likewise treats a punctual light as a 1 cm sphere. With the
@@ -393,15 +393,15 @@ vec3 evaluateLight(GpuLight light, Surface s, vec3 P, vec3 V) {
 // position, outside which the light contributes exactly 0 (the window is 0 beyond range R of the
 // nearest emitting point): R for points and spheres, R + len/2 for tubes. Precomputed by
 // packLight; for tiled culling.
-float lightCullRadius(GpuLight light) { return light.params.z; }
+float lightCullRadius(GpuLight light) { return light.cull_radius; }
 
 #if HV_SHADOWS && !defined(HV_CPP)
 // The shadow of light l at the light pass's receivers (shadows.glsl): its map is cube
-// params.w - 1 of the atlas, distances over the culling radius; the emitter's radius, axis and
+// shadow_cube - 1 of the atlas (-1: none), distances over the culling radius; the emitter's radius, axis and
 // length size PCSS's penumbra. Multiplies the light's whole contribution, diffuse and specular
 // (light_shade.comp).
 vec4 lightShadow(GpuLight l, vec3 P[HV_SHADOW_RECEIVERS], vec3 N[HV_SHADOW_RECEIVERS], bvec4 use) {
-  return shadowVisibility(vec3(l.position_radius), lightCullRadius(l), l.params.w - 1.0f,
+  return shadowVisibility(vec3(l.position_radius), lightCullRadius(l), float(l.shadow_cube) - 1.0f,
                           l.position_radius.w, vec3(l.axis_length), l.axis_length.w, P, N, use);
 }
 #endif

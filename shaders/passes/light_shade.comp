@@ -55,7 +55,11 @@ GpuLight tileLight(uint i) {
   l.position_radius = texelFetch(t_lights, base);
   l.color_inv_range = texelFetch(t_lights, base + 1);
   l.axis_length = texelFetch(t_lights, base + 2);
-  l.params = texelFetch(t_lights, base + 3);
+  vec4 last = texelFetch(t_lights, base + 3);  // range, type, cull_radius, shadow_cube
+  l.range = last.x;
+  l.type = floatBitsToUint(last.y);
+  l.cull_radius = last.z;
+  l.shadow_cube = floatBitsToUint(last.w);
   return l;
 }
 #else
@@ -84,7 +88,7 @@ vec3 probeLight(GpuLight l) { return l.color_inv_range.rgb * step(0.0, l.positio
 #elif HV_SHADOWS
 // Shadowed lights (shadows.glsl): each light's radiance times its visibility at the
 // invocation's pixels, computed for all of them at once (HV_SHADOW_OF, before the pixel loop);
-// a light without a map (params.w = 0) costs the test only.
+// a light without a map (shadow_cube = 0) costs the test only.
 #if HV_SHADOW_RECEIVERS != HV_LIGHT_PIXELS
 #error "shadowVisibility takes one receiver per pixel of the invocation"
 #endif

@@ -71,12 +71,7 @@ TEST(LtcGpu, MatchesSharedCpuCode) {
       const auto g = r.readGBuffer();
       const auto hdr = r.readHdr();
       const auto frame = render::makeFrameBlock(s, w, h);
-      const hv::GpuLight p = packLight(l);
-      ltc::GpuLight gl;
-      gl.position_radius = p.position_radius;
-      gl.color_inv_range = p.color_inv_range;
-      gl.axis_length = p.axis_length;
-      gl.params = p.params;
+      const ltc::GpuLight gl = packLight(l);  // ltc::GpuLight is hv::GpuLight
       int checked = 0;
       float worst = 0.0f;
       for (int y = 2; y < h; y += 5) {

@@ -39,9 +39,10 @@ TEST(Lights, PackLayoutAndValues) {
   EXPECT_EQ(gl.position_radius, glm::vec4(1, 2, 3, 0.1f));
   EXPECT_EQ(gl.color_inv_range, glm::vec4(8.0f, 4.0f, 2.0f, 0.2f));
   EXPECT_EQ(gl.axis_length, glm::vec4(0, 0, 1, 2.0f));
-  EXPECT_FLOAT_EQ(gl.params.x, 5.0f);
-  EXPECT_FLOAT_EQ(gl.params.y, 2.0f);  // tube
-  EXPECT_FLOAT_EQ(gl.params.z, 6.0f);  // range + len/2
+  EXPECT_FLOAT_EQ(gl.range, 5.0f);
+  EXPECT_EQ(gl.type, unsigned(HV_LIGHT_TUBE));
+  EXPECT_FLOAT_EQ(gl.cull_radius, 6.0f);  // range + len/2
+  EXPECT_EQ(gl.shadow_cube, 0u);          // none until the shadow pass writes one
   EXPECT_FLOAT_EQ(g::lightCullRadius(hv::toGlsl(gl)), 6.0f);
   // Points ignore radius/length; degenerate axis and range are sanitized.
   l.type = hv::LightType::Point;
@@ -51,7 +52,7 @@ TEST(Lights, PackLayoutAndValues) {
   EXPECT_EQ(gl.position_radius.w, 0.0f);
   EXPECT_EQ(gl.axis_length, glm::vec4(1, 0, 0, 0));
   EXPECT_TRUE(std::isfinite(gl.color_inv_range.w));
-  EXPECT_EQ(gl.params.y, 0.0f);  // point
+  EXPECT_EQ(gl.type, unsigned(HV_LIGHT_POINT));
   std::vector<hv::Light> lights(2);
   lights[1].type = hv::LightType::Tube;
   auto defs = hv::lightTypeDefines(lights);
@@ -123,7 +124,7 @@ TEST(Lights, FalloffByHand) {
     l.length = 3.0f;
     l.axis = {1, 0, 0};
     l.range = 2.0f;
-    float cull = hv::packLight(l).params.z;
+    float cull = hv::packLight(l).cull_radius;
     l.position = glm::vec3(0, 0, cull * 1.0001f);
     EXPECT_EQ(shade(l, s, glm::vec3(0.0f), glm::vec3(0, 0, 1)), glm::vec3(0.0f)) << type;
     l.position = glm::normalize(glm::vec3(0.3f, 0.0f, 0.9f)) * (cull * 1.0001f);

@@ -102,12 +102,7 @@ constexpr float kPi = 3.14159265358979f;
 
 template <class GL>
 GL toVariant(const hv::Light& l) {
-  const hv::GpuLight p = hv::packLight(l);
-  GL g;
-  g.position_radius = p.position_radius;
-  g.color_inv_range = p.color_inv_range;
-  g.axis_length = p.axis_length;
-  g.params = p.params;
+  const GL g = hv::packLight(l);  // every variant's GpuLight is hv::GpuLight
   return g;
 }
 

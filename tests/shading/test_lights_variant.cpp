@@ -76,13 +76,9 @@ TEST(LightsVariant, RemapIgnoredForSmithV) {
             variant::V_SmithGGXCorrelated(variant::remappedVisibilityAlpha(roughness), 0.6f, 0.4f));
 }
 
+// variant::GpuLight is hv::GpuLight (declared once, outside the variants).
 variant::GpuLight toVariant(const hv::GpuLight& p) {
-  variant::GpuLight gl;
-  gl.position_radius = p.position_radius;
-  gl.color_inv_range = p.color_inv_range;
-  gl.axis_length = p.axis_length;
-  gl.params = p.params;
-  return gl;
+  return p;
 }
 
 // With HV_FALLOFF_PLUS_ONE = 0 and the horizon-correct sphere, the diffuse radiance of a sphere

@@ -1,6 +1,6 @@
 // Shadow-map pass. In: the scene's geometry and its shadowed lights. Out: the atlas (a depth cube
 // map array, six layers per light: the distance from the light's center over its culling radius)
-// and each light's cube in GpuLight.params.w. A cube is rendered again only when its light's
+// and each light's cube in GpuLight.shadow_cube. A cube is rendered again only when its light's
 // shape or place, the casters' transforms or alpha masks, the scene or the map size changed.
 #include <cstring>
 #include <optional>
@@ -153,19 +153,21 @@ ShadowMaps::Stats ShadowMaps::run(const PassContext& ctx, const Input& in) {
   const std::string warning = overBudgetWarning(in.scene.lights, a, in.map_size);
   if (warning != warned_ && !warning.empty()) logShadowWarning(warning);
   warned_ = warning;
-  // params.w of every light: its cube + 1 (0: no map), written when the buffer was re-uploaded
+  // shadow_cube of every light: its cube + 1 (0: no map), written when the buffer was re-uploaded
   // (GpuScene::updateLights writes 0) or a light's cube changed.
   if (written_for_ != &in.gpu || written_version_ != in.lights_version ||
-      written_w_.size() != a.layer.size()) {
-    written_w_.assign(a.layer.size(), 0.0f);
+      written_cube_.size() != a.layer.size()) {
+    written_cube_.assign(a.layer.size(), 0u);
     written_for_ = &in.gpu;
     written_version_ = in.lights_version;
   }
   for (size_t i = 0; i < a.layer.size(); ++i) {
-    const float w = float(a.layer[i] + 1);
-    if (w == written_w_[i]) continue;
-    written_w_[i] = w;
-    glNamedBufferSubData(in.gpu.lightBuffer(), GLintptr(i * sizeof(GpuLight) + 60), sizeof w, &w);
+    const uint32_t cube = uint32_t(a.layer[i] + 1);
+    if (cube == written_cube_[i]) continue;
+    written_cube_[i] = cube;
+    glNamedBufferSubData(in.gpu.lightBuffer(),
+                         GLintptr(i * sizeof(GpuLight) + offsetof(GpuLight, shadow_cube)),
+                         sizeof cube, &cube);
   }
   if (a.maps.empty()) return st;
   ensureAtlas(in.map_size, a.maps.size());

@@ -1,6 +1,6 @@
 // The shadow-map pass (private to engine/render): renders the omnidirectional maps of the
 // shadowed lights into the atlas (halfvec/render/shadows.hpp) when a light or a caster changed,
-// keeps them otherwise, and tells the light pass where each light's map is (GpuLight.params.w).
+// keeps them otherwise, and tells the light pass where each light's map is (GpuLight.shadow_cube).
 #pragma once
 
 #include <array>
@@ -34,7 +34,7 @@ class ShadowMaps {
     size_t rendered = 0;  // of them, re-rendered this frame (the others were cached)
     std::vector<size_t> over_budget;
   };
-  // Assigns the cubes, writes each light's params.w (cube + 1, 0 = none) into the GPU light
+  // Assigns the cubes, writes each light's shadow_cube (cube + 1, 0 = none) into the GPU light
   // buffer, and renders the cubes whose light or casters changed since they were last rendered.
   Stats run(const PassContext& ctx, const Input& in);
   // Forgets every cube (a new scene: other casters).
@@ -59,9 +59,9 @@ class ShadowMaps {
   gl::Framebuffer fbo_;
   gl::Sampler raw_, compare_;
   int size_ = 0;
-  size_t layers_ = 0;             // cubes the atlas has room for
-  std::vector<CubeKey> cubes_;    // per cube: what it holds (size 0: nothing)
-  std::vector<float> written_w_;  // per light: the params.w last written
+  size_t layers_ = 0;                   // cubes the atlas has room for
+  std::vector<CubeKey> cubes_;          // per cube: what it holds (size 0: nothing)
+  std::vector<uint32_t> written_cube_;  // per light: the shadow_cube last written
   const GpuScene* written_for_ = nullptr;
   size_t written_version_ = 0;
   std::string warned_;  // the last over-budget warning, not repeated every frame

@@ -8,7 +8,7 @@ namespace hv {
 static_assert(int(LightType::Point) == HV_LIGHT_POINT &&
                   int(LightType::Sphere) == HV_LIGHT_SPHERE &&
                   int(LightType::Tube) == HV_LIGHT_TUBE,
-              "GpuLight.params.y holds hv::LightType (gpu_records.glsl)");
+              "GpuLight.type holds hv::LightType (gpu_records.glsl)");
 
 GpuLight packLight(const Light& light) {
   GpuLight g{};
@@ -25,7 +25,10 @@ GpuLight packLight(const Light& light) {
   g.axis_length = glm::vec4(axis, len);
   // The eq. 9 window is 0 at distance R from the nearest point of the segment (tubes) or from
   // the center (points, spheres); a tube's segment reaches len/2 from its center.
-  g.params = glm::vec4(range, float(static_cast<int>(light.type)), range + 0.5f * len, 0.0f);
+  g.range = range;
+  g.type = static_cast<unsigned>(light.type);
+  g.cull_radius = range + 0.5f * len;
+  g.shadow_cube = 0;  // written by the shadow pass
   return g;
 }
 

@@ -28,14 +28,18 @@ using hv::GpuMaterial;
 }  // namespace hv::glsl
 
 namespace hv::gpu_records {
-// std430 (and std140): four vec4.
+// std430 (and std140): three vec4, then four scalars filling the fourth 16 bytes (the fourth
+// texel of the buffer-texture path). The shadow pass writes shadow_cube alone, at its offset
+// (engine/render/src/shadow_pass.cpp).
 static_assert(sizeof(GpuLight) == 64);
 static_assert(offsetof(GpuLight, position_radius) == 0);
 static_assert(offsetof(GpuLight, color_inv_range) == 16);
 static_assert(offsetof(GpuLight, axis_length) == 32);
-static_assert(offsetof(GpuLight, params) == 48);
-// The shadow pass writes params.w alone, at this byte offset (engine/render/src/shadow_pass.cpp).
-static_assert(offsetof(GpuLight, params) + 3 * sizeof(float) == 60);
+static_assert(offsetof(GpuLight, range) == 48);
+static_assert(offsetof(GpuLight, type) == 52);
+static_assert(offsetof(GpuLight, cull_radius) == 56);
+static_assert(offsetof(GpuLight, shadow_cube) == 60);
+static_assert(sizeof(GpuLight::type) == 4 && sizeof(GpuLight::shadow_cube) == 4);
 
 // std140, the offsets written in gpu_records.glsl.
 static_assert(sizeof(GpuMaterial) == 256);
