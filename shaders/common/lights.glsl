@@ -397,8 +397,8 @@ float lightCullRadius(GpuLight light) { return light.cull_radius; }
 
 #if HV_SHADOWS && !defined(HV_CPP)
 // The shadow of light l at the light pass's receivers (shadows.glsl): its map is cube
-// shadow_cube - 1 of the atlas (-1: none), distances over the culling radius; the emitter's radius, axis and
-// length size PCSS's penumbra. Multiplies the light's whole contribution, diffuse and specular
+// shadow_cube - 1 of the atlas (-1: none), distances over the culling radius; the emitter's
+// radius, axis and length size PCSS's penumbra. Multiplies the light's whole contribution, diffuse and specular
 // (light_shade.comp).
 vec4 lightShadow(GpuLight l, vec3 P[HV_SHADOW_RECEIVERS], vec3 N[HV_SHADOW_RECEIVERS], bvec4 use) {
   return shadowVisibility(vec3(l.position_radius), lightCullRadius(l), float(l.shadow_cube) - 1.0f,

@@ -47,19 +47,22 @@ layout(std430, binding = HV_BINDING_TILE_INDICES) readonly buffer TileIndexBlock
 #if HV_LIGHTS_TEXTURE
 // The same two buffers as buffer textures (light_pass.cpp): texelFetch is a vector gather on
 // llvmpipe, an SSBO read at a loaded index is one load per lane (about 3x slower loop there).
-layout(binding = HV_UNIT_LIGHT_TEXELS) uniform samplerBuffer t_lights;        // 4 RGBA32F texels per GpuLight
+// The light texels are fetched as uints and reinterpreted: the record's uint fields (type,
+// shadow_cube) are small integers, denormal bit patterns as floats, which a float fetch need not
+// preserve; uintBitsToFloat restores every float field bit for bit.
+layout(binding = HV_UNIT_LIGHT_TEXELS) uniform usamplerBuffer t_lights;       // 4 RGBA32UI texels per GpuLight
 layout(binding = HV_UNIT_TILE_INDEX_TEXELS) uniform usamplerBuffer t_tile_indices;  // header (4 uints), then indices
 GpuLight tileLight(uint i) {
   int base = int(texelFetch(t_tile_indices, int(i) + HV_TILE_LIST_HEADER_UINTS).r) * 4;
   GpuLight l;
-  l.position_radius = texelFetch(t_lights, base);
-  l.color_inv_range = texelFetch(t_lights, base + 1);
-  l.axis_length = texelFetch(t_lights, base + 2);
-  vec4 last = texelFetch(t_lights, base + 3);  // range, type, cull_radius, shadow_cube
-  l.range = last.x;
-  l.type = floatBitsToUint(last.y);
-  l.cull_radius = last.z;
-  l.shadow_cube = floatBitsToUint(last.w);
+  l.position_radius = uintBitsToFloat(texelFetch(t_lights, base));
+  l.color_inv_range = uintBitsToFloat(texelFetch(t_lights, base + 1));
+  l.axis_length = uintBitsToFloat(texelFetch(t_lights, base + 2));
+  uvec4 last = texelFetch(t_lights, base + 3);  // range, type, cull_radius, shadow_cube
+  l.range = uintBitsToFloat(last.x);
+  l.type = last.y;
+  l.cull_radius = uintBitsToFloat(last.z);
+  l.shadow_cube = last.w;
   return l;
 }
 #else

@@ -50,7 +50,7 @@ void LightPass::run(const PassContext& ctx, const FrameBlock& frame, const Input
       tile_index_texels_ = gl::Texture(ids[1], "tile light indices (buffer texture)");
     }
     // Re-pointed every frame: either buffer may have been re-created (scene edit, list growth).
-    glTextureBuffer(light_texels_.id(), GL_RGBA32F, in.lights);
+    glTextureBuffer(light_texels_.id(), GL_RGBA32UI, in.lights);  // uints: light_shade.comp
     glTextureBuffer(tile_index_texels_.id(), GL_R32UI, in.tiles.indices);
     b.texture(HV_UNIT_LIGHT_TEXELS, light_texels_.id());
     b.texture(HV_UNIT_TILE_INDEX_TEXELS, tile_index_texels_.id());

@@ -1,5 +1,6 @@
-// FrameBlock (std140), declared from the member list shaders/common/frame.glsl declares it from,
-// and the packing of materials into hv::GpuMaterial (shaders/common/gpu_records.glsl).
+// FrameBlock (std140), declared from shaders/common/frame_block.glsl, the member list frame.glsl
+// declares the block from, and the packing of materials into hv::GpuMaterial
+// (shaders/common/gpu_records.glsl).
 #pragma once
 
 #include <cstddef>
