@@ -89,8 +89,8 @@ float capIntersectionOver2Pi(float cos_a, float cos_b, float cos_d) {
 // the visibility cone (around the bent normal B, from the visibility), over the part inside the
 // hemisphere of an open surface (the cone around N of half-angle 90 degrees). Without that
 // normalisation a rough lobe whose cone dips below the horizon would be occluded on an open
-// plane (the split sum already integrates the whole lobe): measured 11% dark at 24 degrees from
-// the normal at roughness 0.8 in tests/render/test_ao_gpu.cpp before it.
+// plane (the split sum already integrates the whole lobe; tests/render/test_ao_gpu.cpp checks the
+// open plane, docs/ambient-occlusion.md gives the error without it).
 float specularOcclusionCone(vec3 B, vec3 N, vec3 R, float visibility, float alpha) {
   float cos_v = visibilityConeCos(visibility);
   float cos_s = specularConeCos(alpha);

@@ -76,14 +76,14 @@ float sphereSolidAngle(float sin2) {
 // roughness 0.5). Where both vary smoothly over the cone, the ratio of their sums at a few of its
 // points is the ratio of their integrals, and the LTC's exact integral I times it is the lobe's.
 // The points: two, at +-k tan(sigma) (e1 - e2) / sqrt(2) around the cone's axis c (e1 across the
-// plane of c and N, e2 = c x e1; sin2 = sin^2(sigma)); k = 0.6 measured best of 0.4-0.7. Whether
+// plane of c and N, e2 = c x e1; sin2 = sin^2(sigma)); k = 0.6, chosen on the sweep. Whether
 // two points represent the light is tested on the LTC itself, whose integral is known: their
 // quadrature omega (D(x1) + D(x2)) / 2 against I, and against omega D(c). Each disagreement
 // u = (a - b) / (a + b) lowers the correction's weight linearly, from 1 at u = 0 to 0 at |u| = 1
 // against I, and against the axis to 0 at -0.7 (the center's density above the points': the
 // LTC's peak within the light) but only to 0.5 at +1 (the points' above the center's: tolerance
-// 2). Measured best of 0.2-1e6 against I, 0.5-0.85 and 0.7-1e6 against the axis, on the sphere
-// sweep with elevation 30 and 126 configurations off it (docs/lights.md); weight 0: the LTC
+// 2). The constants were chosen on the sphere sweep and configurations off it (the ranges tried:
+// docs/lights.md); weight 0: the LTC
 // alone. As the light shrinks, both tests and the ratio become exact: the point light's limit,
 // the lobe's own value times the solid angle. omega: the light's solid angle (for a capsule, a
 // bound); the ratio is clamped to [0, 16].

@@ -120,9 +120,8 @@ void main() {
   if (px.x >= int(u_viewport.x) || px.y >= int(u_viewport.y)) return;
   // One cube lookup and one store per pixel, whether it shows the background or a surface: a SIMD
   // implementation (llvmpipe) runs both sides of a branch under a mask, so separate background
-  // and surface paths cost every pixel two cube samples and two stores (measured, default scene
-  // at 1280x720, fastest of 9 frames: this pass 36.6 -> 27.4 ms, sphere_grid 37.1 -> 29.6 ms,
-  // `halfvec bench --scene FILE --shaders OLD,NEW`; the same image).
+  // and surface paths cost every pixel two cube samples and two stores (docs/performance.md,
+  // "Where the ambient pass's time goes").
   vec4 mat = texelFetch(t_material, px, 0);
   uint model = decodeShadingModel(mat.b);
   bool background = model == HV_MODEL_BACKGROUND;
@@ -131,8 +130,7 @@ void main() {
   vec2 uv = (vec2(px) + 0.5) / vec2(u_viewport.xy);
   // The view ray through the pixel, to a far point on it (reversed Z: depth 1e-3 is far away).
   // The camera is a pinhole (perspective only), so the surface seen in the pixel lies on the same
-  // ray: no depth fetch is needed (measured, 21 interleaved frames at 1280x720: this pass 3.48x ->
-  // 3.26x floor on the default scene, 3.78x -> 3.39x on helmet_sunset).
+  // ray: no depth fetch is needed (its saving: docs/performance.md).
   vec3 ray = normalize(reconstructWorldPosition(uv, 1e-3, u_inv_view_proj) - u_camera_pos.xyz);
 #if HV_ENVIRONMENT
   bool env_present = true;

@@ -13,7 +13,7 @@ namespace hv::render {
 // The tiled light pass reads the lights and the tile index list through buffer textures
 // (HV_LIGHTS_TEXTURE) when they fit GL_MAX_TEXTURE_BUFFER_SIZE: texelFetch gives the
 // implementation a vector gather, where an SSBO read indexed by loaded data is a per-lane load on a
-// SIMD CPU implementation (llvmpipe: ~3x slower loop, measured). Otherwise it reads the SSBOs.
+// SIMD CPU implementation (docs/lights.md, "Tiled culling"). Otherwise it reads the SSBOs.
 void LightPass::run(const PassContext& ctx, const FrameBlock& frame, const Input& in, GLuint hdr) {
   gl::ScopedPass pass(ctx.timer, "light");
   applyState(PipelineState{});
