@@ -83,10 +83,9 @@ float sphereSolidAngle(float sin2) {
 // against I, and against the axis to 0 at -0.7 (the center's density above the points': the
 // LTC's peak within the light) but only to 0.5 at +1 (the points' above the center's: tolerance
 // 2). The constants were chosen on the sphere sweep and configurations off it (the ranges tried:
-// docs/lights.md); weight 0: the LTC
-// alone. As the light shrinks, both tests and the ratio become exact: the point light's limit,
-// the lobe's own value times the solid angle. omega: the light's solid angle (for a capsule, a
-// bound); the ratio is clamped to [0, 16].
+// docs/lights.md); weight 0: the LTC alone. As the light shrinks, both tests and the ratio become
+// exact: the point light's limit, the lobe's own value times the solid angle. omega: the light's
+// solid angle (for a capsule, a bound); the ratio is clamped to [0, 16].
 const float HV_LTC_CORRECTION_K = 0.6f;
 const float HV_LTC_CORRECTION_INTEGRAL_TOL = 1.0f;
 const float HV_LTC_CORRECTION_AXIS_TOL = 0.7f;
