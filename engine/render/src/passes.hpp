@@ -63,6 +63,21 @@ struct TileListView {
   explicit operator bool() const { return indices != 0; }
 };
 
+// ---- Drawing the scene's geometry (scene_draws.cpp) --------------------------------------------
+// The draws `order` (indices into gpu.draws()), each with programs[key.material_variant[its
+// material]], its transform (HV_LOC_MODEL, HV_LOC_NORMAL_MATRIX), winding (mirroring transforms
+// flip it), face culling (double-sided materials draw both faces) and its material's block and
+// textures. The caller has applied its state and bound its framebuffer; the winding ends as
+// counter-clockwise, face culling as the last draw left it.
+struct SceneDraws {
+  const Scene& scene;
+  const GpuScene& gpu;
+  const VariantKey& key;
+  const std::vector<gl::ProgramDesc>& programs;  // per material variant of `key`
+  const std::vector<size_t>& order;
+};
+void drawScene(const PassContext& ctx, gl::PassBindings& b, const SceneDraws& in);
+
 // ---- G-buffer (gbuffer_pass.cpp) --------------------------------------------------------------
 struct GBufferPassInput {
   const Scene& scene;
