@@ -51,6 +51,11 @@
 // Ambient pass with `ao: gtao`: the AO pass's output (ao_denoise.comp); unit 4 is free there. The
 // AO pass's denoise reads the raw AO on the same unit.
 #define HV_UNIT_AO 4
+// Forward pass of blended surfaces (forward.frag): the material's textures on units 0..4, the
+// LTC table on 6 and 7 and the shadow atlas on 8 and 9 as above, so the environment moves here.
+#define HV_UNIT_FORWARD_RADIANCE 10
+#define HV_UNIT_FORWARD_ENV_BRDF 11
+#define HV_UNIT_FORWARD_IRRADIANCE 12
 // Tone map: the HDR target.
 #define HV_UNIT_HDR 0
 // G-buffer pass: a material's textures on units HV_UNIT_MATERIAL_TEXTURES + 0..4 (base color,

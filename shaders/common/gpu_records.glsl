@@ -48,6 +48,7 @@ struct GpuLight {
 // GpuMaterial::alpha_mode
 #define HV_ALPHA_OPAQUE 0u
 #define HV_ALPHA_MASK 1u
+#define HV_ALPHA_BLEND 2u  // drawn by the forward pass (forward.frag), not into the G-buffer
 // Texture slots: the index of uv_linear / uv_offset and of the texture unit after
 // HV_UNIT_MATERIAL_TEXTURES (bindings.glsl).
 #define HV_MAT_SLOT_BASE_COLOR 0u

@@ -60,7 +60,7 @@ TEST(SceneLoader, EverySampleLoads) {
       for (int m : o.meshes) EXPECT_LT(m, int(s.meshes.size()));
     ++n;
   }
-  EXPECT_EQ(n, 8);  // every file in samples/scenes
+  EXPECT_EQ(n, 9);  // every file in samples/scenes
 }
 
 TEST(SceneLoader, DefaultSceneContents) {
@@ -172,6 +172,28 @@ TEST(SceneLoader, MaterialsAsListAndInline) {
   EXPECT_FLOAT_EQ(s.materials[size_t(s.meshes[1].material)].roughness, 0.2f);
   EXPECT_EQ(s.materials[size_t(s.meshes[2].material)].name, "default");
   EXPECT_NE(parseError(R"({"materials":[{"name":"a"},{"name":"a"}]})").find("duplicate"),
+            std::string::npos);
+}
+
+TEST(SceneLoader, MaterialAlphaKeys) {
+  const hv::Scene s = hv::parseScene(json::parse(R"({
+    "materials":[{"name":"glass","alpha":0.3,"alpha_mode":"blend"},
+                 {"name":"leaf","alpha_mode":"mask","alpha_cutoff":0.25}],
+    "objects":[{"primitive":"box","material":"glass"},{"primitive":"plane","material":"leaf"},
+               {"primitive":"sphere"}]})"),
+                                     "x.json");
+  const hv::Material& glass = s.materials[size_t(s.meshes[0].material)];
+  EXPECT_EQ(glass.alpha_mode, hv::AlphaMode::Blend);
+  EXPECT_FLOAT_EQ(glass.base_alpha, 0.3f);
+  const hv::Material& leaf = s.materials[size_t(s.meshes[1].material)];
+  EXPECT_EQ(leaf.alpha_mode, hv::AlphaMode::Mask);
+  EXPECT_FLOAT_EQ(leaf.alpha_cutoff, 0.25f);
+  EXPECT_FLOAT_EQ(leaf.base_alpha, 1.0f);
+  EXPECT_EQ(s.materials[size_t(s.meshes[2].material)].alpha_mode, hv::AlphaMode::Opaque);
+  EXPECT_EQ(parseError(R"({"materials":[{"name":"a","alpha":1.5}]})"),
+            "scene.json: /materials/0/alpha: expected a number in [0, 1], got 1.5");
+  EXPECT_NE(parseError(R"({"materials":[{"name":"a","alpha_mode":"blending"}]})")
+                .find("/materials/0/alpha_mode"),
             std::string::npos);
 }
 

@@ -66,12 +66,13 @@ GpuEnvironment::GpuEnvironment(const Scene& scene) {
   glNamedBufferSubData(block_.id(), 0, sizeof block, &block);
 }
 
-void GpuEnvironment::bind(gl::PassBindings& b, GLuint fallback_2d) const {
+void GpuEnvironment::bind(gl::PassBindings& b, GLuint fallback_2d,
+                          const EnvironmentUnits& units) const {
   // The units always hold a texture of the right type (GL requires it for a sampled unit).
   const GLuint radiance = radiance_ ? radiance_.id() : black_cube_.id();
-  b.texture(HV_UNIT_RADIANCE, radiance, trilinear_.id());
-  b.texture(HV_UNIT_ENV_BRDF, env_brdf_ ? env_brdf_.id() : fallback_2d, trilinear_.id());
-  b.texture(HV_UNIT_IRRADIANCE, irradiance_ ? irradiance_.id() : radiance, trilinear_.id());
+  b.texture(units.radiance, radiance, trilinear_.id());
+  b.texture(units.env_brdf, env_brdf_ ? env_brdf_.id() : fallback_2d, trilinear_.id());
+  b.texture(units.irradiance, irradiance_ ? irradiance_.id() : radiance, trilinear_.id());
   b.uniform(HV_UBO_ENVIRONMENT, block_.id());
 }
 

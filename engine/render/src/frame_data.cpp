@@ -23,7 +23,9 @@ GpuMaterial packMaterial(const Material& m) {
   g.emissive = m.emissive;
   g.normal_scale = m.normal_tex.scale;
   g.occlusion_strength = m.occlusion_tex.scale;
-  g.alpha_mode = m.alpha_mode == AlphaMode::Mask ? HV_ALPHA_MASK : HV_ALPHA_OPAQUE;
+  g.alpha_mode = m.alpha_mode == AlphaMode::Mask    ? HV_ALPHA_MASK
+                 : m.alpha_mode == AlphaMode::Blend ? HV_ALPHA_BLEND
+                                                    : HV_ALPHA_OPAQUE;
   g.shading_model = static_cast<uint32_t>(m.model);
   g.texcoord_base_color = static_cast<uint32_t>(m.base_color_tex.texcoord);
   g.texcoord_metal_rough = static_cast<uint32_t>(m.metallic_roughness_tex.texcoord);

@@ -29,6 +29,14 @@ GpuScene::GpuScene(const Scene& scene) : scene_(&scene) {
       d.material = m.material;
       d.object = static_cast<int>(o);
       d.double_sided = scene.materials[m.material].double_sided;
+      if (!m.vertices.empty()) {
+        glm::vec3 lo = m.vertices[0].position, hi = lo;
+        for (const Vertex& v : m.vertices) {
+          lo = glm::min(lo, v.position);
+          hi = glm::max(hi, v.position);
+        }
+        d.center = 0.5f * (lo + hi);
+      }
       draws_.push_back(d);
     }
   }

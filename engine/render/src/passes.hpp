@@ -84,8 +84,9 @@ struct GBufferPassInput {
   const GpuScene& gpu;
   const VariantKey& key;
   const std::vector<gl::ProgramDesc>& programs;  // per material variant of `key`
-  const std::vector<size_t>& draw_order;         // gpu.draws() indices, grouped by variant
-  bool emissive = true;                          // false: the HDR attachment keeps its clear, 0
+  const std::vector<size_t>& draw_order;  // gpu.draws() indices of opaque and masked surfaces,
+                                          // grouped by variant
+  bool emissive = true;                   // false: the HDR attachment keeps its clear, 0
 };
 struct GBufferPassOutput {
   GLuint framebuffer = 0;  // base+cavity, material, normal, HDR color attachments + depth
@@ -159,15 +160,21 @@ class LightPass {
 };
 
 // ---- Ambient pass and the environment (ambient_pass.cpp) ---------------------------------------
+// The three units an environment binds: the ambient pass's, or the forward pass's
+// (bindings.glsl).
+struct EnvironmentUnits {
+  GLuint radiance = HV_UNIT_RADIANCE, env_brdf = HV_UNIT_ENV_BRDF, irradiance = HV_UNIT_IRRADIANCE;
+};
 // The environment's GPU resources: the uploaded IBL bake.
 class GpuEnvironment {
  public:
   explicit GpuEnvironment(const Scene& scene);  // bakes (or loads the cached bake) and uploads
   bool present() const { return present_; }
   const BakeTimings& timings() const { return timings_; }
-  // Binds units HV_UNIT_RADIANCE .. HV_UNIT_IRRADIANCE and the environment block; a missing
-  // texture is replaced by one of the right type (`fallback_2d`, a black cube).
-  void bind(gl::PassBindings& b, GLuint fallback_2d) const;
+  // Binds the radiance, env BRDF and irradiance textures on `units` and the environment block; a
+  // missing texture is replaced by one of the right type (`fallback_2d`, a black cube).
+  void bind(gl::PassBindings& b, GLuint fallback_2d,
+            const EnvironmentUnits& units = EnvironmentUnits{}) const;
 
  private:
   gl::Texture radiance_, irradiance_, env_brdf_, black_cube_;
@@ -185,6 +192,35 @@ struct AmbientPassInput {
 // Adds the image-based light into `hdr` and draws the environment on background pixels.
 void runAmbientPass(const PassContext& ctx, const AmbientPassInput& in, GLuint hdr, int width,
                     int height);
+
+// ---- Blended surfaces (forward_pass.cpp) -------------------------------------------------------
+// glTF alphaMode BLEND: after the deferred passes, the blended draws back to front (by the view
+// depth of their bounds' centres), depth-tested against the opaque depth without writing it, each
+// fragment lit by every light and the environment and blended over the HDR target
+// (forward.frag). One timed pass "forward".
+class ForwardPass {
+ public:
+  struct Input {
+    const Scene& scene;
+    const GpuScene& gpu;
+    const VariantKey& key;
+    const std::vector<gl::ProgramDesc>& programs;  // per material variant of `key`: forward.frag
+    const GpuEnvironment& environment;
+    bool ltc = false;                     // the programs read the LTC table
+    const ShadowMaps* shadows = nullptr;  // the shadow atlas, when the programs have shadows
+  };
+  struct Output {
+    GLuint framebuffer = 0;  // the HDR target + the G-buffer's depth
+    int width = 0, height = 0;
+  };
+  // The blended draws of `gpu` in drawing order: farthest first from `camera_pos` (world).
+  static std::vector<size_t> backToFront(const Scene& scene, const GpuScene& gpu,
+                                         const glm::vec3& camera_pos);
+  void run(const PassContext& ctx, const Input& in, const Output& out);
+
+ private:
+  std::unique_ptr<LtcTextures> ltc_;
+};
 
 // ---- Screen-space ambient occlusion (ao_pass.cpp) ----------------------------------------------
 // GTAO (Jimenez et al. 2016) at full or half resolution: the horizon search (gtao.comp), then the

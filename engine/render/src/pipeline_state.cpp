@@ -16,8 +16,12 @@ void applyState(const PipelineState& s) {
   glCullFace(GL_BACK);
   glFrontFace(GL_CCW);
   enable(GL_FRAMEBUFFER_SRGB, s.framebuffer_srgb);
-  enable(GL_BLEND, s.blend_add);
-  glBlendFunc(GL_ONE, GL_ONE);
+  enable(GL_BLEND, s.blend_add || s.blend_over);
+  if (s.blend_over) {
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+  } else {
+    glBlendFunc(GL_ONE, GL_ONE);
+  }
   glClipControl(GL_LOWER_LEFT, s.reversed_z_clip ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
 }
 

@@ -12,7 +12,8 @@ struct PipelineState {
   GLenum depth_func = GL_GREATER;  // reversed Z
   bool cull_back = false;
   bool framebuffer_srgb = false;
-  bool blend_add = false;
+  bool blend_add = false;        // ONE, ONE: passes that add light
+  bool blend_over = false;       // SRC_ALPHA, ONE_MINUS_SRC_ALPHA on colour, destination alpha kept
   bool reversed_z_clip = false;  // glClipControl(LOWER_LEFT, ZERO_TO_ONE)
 };
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <numeric>
 
 #include "pipeline_state.hpp"
 #include "post_stages.hpp"
@@ -129,6 +128,16 @@ void Renderer::refreshVariants() {
     d.defines = toDefineSet(gbufferDefines(key_, v, *scene_), &d.reasons);
     gbuffer_descs_.push_back(std::move(d));
   }
+  forward_descs_.clear();
+  for (size_t v = 0; key_.blend && v < key_.material_variants.size(); ++v) {
+    gl::ProgramDesc d{
+        "forward",
+        {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "passes/forward.frag"}},
+        {}};
+    d.name = key_.uber ? "forward uber" : "forward " + key_.material_variants[v].text();
+    d.defines = toDefineSet(forwardDefines(key_, v, *scene_), &d.reasons);
+    forward_descs_.push_back(std::move(d));
+  }
   ambient_desc_ = {"ambient", {{GL_COMPUTE_SHADER, "passes/ambient.comp"}}, {}};
   ambient_desc_.defines = toDefineSet(ambientDefines(key_, *scene_), &ambient_desc_.reasons);
   passes_->ao.setVariant(key_, *scene_);
@@ -142,8 +151,12 @@ void Renderer::refreshVariants() {
   programs_.setDefineReasons(std::move(reasons));
   // Draws grouped by program, then by material (fewer program and texture switches).
   const auto& draws = gpu_->draws();
-  draw_order_.resize(draws.size());
-  std::iota(draw_order_.begin(), draw_order_.end(), size_t(0));
+  draw_order_.clear();
+  for (size_t i = 0; i < draws.size(); ++i) {
+    if (scene_->materials[size_t(draws[i].material)].alpha_mode != AlphaMode::Blend) {
+      draw_order_.push_back(i);
+    }
+  }
   std::stable_sort(draw_order_.begin(), draw_order_.end(), [&](size_t a, size_t b) {
     const int va = key_.material_variant[size_t(draws[a].material)];
     const int vb = key_.material_variant[size_t(draws[b].material)];
@@ -178,6 +191,7 @@ void Renderer::ensureTargets(int w, int h) {
   t.gbuffer = gl::createFramebuffer(
       "gbuffer", {{&t.base_cavity}, {&t.material}, {&t.normal}, {&t.hdr}}, &t.depth);
   t.output = gl::createFramebuffer("output", {{&t.ldr}});
+  t.forward = gl::createFramebuffer("forward (hdr + gbuffer depth)", {{&t.hdr}}, &t.depth);
 }
 
 struct Renderer::FrameLighting {
@@ -275,6 +289,12 @@ Renderer::FrameLighting Renderer::lightFrame(const PassContext& ctx, FrameUnifor
                    t.height);
   }
   emitterPass(view);
+  if (key_.blend) {
+    p.forward.run(ctx,
+                  {*scene_, *gpu_, key_, forward_descs_, *p.environment, lightPassNeedsLtc(),
+                   key_.shadows ? &p.shadows : nullptr},
+                  {t.forward.id(), t.width, t.height});
+  }
   return lit;
 }
 

@@ -19,6 +19,7 @@ struct Renderer::Targets {
   gl::Texture floor;        // RGBA16F scratch of the floor pass (created when first needed)
   gl::Framebuffer gbuffer;  // base, material, normal, hdr + depth
   gl::Framebuffer output;   // ldr
+  gl::Framebuffer forward;  // hdr + depth: the blended surfaces (depth tested, not written)
   GBufferView gbufferView() const {
     return {base_cavity.id(), material.id(), normal.id(), depth.id()};
   }
@@ -30,6 +31,7 @@ struct Renderer::Passes {
   LightPass light;
   ShadowMaps shadows;
   AoPass ao;
+  ForwardPass forward;
   std::unique_ptr<GpuEnvironment> environment;
 };
 

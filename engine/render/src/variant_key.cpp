@@ -259,7 +259,8 @@ std::string VariantKey::text() const {
          (models.empty() ? std::string("none") : models) + "; environment " +
          std::string(toString(environment)) + "; " + std::to_string(material_variants.size()) +
          " material variant" + (material_variants.size() == 1 ? "" : "s") + "; " +
-         (uber ? "uber" : "specialized") + (shadows ? "; shadows" : "") + (ao ? "; gtao" : "");
+         (uber ? "uber" : "specialized") + (shadows ? "; shadows" : "") + (ao ? "; gtao" : "") +
+         (blend ? "; blend" : "");
 }
 
 VariantKey deriveVariantKey(const Scene& scene) {
@@ -291,6 +292,7 @@ VariantKey deriveVariantKey(const Scene& scene) {
     const Material& m = scene.materials[i];
     k.unlit |= m.model == ShadingModel::Unlit;
     k.default_lit |= m.model == ShadingModel::DefaultLit;
+    k.blend |= m.alpha_mode == AlphaMode::Blend;
     if (k.uber) continue;
     const MaterialFeatures f = materialFeatures(m, colored[i]);
     auto it = std::find(k.material_variants.begin(), k.material_variants.end(), f);
@@ -550,6 +552,18 @@ std::vector<KeyDefine> ambientDefines(const VariantKey& k, const Scene& scene) {
                  s.ambient_terms == 3 ? "diffuse and specular (all terms)"
                                       : "term mask " + std::to_string(int(s.ambient_terms)) +
                                             " (render --aov, per-term debug view)"});
+  return out;
+}
+
+std::vector<KeyDefine> forwardDefines(const VariantKey& k, size_t variant, const Scene& scene) {
+  std::vector<KeyDefine> out = gbufferDefines(k, variant, scene);
+  for (auto* defs : {lightDefines, ambientDefines}) {
+    for (KeyDefine& d : defs(k, scene)) {
+      const bool seen =
+          std::any_of(out.begin(), out.end(), [&](const KeyDefine& o) { return o.name == d.name; });
+      if (!seen) out.push_back(std::move(d));
+    }
+  }
   return out;
 }
 

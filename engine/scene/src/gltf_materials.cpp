@@ -87,14 +87,13 @@ void Importer::emission(const tinygltf::Material& g, const std::string& el, Mate
   }
 }
 
-// alphaMode MASK with its cutoff; BLEND is drawn opaque with a warning per material.
+// alphaMode MASK with its cutoff; BLEND: drawn by the forward pass of blended surfaces.
 void Importer::alphaMode(const tinygltf::Material& g, const std::string& el, Material& m) const {
   if (g.alphaMode == "MASK") {
     m.alpha_mode = AlphaMode::Mask;
     m.alpha_cutoff = finite(g.alphaCutoff, el + ".alphaCutoff");
   } else if (g.alphaMode == "BLEND") {
-    m.alpha_mode = AlphaMode::Opaque;
-    warn(el + " \"" + m.name + "\": alphaMode BLEND is not supported; rendered opaque");
+    m.alpha_mode = AlphaMode::Blend;
   } else if (g.alphaMode != "OPAQUE" && !g.alphaMode.empty()) {
     fail(el + ".alphaMode", "unknown value \"" + g.alphaMode + "\"");
   }

@@ -36,9 +36,9 @@ Camera parseCamera(const Ctx& ctx, const json& j) {
 }
 
 Material parseMaterial(const Ctx& ctx, const json& j, const std::string& ptr, bool allow_name) {
-  std::vector<std::string_view> keys = {"base_color",   "metallic",    "roughness",
-                                        "cavity",       "emissive",    "shading_model",
-                                        "double_sided", "vertex_color"};
+  std::vector<std::string_view> keys = {
+      "base_color",   "metallic",     "roughness", "cavity",     "emissive",    "shading_model",
+      "double_sided", "vertex_color", "alpha",     "alpha_mode", "alpha_cutoff"};
   if (allow_name) keys.push_back("name");
   Obj o(ctx, j, ptr, keys);
   Material m;
@@ -51,6 +51,9 @@ Material parseMaterial(const Ctx& ctx, const json& j, const std::string& ptr, bo
   m.emissive = o.vec3("emissive", m.emissive, kNonNeg);
   m.double_sided = o.boolean("double_sided", m.double_sided);
   m.vertex_color = o.boolean("vertex_color", m.vertex_color);
+  m.base_alpha = o.num("alpha", m.base_alpha, kUnit);
+  if (o.has("alpha_mode")) m.alpha_mode = o.enumeration<AlphaMode>("alpha_mode", m.alpha_mode);
+  m.alpha_cutoff = o.num("alpha_cutoff", m.alpha_cutoff, kUnit);
   if (o.has("shading_model")) {
     m.model = o.enumeration<ShadingModel>("shading_model", m.model);
     if (m.model == ShadingModel::Background) {

@@ -402,6 +402,9 @@ void materialEdits(const Scene& loaded, const Scene& edited, Collector& c) {
     c.field(p + "/shading_model", a.model, b.model, name(b.model));
     c.field(p + "/double_sided", a.double_sided, b.double_sided, b.double_sided);
     c.field(p + "/vertex_color", a.vertex_color, b.vertex_color, b.vertex_color);
+    c.field(p + "/alpha", a.base_alpha, b.base_alpha, b.base_alpha);
+    c.field(p + "/alpha_mode", a.alpha_mode, b.alpha_mode, name(b.alpha_mode));
+    c.field(p + "/alpha_cutoff", a.alpha_cutoff, b.alpha_cutoff, b.alpha_cutoff);
   }
 }
 

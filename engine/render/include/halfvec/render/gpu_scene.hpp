@@ -20,6 +20,7 @@ struct DrawItem {
   int material = 0;
   int object = 0;
   bool double_sided = false;
+  glm::vec3 center{0.0f};  // the mesh's object-space bounding-box centre: blended draws sort by it
 };
 
 struct BoundTexture {

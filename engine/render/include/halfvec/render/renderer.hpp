@@ -202,9 +202,12 @@ class Renderer {
   VariantKey key_;
   RenderSettings key_settings_;                 // the scene settings key_ was derived from
   std::vector<gl::ProgramDesc> gbuffer_descs_;  // per material variant
+  std::vector<gl::ProgramDesc> forward_descs_;  // per material variant, when the key has blend
   gl::ProgramDesc ambient_desc_;
   gl::DefineSet light_defines_;
-  std::vector<size_t> draw_order_;  // gpu_->draws() indices grouped by variant, then material
+  // gpu_->draws() indices of the G-buffer pass (blended draws left out: the forward pass sorts
+  // those each frame), grouped by variant, then material.
+  std::vector<size_t> draw_order_;
 
   const Scene* scene_ = nullptr;
   std::unique_ptr<GpuScene> gpu_;

@@ -80,6 +80,9 @@ struct VariantKey {
   // `settings.ao: gtao` where the ambient pass lights a default_lit material: the frame has the AO
   // pass (shaders/passes/gtao.comp) and the ambient pass reads its output.
   bool ao = false;
+  // A drawn material has alpha_mode blend: the frame ends its lighting with the forward pass of
+  // blended surfaces (shaders/passes/forward.frag), which draws them instead of the G-buffer pass.
+  bool blend = false;
   // The distinct feature sets, one G-buffer program each, and each material's index into it.
   std::vector<MaterialFeatures> material_variants;
   std::vector<int> material_variant;
@@ -133,6 +136,10 @@ std::vector<KeyDefine> gbufferDefines(const VariantKey& key, size_t variant, con
 std::vector<KeyDefine> lightDefines(const VariantKey& key, const Scene& scene);
 // Ambient pass: environment presence, shading models, the IBL options.
 std::vector<KeyDefine> ambientDefines(const VariantKey& key, const Scene& scene);
+// Forward pass of blended surfaces (forward.frag), material variant `variant`: the G-buffer
+// program's material defines and the light and ambient programs' defines, so a blended surface is
+// shaded by the same approximations as an opaque one.
+std::vector<KeyDefine> forwardDefines(const VariantKey& key, size_t variant, const Scene& scene);
 // The AO pass's defines (gtao.comp, ao_denoise.comp): the settings table's SettingPass::Ao rows.
 std::vector<KeyDefine> aoDefines(const VariantKey& key, const Scene& scene);
 // Tone map pass: the output transform's settings.
