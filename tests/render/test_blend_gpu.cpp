@@ -93,6 +93,25 @@ TEST(BlendGpu, OpaqueSceneHasNoForwardPass) {
   for (const auto& p : r.manifest().programs) EXPECT_EQ(p.name.find("forward"), std::string::npos);
 }
 
+// An edit in place (the viewer's material panel) that makes a material blended moves it to the
+// forward pass: over the black background, alpha 0.5 halves its emissive.
+TEST(BlendGpu, EditingAMaterialToBlendMovesItToTheForwardPass) {
+  testContext();
+  Scene s = planeScene(emitting({0.0f, 0.0f, 2.0f}, 1.0f, AlphaMode::Opaque));
+  render::Renderer r;
+  r.setScene(s);
+  r.render(kSize, kSize);
+  EXPECT_NEAR(at(r.readHdr(), kSize / 2, kSize / 2).z, 2.0f, 1e-3);
+  s.materials[0].alpha_mode = AlphaMode::Blend;
+  s.materials[0].base_alpha = 0.5f;
+  r.updateMaterials();
+  const render::FrameStats stats = r.render(kSize, kSize);
+  EXPECT_NEAR(at(r.readHdr(), kSize / 2, kSize / 2).z, 1.0f, 1e-3);
+  bool forward = false;
+  for (const auto& [name, ms] : stats.passes) forward |= name == "forward";
+  EXPECT_TRUE(forward);
+}
+
 namespace {
 
 // A lit floor (point, sphere and tube lights, one of them shadowed, the procedural sky) drawn

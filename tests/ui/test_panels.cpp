@@ -86,7 +86,14 @@ TEST(MaterialPanel, SettersClampToTheSceneFormatRanges) {
   EXPECT_FALSE(model.setShadingModel(hv::ShadingModel::Background));
   EXPECT_TRUE(model.setShadingModel(hv::ShadingModel::Unlit));
   EXPECT_FALSE(model.setShadingModel(hv::ShadingModel::Unlit));  // no change
+  EXPECT_FALSE(model.setAlpha(1.5f));                            // clamped to 1: no change
+  EXPECT_TRUE(model.setAlpha(NAN));
+  EXPECT_EQ(model.current().base_alpha, 0.0f);
+  EXPECT_TRUE(model.setAlphaMode(hv::AlphaMode::Blend));
+  EXPECT_FALSE(model.setAlphaMode(hv::AlphaMode::Blend));
   EXPECT_TRUE(model.resetAll());
+  EXPECT_EQ(model.current().alpha_mode, hv::AlphaMode::Opaque);
+  EXPECT_EQ(model.current().base_alpha, 1.0f);
   EXPECT_EQ(model.current().roughness, 0.5f);
   EXPECT_EQ(model.current().model, hv::ShadingModel::DefaultLit);
 }

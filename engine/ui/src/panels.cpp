@@ -28,7 +28,8 @@ glm::vec3 finiteOr(glm::vec3 v, glm::vec3 fallback) {
 
 bool sameMaterial(const Material& a, const Material& b) {
   return a.base_color == b.base_color && a.metallic == b.metallic && a.roughness == b.roughness &&
-         a.cavity == b.cavity && a.emissive == b.emissive && a.model == b.model;
+         a.cavity == b.cavity && a.emissive == b.emissive && a.model == b.model &&
+         a.base_alpha == b.base_alpha && a.alpha_mode == b.alpha_mode;
 }
 
 bool sameLight(const Light& a, const Light& b) {
@@ -113,6 +114,22 @@ bool MaterialPanelModel::setShadingModel(ShadingModel model) {
   if (!m || model == ShadingModel::Background) return false;  // background is not a material
   const Material before = *m;
   m->model = model;
+  return apply(before);
+}
+
+bool MaterialPanelModel::setAlpha(float v) {
+  Material* m = mut();
+  if (!m) return false;
+  const Material before = *m;
+  m->base_alpha = clamp01(v);
+  return apply(before);
+}
+
+bool MaterialPanelModel::setAlphaMode(AlphaMode mode) {
+  Material* m = mut();
+  if (!m) return false;
+  const Material before = *m;
+  m->alpha_mode = mode;
   return apply(before);
 }
 

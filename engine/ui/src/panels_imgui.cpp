@@ -50,8 +50,8 @@ bool drawMaterialContents(MaterialPanelModel& model, bool* save_requested) {
     ImGui::TextUnformatted("no materials");
     return false;
   }
-  pushLabelColumn(
-      {"material", "base color", "metallic", "roughness", "cavity", "emissive", "shading model"});
+  pushLabelColumn({"material", "base color", "metallic", "roughness", "cavity", "emissive",
+                   "shading model", "alpha mode", "alpha"});
   const Material& cur = model.current();
   std::string preview = cur.name.empty() ? "(unnamed)" : cur.name;
   if (ImGui::BeginCombo("material", preview.c_str())) {
@@ -82,6 +82,12 @@ bool drawMaterialContents(MaterialPanelModel& model, bool* save_requested) {
   if (nameCombo("shading model", &model_index, names)) {
     changed |= model.setShadingModel(ShadingModel(model_index + 1));
   }
+  int alpha_mode = int(m.alpha_mode);
+  if (nameCombo("alpha mode", &alpha_mode, enumNames<AlphaMode>())) {
+    changed |= model.setAlphaMode(AlphaMode(alpha_mode));
+  }
+  if (ImGui::SliderFloat("alpha", &m.base_alpha, 0.0f, 1.0f))
+    changed |= model.setAlpha(m.base_alpha);
   ImGui::PopItemWidth();
   if (ImGui::Button("Reset")) changed |= model.reset();
   ImGui::SameLine();

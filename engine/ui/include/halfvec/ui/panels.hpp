@@ -36,8 +36,8 @@ class MaterialPanelModel {
   const Material& loaded(int index) const { return loaded_.at(size_t(index)); }
 
   // Each setter clamps to the range the scene format accepts (base color, metallic, roughness,
-  // cavity in [0, 1]; emissive in [0, kMaxEmissive]; shading model unlit or default_lit) and
-  // returns true when the material changed.
+  // cavity, alpha in [0, 1]; emissive in [0, kMaxEmissive]; shading model unlit or default_lit)
+  // and returns true when the material changed.
   static constexpr float kMaxEmissive = 1000.0f;
   bool setBaseColor(glm::vec3 c);
   bool setMetallic(float v);
@@ -45,6 +45,8 @@ class MaterialPanelModel {
   bool setCavity(float v);
   bool setEmissive(glm::vec3 e);
   bool setShadingModel(ShadingModel m);
+  bool setAlpha(float v);  // the base colour's alpha: coverage when blended, tested when masked
+  bool setAlphaMode(AlphaMode m);
 
   bool reset();     // the selected material back to its loaded value
   bool resetAll();  // every material
