@@ -22,6 +22,7 @@
 #define HV_BINDING_TILE_INDICES 5
 #define HV_BINDING_TILE_TYPES 6   // per tile: (points, spheres) of its range, tubes follow
 #define HV_BINDING_CULL_BOUNDS 7  // culling: per tile, block and group, the surface AABB
+#define HV_BINDING_FORWARD_LIGHTS 3  // forward pass: per blended draw, the lights that reach it
 #define HV_BINDING_EMITTERS 0          // emitter culling: every sphere and tube light's instance
 #define HV_BINDING_VISIBLE_EMITTERS 1  // emitter culling: those that can cover a pixel, drawn
 #define HV_BINDING_EMITTER_DRAW 2      // emitter culling: the indirect draw, instances counted
@@ -74,6 +75,7 @@
 #define HV_LOC_SHADOW_VIEW_PROJ 3  // shadow.vert: the cube face's view-projection
 #define HV_LOC_SHADOW_LIGHT 4      // shadow.frag: light center, 1 / far
 #define HV_LOC_AO_PARAMS 5         // gtao.comp, ao_denoise.comp: radius (m), scale, AO size
+#define HV_LOC_FORWARD_LIGHTS 6    // forward.frag: the draw's range of HV_BINDING_FORWARD_LIGHTS
 
 // ---- FrameBlock::frame_flags bits (hv::render::FrameFlag), set for the per-term debug views ---
 #define HV_FRAME_NO_BACKGROUND 1u  // background pixels stay black (ambient.comp)

@@ -35,6 +35,13 @@
 #endif
 
 layout(std430, binding = HV_BINDING_LIGHTS) readonly buffer LightBlock { GpuLight lights[]; };
+// The lights whose culling sphere meets this draw's bounds (ForwardPass::lightsReaching): the
+// tile lists are built from the opaque depth, which a blended surface in front of it is not
+// part of, so the forward pass culls per draw, on the CPU.
+layout(std430, binding = HV_BINDING_FORWARD_LIGHTS) readonly buffer DrawLightBlock {
+  uint draw_lights[];
+};
+layout(location = HV_LOC_FORWARD_LIGHTS) uniform uvec2 u_draw_lights;  // offset, count
 
 #if HV_ENVIRONMENT
 layout(binding = HV_UNIT_FORWARD_RADIANCE) uniform samplerCube t_radiance;
@@ -101,11 +108,9 @@ void main() {
     Surface s = makeSurface(sm.n, clamp(sm.base.rgb, 0.0, 1.0), clamp(sm.metallic, 0.0, 1.0),
                             sm.roughness, clamp(sm.cavity, 0.0, 1.0));
     ShadingPoint sp = makeShadingPoint(s, P, V);
-    // Every light (the tile lists are built from the opaque depth, which a blended surface in
-    // front of it is not part of).
     vec3 direct = vec3(0.0);
-    for (uint i = 0u; i < u_light_count; ++i) {
-      GpuLight l = lights[i];
+    for (uint i = 0u; i < u_draw_lights.y; ++i) {
+      GpuLight l = lights[draw_lights[u_draw_lights.x + i]];
 #if HV_SHADOWS
       vec3 sP[HV_SHADOW_RECEIVERS];
       vec3 sN[HV_SHADOW_RECEIVERS];

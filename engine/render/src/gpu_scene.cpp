@@ -36,6 +36,7 @@ GpuScene::GpuScene(const Scene& scene) : scene_(&scene) {
           hi = glm::max(hi, v.position);
         }
         d.center = 0.5f * (lo + hi);
+        d.half_extent = 0.5f * (hi - lo);
       }
       draws_.push_back(d);
     }

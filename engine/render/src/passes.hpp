@@ -9,6 +9,7 @@
 // slot the pass did not bind.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -75,6 +76,8 @@ struct SceneDraws {
   const VariantKey& key;
   const std::vector<gl::ProgramDesc>& programs;  // per material variant of `key`
   const std::vector<size_t>& order;
+  // Called before each draw with its index into gpu.draws(), after its program is bound.
+  const std::function<void(size_t)>* before_draw = nullptr;
 };
 void drawScene(const PassContext& ctx, gl::PassBindings& b, const SceneDraws& in);
 
@@ -216,10 +219,16 @@ class ForwardPass {
   // The blended draws of `gpu` in drawing order: farthest first from `camera_pos` (world).
   static std::vector<size_t> backToFront(const Scene& scene, const GpuScene& gpu,
                                          const glm::vec3& camera_pos);
+  // The lights (indices into the GPU light list) whose culling sphere meets the world-space
+  // bounding box of draw `draw`: the only ones that can light its fragments (a light's window is
+  // exactly 0 outside that sphere, lights.glsl lightCullRadius).
+  static std::vector<uint32_t> lightsReaching(const Scene& scene, const GpuScene& gpu, size_t draw);
   void run(const PassContext& ctx, const Input& in, const Output& out);
 
  private:
   std::unique_ptr<LtcTextures> ltc_;
+  gl::Buffer draw_lights_;  // per blended draw its lightsReaching list, concatenated
+  size_t draw_lights_capacity_ = 0;
 };
 
 // ---- Screen-space ambient occlusion (ao_pass.cpp) ----------------------------------------------

@@ -31,6 +31,7 @@ void drawScene(const PassContext& ctx, gl::PassBindings& b, const SceneDraws& in
       culling = !d.double_sided;
       culling ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
     }
+    if (in.before_draw) (*in.before_draw)(di);
     if (d.material != bound_material) {
       bound_material = d.material;
       b.uniformRange(HV_UBO_MATERIAL, in.gpu.materialBuffer(),

@@ -20,7 +20,10 @@ struct DrawItem {
   int material = 0;
   int object = 0;
   bool double_sided = false;
-  glm::vec3 center{0.0f};  // the mesh's object-space bounding-box centre: blended draws sort by it
+  // The mesh's object-space bounding box: blended draws sort by its centre and list the lights
+  // whose bounds it meets.
+  glm::vec3 center{0.0f};
+  glm::vec3 half_extent{0.0f};
 };
 
 struct BoundTexture {
