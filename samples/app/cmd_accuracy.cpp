@@ -40,7 +40,8 @@ tables to a markdown file, with heat maps in a folder next to it (<out stem>/*.p
   - the sample scenes: engine vs reference heat maps.
 
 Options:
-  --out FILE.md     output (default docs/accuracy.md)
+  --out FILE.md     output (default docs/accuracy.md; required with --only, which writes a
+                    report of that section alone and so must not replace the whole one)
   --quick           small grids and images, few samples (a smoke test; seconds)
   --threads N       CPU threads (default: all cores)
   --only SECTION    measure and write only that section (minutes, not hours): shadows (the
@@ -49,7 +50,7 @@ Options:
 )";
 
 struct Options {
-  std::string out = "docs/accuracy.md";
+  std::string out;  // empty: docs/accuracy.md, the full report's place (not for --only)
   eval::AccuracyOptions eval;
   std::string only;  // "shadows" or "occlusion": measure and write that section alone
 };
@@ -60,6 +61,7 @@ Options parseArgs(const Args& args) {
     const std::string& a = args[i];
     if (a == "--out") {
       o.out = optionValue(args, i);
+      if (o.out.empty()) throw UsageError{"--out needs a file name"};
     } else if (a == "--quick") {
       o.eval.quick = true;
     } else if (a == "--threads") {
@@ -73,7 +75,12 @@ Options parseArgs(const Args& args) {
       throw UsageError{"unknown argument '" + a + "'"};
     }
   }
-  if (o.out.empty()) throw UsageError{"--out needs a file name"};
+  // A section alone is not the whole report: it goes only where it is told to go.
+  if (o.out.empty() && !o.only.empty()) {
+    throw UsageError{"--only " + o.only +
+                     " needs --out FILE.md (it does not replace docs/accuracy.md)"};
+  }
+  if (o.out.empty()) o.out = "docs/accuracy.md";
   // The shared assets folder (the CLI sets its default), empty when HV_ASSETS_DIR is not set: the
   // sections that need it say they were skipped.
   const char* env = std::getenv("HV_ASSETS_DIR");
@@ -165,7 +172,7 @@ int cmdAccuracy(const Args& args) {
   const Options o = parseArgs(args);
   const fs::path out = o.out;
   const fs::path heat_dir = out.parent_path() / out.stem();
-  fs::create_directories(heat_dir);
+  if (o.only.empty()) fs::create_directories(heat_dir);  // the sample scenes' heat maps
   OutputFiles outputs;
   const fs::path md_tmp = outputs.add(out);  // fails now if the folder is not writable
   const auto t0 = std::chrono::steady_clock::now();

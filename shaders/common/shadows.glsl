@@ -25,9 +25,6 @@
 #ifndef HV_SHADOW_MAP_SIZE
 #define HV_SHADOW_MAP_SIZE 512
 #endif
-// Taps of the PCF filter and of PCSS's blocker search (a Vogel disk each).
-#define HV_SHADOW_TAPS 16
-
 // Bias, in texels of the map at the receiver's distance (measured: docs/lights.md, "Shadows",
 // acne at 80 degrees from the normal against light leaking at contact). The receiver moves along
 // its normal by HV_SHADOW_NORMAL_OFFSET texels before the lookup (normal offset); each tap then
@@ -45,8 +42,6 @@ const float HV_SHADOW_PCF_RADIUS = 1.5f;
 // distance z from the light occludes part of an emitter of radius r from a receiver at d when
 // it lies within r (d - z) / (d z) of the receiver's direction, r / d for z = d / 2).
 const float HV_PCSS_SEARCH_SCALE = 2.0f;
-// The blocker search takes every HV_PCSS_SEARCH_STEP-th tap of the filter's Vogel disk.
-#define HV_PCSS_SEARCH_STEP 1
 // Widest filter, radians: a receiver far behind a close blocker under a large light would
 // otherwise sample half the cube.
 const float HV_SHADOW_MAX_FILTER = 0.35f;
@@ -117,6 +112,28 @@ float shadowDepthBias(float d, float cos_theta) {
   return (HV_SHADOW_CONST_BIAS + HV_SHADOW_SLOPE_BIAS * tan_theta) * shadowTexelAngle() * d;
 }
 
+// The receiver-plane distance of a tap (receiverPlaneDistance), with what depends only on the
+// receiver computed once for all of its taps: the tap's ray is dir = D + o.x u + o.y v for the
+// offset o (radians at unit distance, across the unit direction D; u, v, D orthonormal), not
+// normalized, so |dir| = sqrt(1 + |o|^2) and the distance along it to the plane is
+// dot(toP, N) |dir| / dot(dir, N), with dot(dir, N) = dot(D, N) + o.x dot(u, N) + o.y dot(v, N).
+// plane = (dot(toP, N), dot(D, N), dot(u, N), dot(v, N)); near = |toP| / 2, far as there.
+float shadowTapDistance(vec4 plane, vec2 o, float near, float far) {
+  float den = plane.y + o.x * plane.z + o.y * plane.w;
+  float t = plane.x * sqrt(1.0f + dot(o, o)) / min(den, -1e-6f);
+  t = den < -1e-6f ? t : far;
+  return clamp(t, near, far);
+}
+
+// PCF's taps (Reeves et al. 1987 with bilinear depth comparison, each tap a 2 x 2 PCF): four at
+// (+-a, +-a) texels with a = HV_SHADOW_PCF_RADIUS / 2, whose spread (a^2 per axis) is that of a
+// uniform disk of radius HV_SHADOW_PCF_RADIUS (R^2 / 4 per axis), the kernel the filter had as
+// 16 point taps on a Vogel disk of that radius; the bilinear footprints overlap, so the kernel
+// is a continuous, monotone ramp across an edge.
+vec2 pcfTap(int i) {
+  return vec2((i & 1) != 0 ? 0.5f : -0.5f, (i & 2) != 0 ? 0.5f : -0.5f);
+}
+
 #if HV_SHADOWS && !defined(HV_CPP)
 // The atlas twice (engine/render/src/shadow_pass.cpp): raw distances (nearest; PCSS's blocker
 // search, hard shadows) and with depth comparison (bilinear PCF of 2 x 2 texels per tap). Each
@@ -128,29 +145,55 @@ layout(binding = HV_UNIT_SHADOW_COMPARE) uniform samplerCubeArrayShadow t_shadow
 // (light_shade.comp checks that the two agree).
 #define HV_SHADOW_RECEIVERS 4
 
-// Percentage-closer filtering (Reeves et al. 1987) of n taps over the ellipse of half-axes
-// `radii` (radians) along u and v around D: the fraction of taps whose receiver-plane depth is
-// not behind the map's (PCF, and PCSS step 3). 1 when n = 0.
-float shadowPcf(vec3 toP, vec3 N, vec3 D, vec3 u, vec3 v, vec2 radii, float bias, float far,
-                float layer, int n) {
+// The taps of PCSS's filter (a Vogel disk of bilinear comparisons) and of its blocker search
+// (a Vogel disk of gathers, each the 2 x 2 texels around its point: four distances per fetch).
+#define HV_PCSS_FILTER_TAPS 16
+#define HV_PCSS_SEARCH_GATHERS 8
+
+// What the taps of one receiver share (computed once per receiver and light): its direction D
+// from the light and the frame u, v across it, the receiver plane's coefficients
+// (shadowTapDistance), the nearest distance a tap may compare against, and the bias, both over
+// `far` as the map stores distances. Every tap then costs a 2D offset, its ray and the plane's
+// distance along it.
+struct ShadowReceiver {
+  vec3 D;
+  vec3 u;
+  vec3 v;
+  vec4 plane;
+  float near;
+  float bias;
+};
+
+// The map's comparison value of the tap at offset o (radians across D): the receiver plane's
+// distance along the tap's ray less the bias, over far.
+float shadowTapRef(ShadowReceiver r, vec2 o, float far, float inv_far) {
+  return shadowTapDistance(r.plane, o, r.near, far) * inv_far - r.bias;
+}
+
+// Percentage-closer filtering over the ellipse of half-axes `radii` (radians) along u and v:
+// the mean of HV_PCSS_FILTER_TAPS bilinear comparisons on a Vogel disk (PCSS step 3); n, the
+// loop's count, is HV_PCSS_FILTER_TAPS (see shadowVisibility).
+float shadowPcfDisk(ShadowReceiver r, vec2 radii, float far, float inv_far, float layer, int n) {
   float lit = 0.0f;
   vec2 rot = vec2(1.0f, 0.0f);
   for (int i = 0; i < n; ++i) {
-    vec2 o = sqrt((float(i) + 0.5f) / float(HV_SHADOW_TAPS)) * rot * radii;
+    vec2 o = sqrt((float(i) + 0.5f) / float(HV_PCSS_FILTER_TAPS)) * rot * radii;
     rot = vogelNext(rot);
-    vec3 dir = normalize(D + u * o.x + v * o.y);
-    float t = receiverPlaneDistance(toP, N, dir, far);
-    lit += texture(t_shadow_compare, vec4(dir, layer), (t - bias) / far);
+    vec3 dir = r.D + r.u * o.x + r.v * o.y;
+    lit += texture(t_shadow_compare, vec4(dir, layer), shadowTapRef(r, o, far, inv_far));
   }
-  return n > 0 ? lit / float(n) : 1.0f;
+  return lit / float(HV_PCSS_FILTER_TAPS);
 }
 
 // Visibility (0 shadowed .. 1 lit) of a light centered at Lpos whose map is cube `layer` of the
 // atlas (< 0: none; lit), distances stored over `far`, at HV_SHADOW_RECEIVERS receivers P[j]
 // with normals N[j] (`use[j]` false: not needed, e.g. a background pixel); the emitter (PCSS):
-// radius, segment axis and length. Every skip is a loop that runs 0 times: on a SIMD CPU
+// radius, segment axis and length. Every skip is a loop of one pass or none: on a SIMD CPU
 // implementation (llvmpipe) an `if` costs its body even when no lane takes it, a loop that no
-// lane enters costs nothing.
+// lane enters costs nothing. The tap loops run all their taps or none (their count is the number
+// of taps times `lookup`, 1 or 0): no lane leaves early, and the count is not a constant that
+// the compiler would unroll into a copy of the texture lookup per tap (slower on llvmpipe:
+// docs/lights.md, "Cost").
 vec4 shadowVisibility(vec3 Lpos, float far, float layer, float radius, vec3 axis, float len,
                       vec3 P[HV_SHADOW_RECEIVERS], vec3 N[HV_SHADOW_RECEIVERS], bvec4 use) {
   vec4 vis = vec4(1.0f);
@@ -158,84 +201,78 @@ vec4 shadowVisibility(vec3 Lpos, float far, float layer, float radius, vec3 axis
   int lookups = layer >= 0.0f ? 1 : 0;
   for (int k = 0; k < lookups; ++k) {
     float texel = shadowTexelAngle();
-    vec3 toP[HV_SHADOW_RECEIVERS];
-    vec3 D[HV_SHADOW_RECEIVERS];
-    float d[HV_SHADOW_RECEIVERS];
-    float bias[HV_SHADOW_RECEIVERS];
-    int n[HV_SHADOW_RECEIVERS];
+    float inv_far = 1.0f / far;
     for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
       // Normal offset: the receiver moves along its normal (towards the light on a lit face).
       vec3 toP0 = P[j] - Lpos;
-      toP[j] = toP0 + N[j] * (HV_SHADOW_NORMAL_OFFSET * texel * length(toP0));
-      d[j] = length(toP[j]);
-      D[j] = toP[j] / max(d[j], 1e-6f);
-      bias[j] = shadowDepthBias(d[j], abs(dot(N[j], D[j])));
+      vec3 toP = toP0 + N[j] * (HV_SHADOW_NORMAL_OFFSET * texel * length(toP0));
+      float d = length(toP);
+      ShadowReceiver r;
+      r.D = toP / max(d, 1e-6f);
+      float cos_theta = dot(N[j], r.D);
+      r.bias = shadowDepthBias(d, abs(cos_theta)) * inv_far;
+      r.near = 0.5f * d;
       // The emitter wholly below the receiver's horizon (its highest point over the tangent
       // plane, -N.toP0 + radius + len / 2 |N.axis|, below it): the surface shadows itself and
       // the light's evaluation is 0 there too; no lookup.
       bool below = radius + 0.5f * len * abs(dot(N[j], axis)) < dot(N[j], toP0);
       vis[j] = below ? 0.0f : 1.0f;
       // Beyond the map (the light's culling radius) the light is 0 anyway.
-      n[j] = use[j] && !below && d[j] < far ? HV_SHADOW_TAPS : 0;
-    }
+      int lookup = use[j] && !below && d < far ? 1 : 0;
 #if HV_SHADOW_FILTER == HV_SHADOW_FILTER_HARD
-    for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
-      for (int i = 0; i < n[j]; i += HV_SHADOW_TAPS) {
-        float z = textureLod(t_shadow_depth, vec4(D[j], layer), 0.0f).r * far;
-        vis[j] = step(d[j] - bias[j], z);
+      for (int i = 0; i < lookup; ++i) {
+        float z = textureLod(t_shadow_depth, vec4(r.D, layer), 0.0f).r;
+        vis[j] = step(d * inv_far - r.bias, z);
       }
-    }
 #elif HV_SHADOW_FILTER == HV_SHADOW_FILTER_PCF
-    for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
-      vec3 u;
-      vec3 v;
-      tangentFrame(D[j], u, v);
-      vec2 radii = vec2(HV_SHADOW_PCF_RADIUS * texel);
-      vis[j] =
-          n[j] > 0 ? shadowPcf(toP[j], N[j], D[j], u, v, radii, bias[j], far, layer, n[j]) : vis[j];
-    }
-#else
-    vec3 u[HV_SHADOW_RECEIVERS];
-    vec3 v[HV_SHADOW_RECEIVERS];
-    vec2 ext[HV_SHADOW_RECEIVERS];
-    float search[HV_SHADOW_RECEIVERS];
-    for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
-      ext[j] = emitterExtent(D[j], axis, radius, len, u[j], v[j]);
-      // Blocker search (Fernando 2005, step 1), over the emitter's extent seen from the
-      // receiver: the farthest texel nearer than the receiver, not the paper's mean. The
-      // penumbra is cast by the occluder's silhouette as seen from the light, and a convex
-      // occluder's silhouette is the farthest part of it in the search region: the mean, pulled
-      // towards the light by the occluder's near side, widens the penumbra (docs/accuracy.md,
-      // "Shadows").
-      search[j] = clamp(HV_PCSS_SEARCH_SCALE * ext[j].x / d[j], HV_SHADOW_PCF_RADIUS * texel,
-                        HV_SHADOW_MAX_FILTER);
-    }
-    for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
-      int m = n[j];
-      float blockers = 0.0f;
-      float blocker_far = 0.0f;
-      vec2 rot = vec2(1.0f, 0.0f);
-      for (int i = 0; i < m; i += HV_PCSS_SEARCH_STEP) {
-        vec2 o = sqrt((float(i) + 0.5f) / float(HV_SHADOW_TAPS)) * search[j] * rot;
-        for (int k = 0; k < HV_PCSS_SEARCH_STEP; ++k) rot = vogelNext(rot);
-        vec3 dir = normalize(D[j] + u[j] * o.x + v[j] * o.y);
-        float t = receiverPlaneDistance(toP[j], N[j], dir, far);
-        float z = textureLod(t_shadow_depth, vec4(dir, layer), 0.0f).r * far;
-        float b = step(z, t - bias[j]);
-        blockers += b;
-        blocker_far = max(blocker_far, b * z);
+      for (int i = 0; i < lookup; ++i) {
+        tangentFrame(r.D, r.u, r.v);
+        r.plane = vec4(dot(toP, N[j]), cos_theta, dot(r.u, N[j]), dot(r.v, N[j]));
+        float lit = 0.0f;
+        for (int t = 0; t < 4 * lookup; ++t) {
+          vec2 o = pcfTap(t) * (HV_SHADOW_PCF_RADIUS * texel);
+          vec3 dir = r.D + r.u * o.x + r.v * o.y;
+          lit += texture(t_shadow_compare, vec4(dir, layer), shadowTapRef(r, o, far, inv_far));
+        }
+        vis[j] = 0.25f * lit;
       }
-      // Penumbra (step 2) from the emitter's half-extents, at least PCF's radius.
-      float zb = blocker_far;
-      vec2 radii =
-          clamp(vec2(pcssPenumbraAngle(d[j], zb, ext[j].x), pcssPenumbraAngle(d[j], zb, ext[j].y)),
-                vec2(HV_SHADOW_PCF_RADIUS * texel), vec2(HV_SHADOW_MAX_FILTER));
-      // No blocker: lit, nothing to filter.
-      m = blockers > 0.0f ? m : 0;
-      vis[j] =
-          m > 0 ? shadowPcf(toP[j], N[j], D[j], u[j], v[j], radii, bias[j], far, layer, m) : vis[j];
-    }
+#else
+      for (int i = 0; i < lookup; ++i) {
+        vec2 ext = emitterExtent(r.D, axis, radius, len, r.u, r.v);
+        r.plane = vec4(dot(toP, N[j]), cos_theta, dot(r.u, N[j]), dot(r.v, N[j]));
+        // Blocker search (Fernando 2005, step 1), over the emitter's extent seen from the
+        // receiver: the farthest texel nearer than the receiver, not the paper's mean. The
+        // penumbra is cast by the occluder's silhouette as seen from the light, and a convex
+        // occluder's silhouette is the farthest part of it in the search region: the mean,
+        // pulled towards the light by the occluder's near side, widens the penumbra
+        // (docs/accuracy.md, "Shadows"). Each gather's four texels lie within a texel of its
+        // point, whose plane distance they are compared with: the slope-scaled bias covers the
+        // plane's change over a texel.
+        float search = clamp(HV_PCSS_SEARCH_SCALE * ext.x / d, HV_SHADOW_PCF_RADIUS * texel,
+                             HV_SHADOW_MAX_FILTER);
+        float blocker_far = 0.0f;  // over far; 0: no blocker
+        vec2 rot = vec2(1.0f, 0.0f);
+        for (int g = 0; g < HV_PCSS_SEARCH_GATHERS * lookup; ++g) {
+          vec2 o = sqrt((float(g) + 0.5f) / float(HV_PCSS_SEARCH_GATHERS)) * search * rot;
+          rot = vogelNext(rot);
+          vec3 dir = r.D + r.u * o.x + r.v * o.y;
+          float ref = shadowTapRef(r, o, far, inv_far);
+          vec4 z = textureGather(t_shadow_depth, vec4(dir, layer));
+          vec4 zb = z * step(z, vec4(ref));  // the blockers' distances, 0 for the others
+          blocker_far = max(blocker_far, max(max(zb.x, zb.y), max(zb.z, zb.w)));
+        }
+        // Penumbra (step 2) from the emitter's half-extents, at least PCF's radius.
+        float zb = blocker_far * far;
+        vec2 radii = clamp(vec2(pcssPenumbraAngle(d, zb, ext.x), pcssPenumbraAngle(d, zb, ext.y)),
+                           vec2(HV_SHADOW_PCF_RADIUS * texel), vec2(HV_SHADOW_MAX_FILTER));
+        // No blocker: lit, nothing to filter.
+        int filters = blocker_far > 0.0f ? 1 : 0;
+        for (int f = 0; f < filters; ++f) {
+          vis[j] = shadowPcfDisk(r, radii, far, inv_far, layer, HV_PCSS_FILTER_TAPS * lookup);
+        }
+      }
 #endif
+    }
   }
   return vis;
 }

@@ -39,6 +39,18 @@ TEST(Cli, UnknownOptionIsAUsageError) {
   EXPECT_EQ(hv::app::runCli({"nonsense"}), 2);
 }
 
+// `accuracy --only SECTION` measures one section, which is not the whole report: without --out
+// it is a usage error before anything is measured, not a run that replaces docs/accuracy.md.
+TEST(Cli, AccuracyOnlyNeedsItsOwnOutput) {
+  for (const char* section : {"shadows", "occlusion"}) {
+    testing::internal::CaptureStderr();
+    EXPECT_EQ(hv::app::runCli({"accuracy", "--only", section}), 2) << section;
+    const std::string err = testing::internal::GetCapturedStderr();
+    EXPECT_NE(err.find("--out"), std::string::npos) << err;
+  }
+  EXPECT_EQ(hv::app::runCli({"accuracy", "--out", ""}), 2);
+}
+
 TEST(Cli, BadSceneFailsAndWritesNothing) {
   const fs::path scene = tmp("bad.json");
   std::ofstream(scene) << R"({"camera": {"fov_y_deg": "wide"}})";
