@@ -88,15 +88,7 @@ void ForwardPass::run(const PassContext& ctx, const Input& in, const Output& out
   in.environment.bind(
       b, fallback_2d,
       {HV_UNIT_FORWARD_RADIANCE, HV_UNIT_FORWARD_ENV_BRDF, HV_UNIT_FORWARD_IRRADIANCE});
-  if (in.ltc) {
-    if (!ltc_) ltc_ = std::make_unique<LtcTextures>();
-    ltc_->bind(b);
-  }
-  if (in.shadows) {  // ShadowMaps binds its two units itself (shadow_pass.cpp): declared here
-    in.shadows->bind();
-    b.declareTexture(HV_UNIT_SHADOW_DEPTH);
-    b.declareTexture(HV_UNIT_SHADOW_COMPARE);
-  }
+  bindLightTables(b, in.ltc ? &ltc_ : nullptr, in.shadows);
   const std::function<void(size_t)> set_lights = [&](size_t di) {
     glUniform2ui(HV_LOC_FORWARD_LIGHTS, ranges[di].x, ranges[di].y);
   };

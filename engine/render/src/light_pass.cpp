@@ -10,6 +10,19 @@
 
 namespace hv::render {
 
+void bindLightTables(gl::PassBindings& b, std::unique_ptr<LtcTextures>* ltc,
+                     const ShadowMaps* shadows) {
+  if (ltc) {
+    if (!*ltc) *ltc = std::make_unique<LtcTextures>();
+    (*ltc)->bind(b);
+  }
+  if (shadows) {  // ShadowMaps binds its two units itself (shadow_pass.cpp): declared here
+    shadows->bind();
+    b.declareTexture(HV_UNIT_SHADOW_DEPTH);
+    b.declareTexture(HV_UNIT_SHADOW_COMPARE);
+  }
+}
+
 // The tiled light pass reads the lights and the tile index list through buffer textures
 // (HV_LIGHTS_TEXTURE) when they fit GL_MAX_TEXTURE_BUFFER_SIZE: texelFetch gives the
 // implementation a vector gather, where an SSBO read indexed by loaded data is a per-lane load on a
@@ -55,15 +68,7 @@ void LightPass::run(const PassContext& ctx, const FrameBlock& frame, const Input
     b.texture(HV_UNIT_LIGHT_TEXELS, light_texels_.id());
     b.texture(HV_UNIT_TILE_INDEX_TEXELS, tile_index_texels_.id());
   }
-  if (in.ltc) {
-    if (!ltc_) ltc_ = std::make_unique<LtcTextures>();
-    ltc_->bind(b);
-  }
-  if (in.shadows) {  // ShadowMaps binds its two units itself (shadow_pass.cpp): declared here
-    in.shadows->bind();
-    b.declareTexture(HV_UNIT_SHADOW_DEPTH);
-    b.declareTexture(HV_UNIT_SHADOW_COMPARE);
-  }
+  bindLightTables(b, in.ltc ? &ltc_ : nullptr, in.shadows);
   glDispatchCompute(frame.viewport.z, (frame.viewport.w + kLightGroupTiles - 1) / kLightGroupTiles,
                     1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);

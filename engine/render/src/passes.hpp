@@ -141,6 +141,11 @@ class LightCulling {
 };
 
 // ---- Light pass (light_pass.cpp) ---------------------------------------------------------------
+// What the programs that evaluate lights read besides the lights: the LTC table (created in
+// `*ltc` the first time; null: the programs do not read it) and the shadow atlas (null: none).
+void bindLightTables(gl::PassBindings& b, std::unique_ptr<LtcTextures>* ltc,
+                     const ShadowMaps* shadows);
+
 class LightPass {
  public:
   struct Input {

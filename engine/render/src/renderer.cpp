@@ -118,26 +118,23 @@ void Renderer::refreshVariants() {
   key_ = deriveVariantKey(*scene_);
   applyTermView(key_);
   key_settings_ = scene_->settings;
-  gbuffer_descs_.clear();
-  for (size_t v = 0; v < key_.material_variants.size(); ++v) {
-    gl::ProgramDesc d{
-        "gbuffer",
-        {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "passes/gbuffer.frag"}},
-        {}};
-    d.name = key_.uber ? "gbuffer uber" : "gbuffer " + key_.material_variants[v].text();
-    d.defines = toDefineSet(gbufferDefines(key_, v, *scene_), &d.reasons);
-    gbuffer_descs_.push_back(std::move(d));
-  }
+  // One program per material variant of the key: the G-buffer pass's, and the forward pass's
+  // when a material is blended.
+  const auto materialPrograms = [&](const char* pass, const char* frag, auto defines) {
+    std::vector<gl::ProgramDesc> descs;
+    for (size_t v = 0; v < key_.material_variants.size(); ++v) {
+      gl::ProgramDesc d{
+          pass, {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, frag}}, {}};
+      d.name = std::string(pass) + " " + (key_.uber ? "uber" : key_.material_variants[v].text());
+      d.defines = toDefineSet(defines(key_, v, *scene_), &d.reasons);
+      descs.push_back(std::move(d));
+    }
+    return descs;
+  };
+  gbuffer_descs_ = materialPrograms("gbuffer", "passes/gbuffer.frag", gbufferDefines);
   forward_descs_.clear();
-  for (size_t v = 0; key_.blend && v < key_.material_variants.size(); ++v) {
-    gl::ProgramDesc d{
-        "forward",
-        {{GL_VERTEX_SHADER, "passes/gbuffer.vert"}, {GL_FRAGMENT_SHADER, "passes/forward.frag"}},
-        {}};
-    d.name = key_.uber ? "forward uber" : "forward " + key_.material_variants[v].text();
-    d.defines = toDefineSet(forwardDefines(key_, v, *scene_), &d.reasons);
-    forward_descs_.push_back(std::move(d));
-  }
+  if (key_.blend)
+    forward_descs_ = materialPrograms("forward", "passes/forward.frag", forwardDefines);
   ambient_desc_ = {"ambient", {{GL_COMPUTE_SHADER, "passes/ambient.comp"}}, {}};
   ambient_desc_.defines = toDefineSet(ambientDefines(key_, *scene_), &ambient_desc_.reasons);
   passes_->ao.setVariant(key_, *scene_);
