@@ -27,7 +27,8 @@
 // One light as the GPU reads it: std430 storage buffer HV_BINDING_LIGHTS, or 4 RGBA32UI texels of
 // a buffer texture (light_shade.comp, HV_LIGHTS_TEXTURE, which reinterprets the float fields with
 // uintBitsToFloat), 64 bytes. Points and spheres read only the first two vec4 in the light pass,
-// tubes three, which is why the first fields are vec4 texels. Offsets in bytes on the right.
+// tubes and spots three, which is why the first fields are vec4 texels. Offsets in bytes on the
+// right.
 struct GpuLight {
   vec4 position_radius;  //  0 x,y,z world position (tube: segment center), w sphere/capsule
                          //    radius (m)

@@ -206,3 +206,48 @@ TEST(SpotLights, ConeCullingTouchesFewerTilesAndMissesNoPixel) {
   }
   EXPECT_GT(lit, tiled.px.size() / 10);
 }
+
+// "shadows": true on a spot: a point light's cube map. A sphere 1 m under the spot (hard filter)
+// darkens the floor points whose ray to the light passes through it, 5 cm inside its silhouette
+// (below 2% of the unshadowed value), and leaves the floor points whose ray clears it by 5 cm as
+// they are without shadows (the half-float tolerance of the cone test above).
+TEST(SpotLights, ShadowsFromAPointLightsCube) {
+  const int w = 96, h = 72;
+  Scene lit = floorScene(0.0f);
+  Material m;
+  const glm::vec3 center = lit.lights[0].position - glm::vec3(0.0f, 1.0f, 0.0f);
+  const float r = 0.3f;
+  addMeshObject(lit, makeSphere(r, 48, 24), m, center);
+  Scene shadowed = lit;
+  shadowed.lights[0].shadows = true;
+  shadowed.settings.shadow_filter = ShadowFilter::Hard;
+  const Frame a = renderScene(lit, w, h), b = renderScene(shadowed, w, h);
+  const glm::mat4 inv_vp = referenceInvViewProj(lit.camera, w, h);
+  const glm::vec3 light = lit.lights[0].position;
+  int dark = 0, clear = 0;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const size_t i = size_t(y) * size_t(w) + size_t(x);
+      if (a.g.model[i] != static_cast<uint32_t>(ShadingModel::DefaultLit)) continue;
+      const glm::vec2 uv((float(x) + 0.5f) / float(w), 1.0f - (float(y) + 0.5f) / float(h));
+      const glm::vec3 P = glsl::reconstructWorldPosition(uv, a.g.depth[i], inv_vp);
+      if (std::abs(P.y) > 1e-2f || a.hdr.px[i][0] <= 0.0f) continue;  // lit floor points only
+      // Distance from the sphere's center to the segment from P to the light.
+      const glm::vec3 d = glm::normalize(light - P);
+      const float t = glm::dot(center - P, d);
+      const float miss = glm::length(center - (P + d * t));
+      for (int k = 0; k < 3; ++k) {
+        const float unshadowed = a.hdr.px[i][k], v = b.hdr.px[i][k];
+        if (miss < r - 0.05f) {
+          ASSERT_LT(v, 0.02f * unshadowed) << "in the shadow, pixel " << i;
+        } else if (miss > r + 0.05f) {
+          ASSERT_NEAR(v, unshadowed, 1e-3f * unshadowed + 1e-6f) << "clear, pixel " << i;
+        }
+      }
+      dark += miss < r - 0.05f;
+      clear += miss > r + 0.05f;
+    }
+  }
+  EXPECT_GT(dark, 100);
+  EXPECT_GT(clear, 300);
+}
