@@ -17,20 +17,28 @@
 #define HV_LIGHT_POINT 0
 #define HV_LIGHT_SPHERE 1
 #define HV_LIGHT_TUBE 2
+// A spot (hv::LightType::Spot) is a point or sphere light times its cone: its type is
+// HV_LIGHT_POINT or HV_LIGHT_SPHERE with this bit set (so that the culling sorts it with its shape
+// and the light pass shades it in that shape's loop), and axis_length holds its cone (spotCone,
+// spot.glsl) instead of an axis and a length.
+#define HV_LIGHT_SPOT_FLAG 4u
+#define HV_LIGHT_TYPE_MASK 3u
 
 // One light as the GPU reads it: std430 storage buffer HV_BINDING_LIGHTS, or 4 RGBA32UI texels of
 // a buffer texture (light_shade.comp, HV_LIGHTS_TEXTURE, which reinterprets the float fields with
 // uintBitsToFloat), 64 bytes. Points and spheres read only the first two vec4 in the light pass,
-// tubes three, which is why the first fields are vec4 texels. Offsets in bytes on the right.
+// tubes and spots three, which is why the first fields are vec4 texels. Offsets in bytes on the
+// right.
 struct GpuLight {
   vec4 position_radius;  //  0 x,y,z world position (tube: segment center), w sphere/capsule
                          //    radius (m)
   vec4 color_inv_range;  // 16 rgb linear color premultiplied by intensity I (W/sr), w 1/R (Karis
                          //    eq. 9 window)
   vec4 axis_length;      // 32 x,y,z unit tube axis, w tube segment length (m); 0 for point and
-                         //    sphere
+                         //    sphere; a spot's cone (spotCone, spot.glsl)
   float range;           // 48 range R (Karis eq. 9 window)
-  uint type;             // 52 HV_LIGHT_*; read through lightType (lights.glsl)
+  uint type;             // 52 HV_LIGHT_* (| HV_LIGHT_SPOT_FLAG); read through lightType
+                         //    (lights.glsl)
   float cull_radius;     // 56 culling radius; read through lightCullRadius (lights.glsl)
   uint shadow_cube;      // 60 the light's cube in the shadow atlas + 1 (0: no shadow map), written
                          //    by the shadow pass (engine/render/src/shadow_pass.cpp)

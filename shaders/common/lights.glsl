@@ -25,6 +25,7 @@
 //                               lobe / LTC at two points of the light, where those points represent
 //                               it (ltcCorrection; measurement in docs/lights.md)
 //  HV_HAS_POINT_LIGHTS / HV_HAS_SPHERE_LIGHTS / HV_HAS_TUBE_LIGHTS 1|0: compile that light type
+//  HV_HAS_SPOT_LIGHTS 1|0       compile the spot cone (spot.glsl) into the point and sphere lights
 //  HV_DIRECT_TERMS 3|1|2|0      bit 1 diffuse, bit 2 specular: the terms shadeLight returns (the
 //                               others are 0); for per-term images (`halfvec render --aov`)
 //  HV_SHADOWS, HV_SHADOW_FILTER, HV_SHADOW_MAP_SIZE: shadows.glsl (lightShadow below)
@@ -37,6 +38,7 @@
 #include "ltc.glsl"
 #include "setting_values.glsl"
 #include "shadows.glsl"
+#include "spot.glsl"
 
 #ifndef HV_FALLOFF_PLUS_ONE
 #define HV_FALLOFF_PLUS_ONE 1
@@ -74,6 +76,9 @@
 #ifndef HV_HAS_TUBE_LIGHTS
 #define HV_HAS_TUBE_LIGHTS 1
 #endif
+#ifndef HV_HAS_SPOT_LIGHTS
+#define HV_HAS_SPOT_LIGHTS 1
+#endif
 #ifndef HV_DIRECT_TERMS
 #define HV_DIRECT_TERMS 3
 #endif
@@ -82,8 +87,24 @@
   ((HV_HAS_SPHERE_LIGHTS && HV_SPHERE_SPECULAR == HV_SPHERE_SPECULAR_LTC) || \
    (HV_HAS_TUBE_LIGHTS && HV_TUBE_SPECULAR == HV_TUBE_SPECULAR_LTC))
 
-// The light's type code (HV_LIGHT_*, gpu_records.glsl).
-int lightType(GpuLight light) { return int(light.type); }
+// The light's type code (HV_LIGHT_*, gpu_records.glsl): a spot's is its shape's.
+int lightType(GpuLight light) {
+#if HV_HAS_SPOT_LIGHTS
+  return int(light.type & HV_LIGHT_TYPE_MASK);
+#else
+  return int(light.type);
+#endif
+}
+
+#if HV_HAS_SPOT_LIGHTS
+// The spot's cone attenuation (spotAttenuation, spot.glsl) in direction L (unit, from the shading
+// point toward the light's center), 1 for a light that is not a spot: a select, so a scene's
+// points and spheres share one loop whether or not they are spots.
+float lightCone(GpuLight light, vec3 L) {
+  float a = spotAttenuation(L, light.axis_length);
+  return (light.type & HV_LIGHT_SPOT_FLAG) != 0u ? a : 1.0f;
+}
+#endif
 
 // Smallest squared light distance (1 cm)^2. With HV_FALLOFF_PLUS_ONE = 0 a point light at
 // distance 0 would be 1/0; Filament likewise treats a punctual light as a 1 cm sphere. With the
@@ -224,6 +245,9 @@ vec3 evaluatePointLightAt(GpuLight light, Surface s, ShadingPoint sp) {
   float d2 = dot(Lc, Lc);
   vec3 L = Lc * inversesqrt(max(d2, 1e-30f));  // safeNormalize reusing d2: 0 at the light itself
   float falloff = distanceFalloff(d2, 0.0f, light.color_inv_range.w);
+#if HV_HAS_SPOT_LIGHTS
+  falloff *= lightCone(light, L);  // a point spot: exact (the cone scales the intensity)
+#endif
   return shadeLight(s, sp, L, L, vec3(light.color_inv_range), falloff * saturate(dot(s.N, L)), falloff,
                     1.0f);
 }
@@ -252,6 +276,11 @@ vec3 evaluateSphereLightAt(GpuLight light, Surface s, ShadingPoint sp) {
   float d2 = dot(Lc, Lc);
   vec3 L = Lc * inversesqrt(max(d2, 1e-30f));
   float falloff = distanceFalloff(d2, radius, light.color_inv_range.w);
+#if HV_HAS_SPOT_LIGHTS
+  // A sphere spot: the cone of the direction to the center scales the sphere's whole emission
+  // seen from this point (docs/lights.md, "Spot lights"), diffuse and specular, in every method.
+  falloff *= lightCone(light, L);
+#endif
 #if HV_SPHERE_DIFFUSE == HV_SPHERE_DIFFUSE_HORIZON
   // sin^2(sigma) = r^2 / d^2, with d^2 >= HV_MIN_LIGHT_DIST2 (the factor clamps it to <= 1).
   float cos_factor =
@@ -392,8 +421,22 @@ vec3 evaluateLight(GpuLight light, Surface s, vec3 P, vec3 V) {
 // Karis 2013 eq. 9 (the window bounds the light): world-space radius, around the light
 // position, outside which the light contributes exactly 0 (the window is 0 beyond range R of the
 // nearest emitting point): R for points and spheres, R + len/2 for tubes. Precomputed by
-// packLight; for tiled culling.
+// packLight; the shadow map's far distance.
 float lightCullRadius(GpuLight light) { return light.cull_radius; }
+
+// The world-space sphere (center, radius) outside which the light contributes exactly 0, for
+// tiled culling: the range sphere, or for a spot the bounding sphere of its cone's sector
+// (spotBoundingSphere: its cone attenuation is 0 outside the outer cone).
+vec4 lightCullSphere(GpuLight light) {
+  vec3 p = vec3(light.position_radius.x, light.position_radius.y, light.position_radius.z);
+  vec4 sphere = vec4(p, lightCullRadius(light));
+#if HV_HAS_SPOT_LIGHTS
+  if ((light.type & HV_LIGHT_SPOT_FLAG) != 0u) {
+    sphere = spotBoundingSphere(p, light.axis_length, lightCullRadius(light));
+  }
+#endif
+  return sphere;
+}
 
 #if HV_SHADOWS && !defined(HV_CPP)
 // The shadow of light l at the light pass's receivers (shadows.glsl): its map is cube
@@ -401,8 +444,14 @@ float lightCullRadius(GpuLight light) { return light.cull_radius; }
 // radius, axis and length size PCSS's penumbra. Multiplies the light's whole contribution, diffuse and specular
 // (light_shade.comp).
 vec4 lightShadow(GpuLight l, vec3 P[HV_SHADOW_RECEIVERS], vec3 N[HV_SHADOW_RECEIVERS], bvec4 use) {
+  float len = l.axis_length.w;
+#if HV_HAS_SPOT_LIGHTS
+  // A spot's axis_length is its cone: its emitter is its point or sphere (length 0), and its map
+  // is a point light's whole cube.
+  len = (l.type & HV_LIGHT_SPOT_FLAG) != 0u ? 0.0f : len;
+#endif
   return shadowVisibility(vec3(l.position_radius), lightCullRadius(l), float(l.shadow_cube) - 1.0f,
-                          l.position_radius.w, vec3(l.axis_length), l.axis_length.w, P, N, use);
+                          l.position_radius.w, vec3(l.axis_length), len, P, N, use);
 }
 #endif
 

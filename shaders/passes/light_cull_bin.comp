@@ -1,7 +1,7 @@
 #version 450 core
 // Tiled culling, second stage (light_cull_common.glsl): one invocation per light of the batch and
 // band of HV_CULL_BIN_GROUP_ROWS group rows (so that a light covering the screen is binned by
-// several invocations, not by one): the light's bounding sphere (lightCullRadius) in view space and
+// several invocations, not by one): the light's bounding sphere (lightCullSphere) in view space and
 // its exact rectangle of tiles (sphereTileRect: tangent planes through the eye; none when the
 // sphere lies entirely nearer than the near plane or off screen); then, for every group of the
 // band that the rectangle overlaps and the sphere touches (sphere-box distance to the group's
@@ -14,8 +14,9 @@ layout(std430, binding = HV_BINDING_LIGHTS) readonly buffer LightBlock { GpuLigh
 void main() {
   uint i = u_batch.first + gl_GlobalInvocationID.x;
   if (i >= u_batch.end) return;
-  vec3 c = (u_view * vec4(lights[i].position_radius.xyz, 1.0)).xyz;
-  float r = lightCullRadius(lights[i]);
+  vec4 world = lightCullSphere(lights[i]);
+  vec3 c = (u_view * vec4(world.xyz, 1.0)).xyz;
+  float r = world.w;
   uint type = uint(lightType(lights[i]));  // HV_LIGHT_POINT/SPHERE/TUBE = 0/1/2
   ivec4 rect;
   bool visible = type <= 2u && sphereTileRect(c, r, vec2(u_proj[0][0], u_proj[1][1]),

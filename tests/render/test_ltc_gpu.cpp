@@ -11,6 +11,7 @@
 #undef HV_MATH_GLSL
 #undef HV_BRDF_GLSL
 #undef HV_LIGHTS_GLSL
+#undef HV_SPOT_GLSL
 #undef HV_LTC_GLSL
 #undef HV_LTC_LIGHTS_GLSL
 #undef HV_LTC_INTEGRALS_GLSL

@@ -148,13 +148,41 @@ TEST(VariantKey, DerivedFromTheScene) {
   EXPECT_FALSE(ku.ambientIbl());
 }
 
+// A spot compiles its shape's code (a point, radius 0, or a sphere) and the cone; a scene without
+// spots gets HV_HAS_SPOT_LIGHTS=0, so its light code is that of a scene before spots existed.
+TEST(VariantKey, SpotIsItsShapeAndItsCone) {
+  Material a;
+  Scene s = sceneWith({a});
+  Light spot = light(LightType::Spot);
+  spot.radius = 0.0f;
+  s.lights = {spot};
+  VariantKey k = deriveVariantKey(s);
+  EXPECT_TRUE(k.point_lights && k.spot_lights);
+  EXPECT_FALSE(k.sphere_lights || k.tube_lights);
+  EXPECT_EQ(k.text().substr(0, 18), "lights point+spot;");
+  auto l = byName(lightDefines(k, s));
+  EXPECT_EQ(l.at("HV_HAS_SPOT_LIGHTS").value, "1");
+  EXPECT_EQ(l.at("HV_HAS_SPOT_LIGHTS").why, "1 spot light");
+  EXPECT_EQ(l.at("HV_HAS_POINT_LIGHTS").why, "1 point light");
+  s.lights[0].radius = 0.2f;  // a sphere spot: the sphere code, whose settings then count
+  k = deriveVariantKey(s);
+  EXPECT_TRUE(k.sphere_lights && k.spot_lights);
+  EXPECT_FALSE(k.point_lights);
+  s.lights[0].type = LightType::Sphere;
+  k = deriveVariantKey(s);
+  EXPECT_FALSE(k.spot_lights);
+  l = byName(lightDefines(k, s));
+  EXPECT_EQ(l.at("HV_HAS_SPOT_LIGHTS").value, "0");
+  EXPECT_EQ(l.at("HV_HAS_SPOT_LIGHTS").why, "no spot lights");
+}
+
 TEST(VariantKey, UberTurnsEveryFeatureOn) {
   Material a;
   Scene s = sceneWith({a, a});
   s.settings.uber = true;
   const VariantKey k = deriveVariantKey(s);
   EXPECT_TRUE(k.uber);
-  EXPECT_TRUE(k.point_lights && k.sphere_lights && k.tube_lights);
+  EXPECT_TRUE(k.point_lights && k.sphere_lights && k.tube_lights && k.spot_lights);
   EXPECT_TRUE(k.unlit && k.default_lit);
   ASSERT_EQ(k.material_variants.size(), 1u);
   EXPECT_EQ(k.material_variants[0], allMaterialFeatures());
@@ -271,7 +299,7 @@ TEST(VariantKey, ValidationRejectsImpossibleCombinations) {
 
   // Every derived key is valid, whatever the settings ask for.
   for (int env = 0; env < 2; ++env) {
-    for (int types = 0; types < 8; ++types) {
+    for (int types = 0; types < 16; ++types) {
       Material m;
       m.emissive_tex = tex(1);
       Scene s = sceneWith({m});
@@ -279,6 +307,7 @@ TEST(VariantKey, ValidationRejectsImpossibleCombinations) {
       if (types & 1) s.lights.push_back(light(LightType::Point));
       if (types & 2) s.lights.push_back(light(LightType::Sphere));
       if (types & 4) s.lights.push_back(light(LightType::Tube));
+      if (types & 8) s.lights.push_back(light(LightType::Spot));  // a sphere spot
       s.settings.v = VisibilityTerm::CookTorrance;
       s.settings.irradiance = Irradiance::Cubemap;
       s.settings.sphere_diffuse = SphereDiffuse::HorizonCorrect;

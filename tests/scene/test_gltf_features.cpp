@@ -288,15 +288,15 @@ TEST(GltfEmissiveStrength, ScalesTheEmissiveFactor) {
 TEST(GltfUnsupported, ExtensionsWarnOnceByName) {
   json j = texturedQuad();
   j["extensionsUsed"] = {"KHR_materials_transmission", "KHR_materials_sheen",
-                         "KHR_texture_transform", "KHR_lights_punctual"};
+                         "KHR_texture_transform", "EXT_mesh_gpu_instancing"};
   j["materials"][0]["extensions"]["KHR_materials_transmission"] = {{"transmissionFactor", 1}};
   j["materials"][0]["extensions"]["KHR_materials_sheen"] = json::object();
   j["materials"][0]["extensions"]["KHR_materials_ior"] = {{"ior", 1.3}};  // not declared
   j["materials"][0]["normalTexture"]["extensions"]["KHR_materials_specular"] = json::object();
-  j["nodes"][0]["extensions"]["KHR_lights_punctual"] = {{"light", 0}};
+  j["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"] = json::object();
   const Loaded l = load(j, "exts.gltf");
   for (const char* name : {"KHR_materials_transmission", "KHR_materials_sheen", "KHR_materials_ior",
-                           "KHR_materials_specular", "KHR_lights_punctual"}) {
+                           "KHR_materials_specular", "EXT_mesh_gpu_instancing"}) {
     EXPECT_EQ(countContaining(l.warnings, name), 1u) << name;
   }
   EXPECT_EQ(countContaining(l.warnings, "KHR_texture_transform"), 0u);

@@ -56,10 +56,11 @@ TEST(Lights, PackLayoutAndValues) {
   std::vector<hv::Light> lights(2);
   lights[1].type = hv::LightType::Tube;
   auto defs = hv::lightTypeDefines(lights);
-  ASSERT_EQ(defs.size(), 3u);
+  ASSERT_EQ(defs.size(), 4u);
   EXPECT_EQ(defs[0], std::make_pair(std::string("HV_HAS_POINT_LIGHTS"), std::string("1")));
   EXPECT_EQ(defs[1], std::make_pair(std::string("HV_HAS_SPHERE_LIGHTS"), std::string("0")));
   EXPECT_EQ(defs[2], std::make_pair(std::string("HV_HAS_TUBE_LIGHTS"), std::string("1")));
+  EXPECT_EQ(defs[3], std::make_pair(std::string("HV_HAS_SPOT_LIGHTS"), std::string("0")));
 }
 
 // Karis 2013 eq. 20 and the tube's energy normalization, by hand. A metallic white surface at the

@@ -16,6 +16,7 @@
 #undef HV_MATH_GLSL
 #undef HV_BRDF_GLSL
 #undef HV_LIGHTS_GLSL
+#undef HV_SPOT_GLSL
 #undef HV_LTC_GLSL
 #undef HV_LTC_LIGHTS_GLSL
 #undef HV_LTC_INTEGRALS_GLSL
@@ -53,6 +54,7 @@ namespace {
 #undef HV_MATH_GLSL
 #undef HV_BRDF_GLSL
 #undef HV_LIGHTS_GLSL
+#undef HV_SPOT_GLSL
 #undef HV_LTC_GLSL
 #undef HV_LTC_LIGHTS_GLSL
 #undef HV_LTC_INTEGRALS_GLSL
@@ -74,6 +76,7 @@ namespace {
 #undef HV_MATH_GLSL
 #undef HV_BRDF_GLSL
 #undef HV_LIGHTS_GLSL
+#undef HV_SPOT_GLSL
 #undef HV_LTC_GLSL
 #undef HV_LTC_LIGHTS_GLSL
 #undef HV_LTC_INTEGRALS_GLSL

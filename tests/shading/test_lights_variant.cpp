@@ -14,6 +14,7 @@
 #undef HV_MATH_GLSL
 #undef HV_BRDF_GLSL
 #undef HV_LIGHTS_GLSL
+#undef HV_SPOT_GLSL
 #undef HV_LTC_GLSL
 #undef HV_LTC_LIGHTS_GLSL
 #undef HV_LTC_INTEGRALS_GLSL

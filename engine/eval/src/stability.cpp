@@ -219,7 +219,7 @@ std::vector<StabilityRow> runStabilitySweep(
   std::vector<StabilityRow> rows;
   render::Renderer renderer;
   for (const Option& opt : options(opts.small)) {
-    for (LightType type : {LightType::Point, LightType::Sphere, LightType::Tube}) {
+    for (LightType type : {LightType::Point, LightType::Sphere, LightType::Tube, LightType::Spot}) {
       for (const Geometry& g : geometries()) {
         StabilityRow row{std::string(toString(type)), g.name, opt.name};
         for (float roughness : {0.0f, 1.0f}) {
@@ -239,6 +239,16 @@ std::vector<StabilityRow> runStabilitySweep(
             l.length = 0.0f;
           }
           if (type == LightType::Sphere) l.length = 0.0f;
+          if (type == LightType::Spot) {
+            // Aimed at the sphere's center (the default direction where it sits there), the
+            // sphere across the cone's smooth edge; radius 0.2 (a sphere spot) unless the
+            // geometry sets 0 (a point spot).
+            const glm::vec3 to_center = glm::vec3(-1.1f, -1.1f, 0.0f) - l.position;
+            if (glm::length(to_center) > 1e-3f) l.direction = glm::normalize(to_center);
+            l.inner_cone_angle = 0.1f;
+            l.outer_cone_angle = 0.4f;
+            l.length = 0.0f;
+          }
           l.shadows = opt.shadows;
           scene.lights.push_back(l);
           renderer.setScene(scene);

@@ -72,7 +72,7 @@ using Absences = std::array<std::pair<SettingFeature, const char*>, 5>;
 Absences absentFeatures(const Scene& scene) {
   bool sphere = false, tube = false, shadowed = false;
   for (const Light& l : scene.lights) {
-    sphere |= l.type == LightType::Sphere;
+    sphere |= lightShape(l) == LightType::Sphere;  // a sphere spot runs the sphere code
     tube |= l.type == LightType::Tube;
     shadowed |= l.shadows;
   }

@@ -319,6 +319,7 @@ LightSample sampleLight(const Light& light, const RenderSettings& settings, cons
     case LightType::Tube:
       return sampleTube(light, settings, P, u);
     case LightType::Point:
+    case LightType::Spot:  // the reference samples a spot as its shape (reference.cpp)
       break;
   }
   return {};

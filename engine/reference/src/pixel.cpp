@@ -57,12 +57,14 @@ struct ShadingPoint {
 void pointLights(ShadingPoint& p, PixelOut& out) {
   const RenderSettings& settings = p.ctx.scene->settings;
   const glsl::Surface& s = p.s;
-  for (const Light* l : p.ctx.point_lights) {
+  for (size_t i = 0; i < p.ctx.point_lights.size(); ++i) {
+    const Light* l = p.ctx.point_lights[i];
     glm::vec3 Lc = l->position - p.P;
     float d2 = glm::dot(Lc, Lc);
     glm::vec3 L = glsl::safeNormalize(Lc);
     float NoL = glsl::saturate(glm::dot(p.N, L));
-    float scale = falloff(settings, d2, 0.0f, l->range) * NoL * s.cavity;
+    float scale = falloff(settings, d2, 0.0f, l->range) * NoL * s.cavity *
+                  glsl::spotAttenuation(L, p.ctx.point_cones[i]);
     // One ray to the light's position: a point light's shadow is hard.
     if (p.visibility() && scale > 0.0f && p.occluded(L, glm::length(l->position - p.O))) continue;
     Lobes f = brdfLobes(p.ctx.brdf, s, p.V, L, true);
@@ -95,6 +97,7 @@ void areaLightSample(ShadingPoint& p, Rng& rng, glm::dvec3* xs) {
     float VoH = glm::dot(Vs, h);
     return VoH > 0.0f ? glsl::pdfGGXVNDF(Vs, h, s.alpha) / (4.0f * VoH) : 0.0f;
   };
+  float cone = 1.0f;  // the light's spot attenuation at P, set per light below
   auto add = [&](const LightSample& ls, float p_vndf) {
     float NoL = glsl::saturate(glm::dot(N, ls.L));
     float pdf = ls.pdf + p_vndf;
@@ -103,11 +106,13 @@ void areaLightSample(ShadingPoint& p, Rng& rng, glm::dvec3* xs) {
     // (and emitters are not triangles: the light itself never occludes).
     if (p.visibility() && p.occluded(ls.L, ls.distance)) return;
     Lobes f = brdfLobes(p.ctx.brdf, s, p.V, ls.L, true);
-    glm::vec3 w = ls.radiance * (NoL * s.cavity / pdf);
+    glm::vec3 w = ls.radiance * (NoL * s.cavity * cone / pdf);
     xs[kDD] += glm::dvec3(f.diffuse * w);
     xs[kDS] += glm::dvec3(f.specular * w);
   };
-  for (const Light* l : p.ctx.area_lights) {
+  for (size_t i = 0; i < p.ctx.area_lights.size(); ++i) {
+    const Light* l = p.ctx.area_lights[i];
+    cone = glsl::spotAttenuation(glsl::safeNormalize(l->position - p.P), p.ctx.area_cones[i]);
     const glm::vec2 u(rng.uniform(), rng.uniform());
     // Beyond the range window the light contributes exactly 0.
     if (windowDistance2(*l, p.P) >= l->range * l->range) continue;

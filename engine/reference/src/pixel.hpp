@@ -34,6 +34,11 @@ struct Context {
   glm::vec3 sun_dir{0.0f, 1.0f, 0.0f};
   float sun_cos = 1.0f, sun_pdf = 0.0f;
   std::vector<const Light*> point_lights, area_lights;
+  // Per entry of point_lights / area_lights: the spot's cone as the light pass reads it
+  // (packLight's axis_length, spot.glsl), or (0, 0, 0, 1), whose attenuation is exactly 1.
+  std::vector<glm::vec4> point_cones, area_cones;
+  // The spots as their shapes (lightShape: a point or a sphere light), which the lists point to.
+  std::vector<Light> spot_shapes;
   // ReferenceOptions::visibility: the scene's triangles (null without visibility).
   std::unique_ptr<SceneVisibility> vis;
 };

@@ -13,6 +13,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "halfvec/core/parallel.hpp"
+#include "halfvec/shading/light_gpu.hpp"
 #include "halfvec/shading/shading.hpp"
 #include "pixel.hpp"
 
@@ -78,11 +79,22 @@ Context makeContext(const Scene& scene, const GBufferReadback& gb, const Referen
     }
   }
   if (opt.visibility) ctx.vis = std::make_unique<reference_detail::SceneVisibility>(scene);
+  // A spot is its point or sphere light times its cone, which scales what arrives at the shading
+  // point from the whole emitter by the attenuation of the direction from the light's center
+  // (docs/lights.md, "Spot lights"): exact for a point spot, the engine's definition for a sphere.
+  ctx.spot_shapes.reserve(scene.lights.size());  // the lists point into it: no reallocation
   for (const Light& l : scene.lights) {
-    if (l.type == LightType::Point)
-      ctx.point_lights.push_back(&l);
-    else
-      ctx.area_lights.push_back(&l);
+    const Light* shape = &l;
+    glm::vec4 cone(0.0f, 0.0f, 0.0f, 1.0f);
+    if (l.type == LightType::Spot) {
+      ctx.spot_shapes.push_back(l);
+      ctx.spot_shapes.back().type = lightShape(l);
+      shape = &ctx.spot_shapes.back();
+      cone = packLight(l).axis_length;
+    }
+    const bool point = shape->type == LightType::Point;
+    (point ? ctx.point_lights : ctx.area_lights).push_back(shape);
+    (point ? ctx.point_cones : ctx.area_cones).push_back(cone);
   }
   return ctx;
 }

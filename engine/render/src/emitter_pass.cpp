@@ -115,7 +115,9 @@ EmitterPass::EmitterPass() {
 void EmitterPass::setLights(const std::vector<Light>& lights) {
   std::vector<Instance> inst;
   for (const Light& l : lights) {
-    if (l.type == LightType::Point || l.radius <= 0.0f) continue;
+    // A spot's sphere is not drawn: its surface radiance would depend on the direction it is
+    // seen from, which the capsule shader (emitter.glsl) does not model (docs/lights.md).
+    if (l.type == LightType::Point || l.type == LightType::Spot || l.radius <= 0.0f) continue;
     const float half = l.type == LightType::Tube ? 0.5f * l.length : 0.0f;
     inst.push_back({glm::vec4(l.position, l.radius), glm::vec4(glm::normalize(l.axis), half),
                     glm::vec4(l.color * l.intensity, 0.0f)});

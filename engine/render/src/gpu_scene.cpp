@@ -108,8 +108,7 @@ void GpuScene::updateLights(const Scene& scene) {
   cull_spheres_.clear();
   for (const Light& l : scene.lights) {
     packed.push_back(packLight(l));
-    cull_spheres_.emplace_back(glm::vec3(packed.back().position_radius),
-                               glsl::lightCullRadius(toGlsl(packed.back())));
+    cull_spheres_.push_back(glsl::lightCullSphere(toGlsl(packed.back())));
   }
   light_count_ = packed.size();
   if (!lights_ || light_capacity_ < packed.size()) {

@@ -222,12 +222,11 @@ CullingChoice chooseCulling(const Scene& scene) {
   const glm::ivec2 tiles(f.viewport.z, f.viewport.w);
   double covered = 0.0;
   for (const Light& l : scene.lights) {
-    const GpuLight g = packLight(l);
-    const glm::vec3 center = glm::vec3(f.view * glm::vec4(glm::vec3(g.position_radius), 1.0f));
+    const glm::vec4 sphere = glsl::lightCullSphere(toGlsl(packLight(l)));
+    const glm::vec3 center = glm::vec3(f.view * glm::vec4(glm::vec3(sphere), 1.0f));
     glm::ivec4 r;
-    if (glsl::sphereTileRect(center, glsl::lightCullRadius(toGlsl(g)),
-                             glm::vec2(f.proj[0][0], f.proj[1][1]), f.near_params.x,
-                             glm::vec2(f.viewport.x, f.viewport.y), tiles,
+    if (glsl::sphereTileRect(center, sphere.w, glm::vec2(f.proj[0][0], f.proj[1][1]),
+                             f.near_params.x, glm::vec2(f.viewport.x, f.viewport.y), tiles,
                              glm::vec2(kTileSize, kTileHeight), r)) {
       covered += double(r.z - r.x + 1) * double(r.w - r.y + 1);
     }
@@ -252,6 +251,7 @@ std::string VariantKey::text() const {
   if (point_lights) lights += "point";
   if (sphere_lights) lights += std::string(lights.empty() ? "" : "+") + "sphere";
   if (tube_lights) lights += std::string(lights.empty() ? "" : "+") + "tube";
+  if (spot_lights) lights += std::string(lights.empty() ? "" : "+") + "spot";
   std::string models;
   if (default_lit) models += "default_lit";
   if (unlit) models += std::string(models.empty() ? "" : "+") + "unlit";
@@ -267,9 +267,11 @@ VariantKey deriveVariantKey(const Scene& scene) {
   VariantKey k;
   k.uber = scene.settings.uber;
   for (const Light& l : scene.lights) {
-    k.point_lights |= l.type == LightType::Point;
-    k.sphere_lights |= l.type == LightType::Sphere;
+    // A spot is shaded as its shape (lightShape) times its cone.
+    k.point_lights |= lightShape(l) == LightType::Point;
+    k.sphere_lights |= lightShape(l) == LightType::Sphere;
     k.tube_lights |= l.type == LightType::Tube;
+    k.spot_lights |= l.type == LightType::Spot;
     k.shadows |= l.shadows;
   }
   k.environment = scene.environment.kind;
@@ -300,7 +302,7 @@ VariantKey deriveVariantKey(const Scene& scene) {
     k.material_variant[i] = int(it - k.material_variants.begin());
   }
   if (k.uber) {
-    k.point_lights = k.sphere_lights = k.tube_lights = true;
+    k.point_lights = k.sphere_lights = k.tube_lights = k.spot_lights = true;
     k.unlit = k.default_lit = true;
     k.material_variants = {allMaterialFeatures()};
     for (size_t i = 0; i < scene.materials.size(); ++i) k.material_variant[i] = drawn[i] ? 0 : -1;
@@ -352,7 +354,7 @@ std::vector<std::string> validateKey(const VariantKey& k) {
     }
   }
   if (k.uber && k.material_variants.size() != 1) bad.push_back("uber key with several variants");
-  if (k.uber && !(k.point_lights && k.sphere_lights && k.tube_lights)) {
+  if (k.uber && !(k.point_lights && k.sphere_lights && k.tube_lights && k.spot_lights)) {
     bad.push_back("uber key without every light type");
   }
   for (int v : k.material_variant) {
@@ -387,9 +389,11 @@ std::string materialList(const Scene& scene, const std::vector<size_t>& ids) {
   return t;
 }
 
+// Lights of shape t (lightShape: a spot counts as its point or sphere), or spots for t = Spot.
 size_t countLights(const Scene& scene, LightType t) {
-  return size_t(std::count_if(scene.lights.begin(), scene.lights.end(),
-                              [&](const Light& l) { return l.type == t; }));
+  return size_t(std::count_if(scene.lights.begin(), scene.lights.end(), [&](const Light& l) {
+    return t == LightType::Spot ? l.type == t : lightShape(l) == t;
+  }));
 }
 
 // Reason of a setting-derived define: the setting, or why it was reset.
@@ -518,7 +522,8 @@ std::vector<KeyDefine> lightDefines(const VariantKey& k, const Scene& scene) {
     LightType type;
   } types[] = {{"HV_HAS_POINT_LIGHTS", k.point_lights, LightType::Point},
                {"HV_HAS_SPHERE_LIGHTS", k.sphere_lights, LightType::Sphere},
-               {"HV_HAS_TUBE_LIGHTS", k.tube_lights, LightType::Tube}};
+               {"HV_HAS_TUBE_LIGHTS", k.tube_lights, LightType::Tube},
+               {"HV_HAS_SPOT_LIGHTS", k.spot_lights, LightType::Spot}};
   for (const auto& t : types) {
     const size_t n = countLights(scene, t.type);
     const std::string name(toString(t.type));

@@ -10,6 +10,7 @@
 //   gltf_materials.cpp  materials and their extensions, the default material
 //   gltf_meshes.cpp     primitives: attributes, indices, triangle lists, vertices, tangents
 //   gltf_nodes.cpp      the node walk (transforms, expansion budgets, objects) and cameras
+//   gltf_lights.cpp     KHR_lights_punctual: the nodes' point and spot lights
 //
 // tinygltf's implementation is compiled in gltf_loader.cpp alone: that file defines
 // TINYGLTF_IMPLEMENTATION (and TINYGLTF_NO_INCLUDE_JSON, having included nlohmann/json itself)
@@ -118,11 +119,12 @@ class Importer {
   std::vector<Mesh> meshes;
   std::vector<Object> objects;
   std::vector<GltfCamera> cameras;
+  std::vector<Light> lights;  // KHR_lights_punctual instances, in node-visit order
 
  private:
   static constexpr const char* kHonouredExtensions[] = {
-      "KHR_materials_emissive_strength", "KHR_materials_pbrSpecularGlossiness",
-      "KHR_mesh_quantization", "KHR_texture_transform"};
+      "KHR_lights_punctual", "KHR_materials_emissive_strength",
+      "KHR_materials_pbrSpecularGlossiness", "KHR_mesh_quantization", "KHR_texture_transform"};
 
   // ---- gltf_import.cpp: what is not imported, numbers of extension objects ------------------
   void noteExtension(const std::string& ext, const std::string& el);
@@ -183,6 +185,9 @@ class Importer {
   void instanceNode(const tinygltf::Node& n, const glm::mat4& world, const std::string& el,
                     const std::string& label);
   void addCamera(const tinygltf::Camera& c, const glm::mat4& world);
+
+  // ---- gltf_lights.cpp ------------------------------------------------------------------------
+  void importNodeLight(const tinygltf::Node& n, const glm::mat4& world, const std::string& el);
 
   std::string path_;
   tinygltf::Model& m_;  // images are moved out of it

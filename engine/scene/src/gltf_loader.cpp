@@ -170,6 +170,8 @@ void loadGltfFromMemory(const uint8_t* bytes, size_t size, bool binary, const st
   for (auto& x : imp.materials) scene.materials.push_back(std::move(x));
   for (auto& x : imp.meshes) scene.meshes.push_back(std::move(x));
   for (auto& x : imp.objects) scene.objects.push_back(std::move(x));
+  std::vector<Light>& lights = options.lights ? *options.lights : scene.lights;
+  lights.insert(lights.end(), imp.lights.begin(), imp.lights.end());
   if (options.cameras) {
     for (auto& c : imp.cameras) options.cameras->push_back(std::move(c));
   }

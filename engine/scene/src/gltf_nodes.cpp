@@ -246,6 +246,7 @@ void Importer::instanceNode(const tinygltf::Node& n, const glm::mat4& world, con
   if (n.camera >= 0 && size_t(n.camera) < m_.cameras.size() && !singular) {
     addCamera(m_.cameras[size_t(n.camera)], world);
   }
+  importNodeLight(n, world, el);
 }
 
 void Importer::addCamera(const tinygltf::Camera& c, const glm::mat4& world) {

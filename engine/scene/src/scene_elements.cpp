@@ -100,6 +100,25 @@ glm::mat4 parseTransform(const Ctx& ctx, const json& j, const std::string& ptr) 
   return glm::translate(glm::mat4(1.0f), t) * glm::mat4_cast(q) * glm::scale(glm::mat4(1.0f), s);
 }
 
+// A spot's radius (0: a point), direction and cone, with KHR_lights_punctual's names and
+// defaults (inner 0, outer pi/4). The cone's attenuation (spot.glsl) needs inner < outer, and a
+// cone wider than a hemisphere has no finite bounding sphere of its cap for the culling.
+void parseSpot(const Obj& o, Light& l) {
+  constexpr double kHalfPi = 1.5707963267948966;
+  l.radius = o.num("radius", 0.0f, kNonNeg);
+  const glm::vec3 d = o.vec3("direction", l.direction);
+  if (glm::length(d) < 1e-6f) o.fail("direction", "expected a non-zero direction, got [0, 0, 0]");
+  l.direction = glm::normalize(d);
+  l.inner_cone_angle = o.num("inner_cone_angle", l.inner_cone_angle, Range{0.0, kHalfPi});
+  l.outer_cone_angle =
+      o.num("outer_cone_angle", l.outer_cone_angle, Range{0.0, kHalfPi, /*lo_open=*/true});
+  if (!(l.inner_cone_angle < l.outer_cone_angle)) {
+    o.fail(o.has("outer_cone_angle") ? "outer_cone_angle" : "inner_cone_angle",
+           "expected 0 <= inner_cone_angle < outer_cone_angle <= pi/2, got inner " +
+               fmt(l.inner_cone_angle) + " and outer " + fmt(l.outer_cone_angle));
+  }
+}
+
 Light parseLight(const Ctx& ctx, const json& j, const std::string& ptr) {
   std::optional<LightType> type;
   if (j.is_object() && j.contains("type"))
@@ -112,6 +131,9 @@ Light parseLight(const Ctx& ctx, const json& j, const std::string& ptr) {
                                         "intensity", "range",    "shadows"};
   if (*type != LightType::Point) keys.push_back("radius");
   if (*type == LightType::Tube) keys.insert(keys.end(), {"length", "axis"});
+  if (*type == LightType::Spot) {
+    keys.insert(keys.end(), {"direction", "inner_cone_angle", "outer_cone_angle"});
+  }
   Obj o(ctx, j, ptr, keys);
   Light l;
   l.type = *type;
@@ -128,6 +150,7 @@ Light parseLight(const Ctx& ctx, const json& j, const std::string& ptr) {
     if (glm::length(a) < 1e-6f) o.fail("axis", "expected a non-zero direction, got [0, 0, 0]");
     l.axis = glm::normalize(a);
   }
+  if (l.type == LightType::Spot) parseSpot(o, l);
   return l;
 }
 

@@ -36,6 +36,10 @@ class SceneBuilder {
  public:
   SceneBuilder(const Ctx& ctx, Scene& scene) : ctx_(ctx), scene_(scene) {}
 
+  // The models' KHR_lights_punctual lights: parseScene appends them after the file's lights and
+  // generators, so that /lights/i stays scene.lights[i] (the scene writer maps them so).
+  std::vector<Light> model_lights;
+
   void parseMaterials(const json& j) {
     const std::string ptr = "/materials";
     if (j.is_object()) {
@@ -267,6 +271,7 @@ class SceneBuilder {
     GltfOptions opt;
     opt.name_prefix = name;
     opt.warnings = ctx_.warnings;
+    opt.lights = &model_lights;  // after the file's own lights (parseScene)
     if (o.has("material_override")) {
       opt.material_override = materialRef(o["material_override"], o.at("material_override"), name);
     }
@@ -467,6 +472,12 @@ Scene parseScene(const json& j, const std::string& source_name,
       expandGenerator(ctx, gs[i], "/light_generators/" + std::to_string(i), scene.lights);
     }
   }
+  if (scene.lights.size() + builder.model_lights.size() > kMaxSceneLights) {
+    top.fail("objects", std::to_string(builder.model_lights.size()) +
+                            " lights of glTF models exceed, with the scene's, the budget of " +
+                            std::to_string(kMaxSceneLights) + " (kMaxSceneLights)");
+  }
+  scene.lights.insert(scene.lights.end(), builder.model_lights.begin(), builder.model_lights.end());
   if (top.has("environment")) scene.environment = parseEnvironment(ctx, top["environment"]);
   if (top.has("settings")) scene.settings = parseSettings(ctx, top["settings"]);
   return scene;

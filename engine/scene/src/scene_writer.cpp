@@ -370,6 +370,11 @@ ojson lightJson(const Light& l) {
     j["length"] = l.length;
     j["axis"] = vec3(l.axis);
   }
+  if (l.type == LightType::Spot) {
+    j["direction"] = vec3(l.direction);
+    j["inner_cone_angle"] = l.inner_cone_angle;
+    j["outer_cone_angle"] = l.outer_cone_angle;
+  }
   j["range"] = l.range;
   if (l.shadows) j["shadows"] = true;
   return j;
@@ -437,6 +442,11 @@ void lightEdits(const nlohmann::json& file, const Scene& loaded, const Scene& ed
     if (b.type == LightType::Tube) {
       c.field(p + "/length", a.length, b.length, b.length);
       c.field(p + "/axis", a.axis, b.axis, vec3(b.axis));
+    }
+    if (b.type == LightType::Spot) {
+      c.field(p + "/direction", a.direction, b.direction, vec3(b.direction));
+      c.field(p + "/inner_cone_angle", a.inner_cone_angle, b.inner_cone_angle, b.inner_cone_angle);
+      c.field(p + "/outer_cone_angle", a.outer_cone_angle, b.outer_cone_angle, b.outer_cone_angle);
     }
     c.field(p + "/range", a.range, b.range, b.range);
     c.field(p + "/shadows", a.shadows, b.shadows, b.shadows);

@@ -12,7 +12,8 @@ static_assert(int(LightType::Point) == HV_LIGHT_POINT &&
 
 GpuLight packLight(const Light& light) {
   GpuLight g{};
-  float radius = light.type == LightType::Point ? 0.0f : std::max(light.radius, 0.0f);
+  const LightType shape = lightShape(light);  // a spot: its point or sphere
+  float radius = shape == LightType::Point ? 0.0f : std::max(light.radius, 0.0f);
   float len = light.type == LightType::Tube ? std::max(light.length, 0.0f) : 0.0f;
   glm::vec3 axis = light.axis;
   float axis_len = glm::length(axis);
@@ -26,20 +27,34 @@ GpuLight packLight(const Light& light) {
   // The eq. 9 window is 0 at distance R from the nearest point of the segment (tubes) or from
   // the center (points, spheres); a tube's segment reaches len/2 from its center.
   g.range = range;
-  g.type = static_cast<unsigned>(light.type);
+  g.type = static_cast<unsigned>(shape);
   g.cull_radius = range + 0.5f * len;
+  if (light.type == LightType::Spot) {
+    // The cone replaces the axis (spot.glsl); angles clamped to what the loader accepts.
+    glm::vec3 dir = light.direction;
+    const float dir_len = glm::length(dir);
+    dir = (std::isfinite(dir_len) && dir_len > 1e-20f) ? dir / dir_len : glm::vec3(0, -1, 0);
+    const float outer = std::clamp(light.outer_cone_angle, 0.0f, 1.5707963f);
+    const float inner = std::clamp(light.inner_cone_angle, 0.0f, outer);
+    g.axis_length = glsl::spotCone(dir, std::cos(inner), std::cos(outer));
+    g.type |= HV_LIGHT_SPOT_FLAG;
+  }
   g.shadow_cube = 0;  // written by the shadow pass
   return g;
 }
 
 std::vector<std::pair<std::string, std::string>> lightTypeDefines(
     const std::vector<Light>& lights) {
-  bool has[3] = {false, false, false};
-  for (const Light& l : lights) has[static_cast<int>(l.type)] = true;
+  bool has[4] = {false, false, false, false};
+  for (const Light& l : lights) {
+    has[static_cast<int>(lightShape(l))] = true;
+    has[3] = has[3] || l.type == LightType::Spot;
+  }
   auto flag = [](bool b) { return std::string(b ? "1" : "0"); };
   return {{"HV_HAS_POINT_LIGHTS", flag(has[0])},
           {"HV_HAS_SPHERE_LIGHTS", flag(has[1])},
-          {"HV_HAS_TUBE_LIGHTS", flag(has[2])}};
+          {"HV_HAS_TUBE_LIGHTS", flag(has[2])},
+          {"HV_HAS_SPOT_LIGHTS", flag(has[3])}};
 }
 
 }  // namespace hv

@@ -228,7 +228,7 @@ int LightsPanelModel::add(LightType type) {
   Light l;
   l.type = type;
   l.position = scene_->camera.target + glm::vec3(0.0f, 1.0f, 0.0f);
-  if (type != LightType::Point) l.radius = 0.1f;
+  if (type != LightType::Point && type != LightType::Spot) l.radius = 0.1f;
   if (type == LightType::Tube) l.length = 1.0f;
   scene_->lights.push_back(l);
   selected_ = int(scene_->lights.size()) - 1;
@@ -280,6 +280,17 @@ HV_LIGHT_SETTER(setLength, float v, l->length = std::isfinite(v) ? std::max(v, 0
 HV_LIGHT_SETTER(setAxis, glm::vec3 a,
                 l->axis = glm::length(finiteOr(a, glm::vec3(0))) > 1e-6f ? glm::normalize(a)
                                                                          : before.axis)
+HV_LIGHT_SETTER(setDirection, glm::vec3 d,
+                l->direction = glm::length(finiteOr(d, glm::vec3(0))) > 1e-6f ? glm::normalize(d)
+                                                                              : before.direction)
+// The cone keeps 0 <= inner < outer <= pi/2, as a scene file must (scene_elements.cpp).
+HV_LIGHT_SETTER(setConeAngles, glm::vec2 a,
+                l->outer_cone_angle = std::isfinite(a.y) ? std::clamp(a.y, 1e-3f, 1.5707963f)
+                                                         : before.outer_cone_angle;
+                l->inner_cone_angle = std::isfinite(a.x)
+                                          ? std::clamp(a.x, 0.0f, 0.999f * l->outer_cone_angle)
+                                          : std::min(before.inner_cone_angle,
+                                                     0.999f * l->outer_cone_angle))
 HV_LIGHT_SETTER(setRange, float v, l->range = std::isfinite(v) ? std::max(v, 0.01f) : before.range)
 HV_LIGHT_SETTER(setShadows, bool on, l->shadows = on)
 #undef HV_LIGHT_SETTER

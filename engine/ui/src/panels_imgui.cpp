@@ -170,6 +170,15 @@ bool drawLightFields(LightsPanelModel& model, const Light& cur) {
     }
     if (ImGui::DragFloat3("axis", &l.axis.x, 0.01f, -1.0f, 1.0f)) changed |= model.setAxis(l.axis);
   }
+  if (l.type == LightType::Spot) {
+    if (ImGui::DragFloat3("direction", &l.direction.x, 0.01f, -1.0f, 1.0f)) {
+      changed |= model.setDirection(l.direction);
+    }
+    glm::vec2 cone(l.inner_cone_angle, l.outer_cone_angle);
+    if (ImGui::DragFloat2("cone (rad)", &cone.x, 0.005f, 0.0f, 1.5707963f)) {
+      changed |= model.setConeAngles(cone);
+    }
+  }
   return changed;
 }
 
@@ -208,7 +217,7 @@ bool drawLightsContents(LightsPanelModel& model) {
   bool changed = false;
   ImGui::Text("%zu lights", model.count());
   bool first = true;
-  for (LightType t : {LightType::Point, LightType::Sphere, LightType::Tube}) {
+  for (LightType t : {LightType::Point, LightType::Sphere, LightType::Tube, LightType::Spot}) {
     const std::string label = "+ " + std::string(toString(t));
     if (!first) ImGui::SameLine();
     first = false;
@@ -218,8 +227,8 @@ bool drawLightsContents(LightsPanelModel& model) {
     }
   }
   pushLabelColumn({"type", "position", "color", "intensity", "range", "radius", "length", "axis",
-                   "shadows", "shadow filter", "count", "point", "sphere", "tube", "box min",
-                   "box max", "seed"});
+                   "direction", "cone (rad)", "shadows", "shadow filter", "count", "point",
+                   "sphere", "tube", "box min", "box max", "seed"});
   if (model.count() > 0) {
     drawLightTable(model);
     if (const Light* cur = model.current()) {

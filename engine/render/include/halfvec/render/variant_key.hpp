@@ -68,8 +68,10 @@ struct CullingChoice {
 CullingChoice chooseCulling(const Scene& scene);
 
 struct VariantKey {
-  // Light types present (count > 0); the light programs compile only these.
-  bool point_lights = false, sphere_lights = false, tube_lights = false;
+  // Light shapes present (count > 0; a spot counts as its shape, lightShape); the light programs
+  // compile only these. spot_lights: some light is a spot, whose cone the point and sphere code
+  // then contains (HV_HAS_SPOT_LIGHTS).
+  bool point_lights = false, sphere_lights = false, tube_lights = false, spot_lights = false;
   // Shading models present among the materials drawn. Background (no geometry) is always
   // possible, so it has no flag: the ambient pass always writes it.
   bool unlit = false, default_lit = false;

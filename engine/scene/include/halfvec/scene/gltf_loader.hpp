@@ -74,7 +74,14 @@ struct GltfOptions {
   GltfLimits limits;
   // Camera nodes go here, in the order they are visited (depth first from the scene's roots).
   std::vector<GltfCamera>* cameras = nullptr;
+  // KHR_lights_punctual point and spot lights go here if set, else to scene.lights
+  // (docs/gltf.md, "Lights").
+  std::vector<Light>* lights = nullptr;
 };
+
+// The range R given to a KHR_lights_punctual light without one (glTF: infinite): where the
+// brightest channel's I / d^2 falls to 0.01, within [0.01 m, 1e4 m] (docs/gltf.md, "Lights").
+float gltfInfiniteRange(const glm::vec3& color, float intensity);
 
 // Appends the meshes, materials, images and objects (one per node with a mesh, transform =
 // `transform` * node's world matrix) of the glTF file at `path` to `scene`.

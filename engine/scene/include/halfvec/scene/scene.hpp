@@ -114,7 +114,9 @@ struct Object {
   std::vector<int> meshes;    // indices into Scene::meshes
 };
 
-enum class LightType : uint8_t { Point = 0, Sphere = 1, Tube = 2 };
+// Spot: a point (radius 0) or sphere light whose light is restricted to a cone about
+// `direction` (docs/lights.md, "Spot lights").
+enum class LightType : uint8_t { Point = 0, Sphere = 1, Tube = 2, Spot = 3 };
 
 // Physical meaning of each field: docs/lights.md.
 struct Light {
@@ -126,9 +128,21 @@ struct Light {
   float length = 0.0f;      // tube segment length
   glm::vec3 axis{1.0f, 0.0f, 0.0f};  // tube segment direction (normalized on load)
   float range = 10.0f;  // falloff window radius R of Karis eq. 9; also the culling bound
+  // Spot: the cone's axis (unit, from the light) and its angles from it in radians, with
+  // KHR_lights_punctual's names and defaults; 0 <= inner < outer <= pi/2 (checked on load).
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};
+  float inner_cone_angle = 0.0f;
+  float outer_cone_angle = 0.78539816f;  // pi / 4
   // Casts shadows: an omnidirectional shadow map (docs/lights.md, "Shadows").
   bool shadows = false;
 };
+
+// The emitter a light is shaded as: a spot of radius 0 is a point light, of radius > 0 a sphere
+// (times its cone); the other types are their own shape.
+inline LightType lightShape(const Light& l) {
+  if (l.type != LightType::Spot) return l.type;
+  return l.radius > 0.0f ? LightType::Sphere : LightType::Point;
+}
 
 enum class EnvironmentKind : uint8_t { None, Uniform, Sky, HdrFile };
 

@@ -116,6 +116,8 @@ class LightsPanelModel {
   bool setRadius(float v);
   bool setLength(float v);
   bool setAxis(glm::vec3 a);
+  bool setDirection(glm::vec3 d);
+  bool setConeAngles(glm::vec2 inner_outer);  // radians
   bool setRange(float v);
   bool setShadows(bool on);  // the light casts shadows (a shadow map)
   // The scene's settings.shadow_filter (the filter of every shadowed light).
