@@ -11,16 +11,18 @@
 
 // Horizon-search directions (slices) per pixel and steps per side of each slice, per ao_quality.
 // The 4x4 pixel pattern of slice rotations (gtaoNoise) is averaged out by the 4x4 denoise, so
-// the effective count per pixel after the denoise is 16 x directions.
+// the effective count per pixel after the denoise is 16 x directions: 16 slices at low and
+// medium, 32 at high: the pattern, not the texel, supplies the directions (the paper's spatial
+// denoising, section 7), so one slice per texel suffices where its 16 rotations are averaged;
+// docs/ambient-occlusion.md gives each quality's accuracy and cost.
 int aoDirections(int quality) {
-  if (quality == HV_AO_QUALITY_LOW) return 1;
-  if (quality == HV_AO_QUALITY_MEDIUM) return 2;
-  return 4;
+  if (quality == HV_AO_QUALITY_HIGH) return 2;
+  return 1;
 }
 int aoSteps(int quality) {
-  if (quality == HV_AO_QUALITY_LOW) return 4;
-  if (quality == HV_AO_QUALITY_MEDIUM) return 6;
-  return 12;
+  if (quality == HV_AO_QUALITY_LOW) return 3;
+  if (quality == HV_AO_QUALITY_MEDIUM) return 5;
+  return 6;
 }
 
 // The two horizon angles h0 <= 0 <= h1 (eq. 10's h1, h2) limited to the hemisphere around the

@@ -70,10 +70,13 @@ TEST(Gtao, OpenHemisphereAveragesToOne) {
       double sum = 0.0;
       for (int i = 0; i < slices; ++i) sum += openSlice(V, N, float(kPi * (i + 0.5) / slices));
       EXPECT_NEAR(sum / slices, 1.0, 1e-3) << "tilt " << tilt_deg << " az " << az;
-      // The 16 rotations of a 4x4 block with medium quality's 2 directions: 32 slices.
-      double block = 0.0;
-      for (int i = 0; i < 32; ++i) block += openSlice(V, N, float(kPi * (i + 0.5) / 32.0));
-      EXPECT_NEAR(block / 32.0, 1.0, 5e-3) << "tilt " << tilt_deg;
+      // The 16 rotations of a 4x4 block times each quality's directions: 16 or 32 slices.
+      for (int q : {HV_AO_QUALITY_LOW, HV_AO_QUALITY_MEDIUM, HV_AO_QUALITY_HIGH}) {
+        const int n = 16 * g::aoDirections(q);
+        double block = 0.0;
+        for (int i = 0; i < n; ++i) block += openSlice(V, N, float(kPi * (i + 0.5) / n));
+        EXPECT_NEAR(block / n, 1.0, 5e-3) << "tilt " << tilt_deg << " quality " << q;
+      }
     }
   }
 }
