@@ -43,6 +43,31 @@ float gtaoSliceVisibility(float h0, float h1, float n) {
   return 0.25f * (a0 + a1);
 }
 
+// Eq. 10 as gtaoSliceVisibility, from the horizon cosines c0 (the -dir side) and c1 (+dir) that
+// the march finds, with cos(n) and sin(n) of the projected normal's angle n given: the angles
+// h = -+acos(c) are clamped as by gtaoClampLow / gtaoClampHigh and returned in h0, h1 (for the
+// bent normal), and cos(2h - n) = cos(2h) cos(n) + sin(2h) sin(n) comes from c and sin(h) =
+// -+sqrt(1 - c^2) (or is -cos(n) where h is clamped to n -+ pi/2), so the slice needs no
+// trigonometric call but the acos of each angle.
+float gtaoSliceVisibilityCos(float c0, float c1, float n, float cos_n, float sin_n,
+                             HV_OUT(float) h0, HV_OUT(float) h1) {
+  h0 = -acos(c0);
+  h1 = acos(c1);
+  float s0 = -sqrt(max(1.0f - c0 * c0, 0.0f));
+  float s1 = sqrt(max(1.0f - c1 * c1, 0.0f));
+  float k0 = (2.0f * c0 * c0 - 1.0f) * cos_n + 2.0f * s0 * c0 * sin_n;
+  float k1 = (2.0f * c1 * c1 - 1.0f) * cos_n + 2.0f * s1 * c1 * sin_n;
+  if (h0 - n < -0.5f * PI) {
+    h0 = n - 0.5f * PI;
+    k0 = -cos_n;
+  }
+  if (h1 - n > 0.5f * PI) {
+    h1 = n + 0.5f * PI;
+    k1 = -cos_n;
+  }
+  return 0.25f * (2.0f * cos_n - k0 - k1 + 2.0f * (h0 + h1) * sin_n);
+}
+
 // Section 5, "Multiple bounces": the visibility with interreflection from the albedo, the
 // paper's cubic fit a(albedo) x^3 + b x^2 + c x in x = visibility, never below the visibility.
 vec3 gtaoMultiBounce(float visibility, vec3 albedo) {

@@ -117,13 +117,14 @@ void main() {
     vec3 proj_n = N - axis * dot(N, axis);
     float proj_len = length(proj_n);
     float cos_n = clamp(dot(proj_n, V) / max(proj_len, 1e-6), -1.0, 1.0);
-    float n = (dot(proj_n, ortho) >= 0.0 ? 1.0 : -1.0) * acos(cos_n);
+    float side = dot(proj_n, ortho) >= 0.0 ? 1.0 : -1.0;
+    float n = side * acos(cos_n);
+    float sin_n = side * sqrt(max(1.0 - cos_n * cos_n, 0.0));
     // Clamped: a rounded cosine just above 1 would make acos NaN.
-    float h1 = acos(clamp(horizonCos(vec2(px), dir, radius_px, noise.y, P, V), -1.0, 1.0));
-    float h0 = -acos(clamp(horizonCos(vec2(px), -dir, radius_px, noise.y, P, V), -1.0, 1.0));
-    h0 = gtaoClampLow(h0, n);
-    h1 = gtaoClampHigh(h1, n);
-    float slice = proj_len * gtaoSliceVisibility(h0, h1, n);
+    float c1 = clamp(horizonCos(vec2(px), dir, radius_px, noise.y, P, V), -1.0, 1.0);
+    float c0 = clamp(horizonCos(vec2(px), -dir, radius_px, noise.y, P, V), -1.0, 1.0);
+    float h0, h1;
+    float slice = proj_len * gtaoSliceVisibilityCos(c0, c1, n, cos_n, sin_n, h0, h1);
     visibility += slice;
 #if HV_AO_BENT_NORMAL
     // Bent normal: the slice's mid-horizon direction weighted by what the slice sees, minus the
@@ -131,8 +132,8 @@ void main() {
     // towards V even on an open plane, its difference from the open sum is what the occluders
     // turn (added to N below).
     float hb = 0.5 * (h0 + h1);
-    float open_w = proj_len * (cos_n + n * sin(n));
-    bent += (V * cos(hb) + ortho * sin(hb)) * slice - (V * cos_n + ortho * sin(n)) * open_w;
+    float open_w = proj_len * (cos_n + n * sin_n);
+    bent += (V * cos(hb) + ortho * sin(hb)) * slice - (V * cos_n + ortho * sin_n) * open_w;
     open_sum += open_w;
 #endif
   }

@@ -57,6 +57,25 @@ TEST(Gtao, SliceIntegralMatchesQuadrature) {
   EXPECT_NEAR(g::gtaoSliceVisibility(0.0f, 0.0f, 0.0f), 0.0, 1e-6);  // fully occluded
 }
 
+// The cosine form of eq. 10 the AO pass runs equals the angle form with the clamps, for horizon
+// cosines and normal angles over their whole ranges, and returns the clamped angles.
+TEST(Gtao, SliceVisibilityFromCosinesMatchesAngles) {
+  for (float n = -1.5f; n <= 1.5f; n += 0.1f) {
+    for (float c0 = -1.0f; c0 <= 1.0f; c0 += 0.125f) {
+      for (float c1 = -1.0f; c1 <= 1.0f; c1 += 0.125f) {
+        const float a0 = g::gtaoClampLow(-std::acos(c0), n);
+        const float a1 = g::gtaoClampHigh(std::acos(c1), n);
+        float h0 = 0.0f, h1 = 0.0f;
+        const float v = g::gtaoSliceVisibilityCos(c0, c1, n, std::cos(n), std::sin(n), h0, h1);
+        EXPECT_NEAR(v, g::gtaoSliceVisibility(a0, a1, n), 2e-5f)
+            << "n " << n << " c0 " << c0 << " c1 " << c1;
+        EXPECT_NEAR(h0, a0, 1e-6f);
+        EXPECT_NEAR(h1, a1, 1e-6f);
+      }
+    }
+  }
+}
+
 // Averaged over the slices around V, the open hemisphere of any visible normal has visibility 1
 // (eq. 9): what makes GTAO exactly 1 on an open plane, whatever the view angle, once the 4x4
 // pattern's rotations are averaged.
