@@ -11,16 +11,18 @@
 
 // Horizon-search directions (slices) per pixel and steps per side of each slice, per ao_quality.
 // The 4x4 pixel pattern of slice rotations (gtaoNoise) is averaged out by the 4x4 denoise, so
-// the effective count per pixel after the denoise is 16 x directions.
+// the effective count per pixel after the denoise is 16 x directions: 16 slices at low and
+// medium, 32 at high: the pattern, not the texel, supplies the directions (the paper's spatial
+// denoising, section 7), so one slice per texel suffices where its 16 rotations are averaged;
+// docs/ambient-occlusion.md gives each quality's accuracy and cost.
 int aoDirections(int quality) {
-  if (quality == HV_AO_QUALITY_LOW) return 1;
-  if (quality == HV_AO_QUALITY_MEDIUM) return 2;
-  return 4;
+  if (quality == HV_AO_QUALITY_HIGH) return 2;
+  return 1;
 }
 int aoSteps(int quality) {
-  if (quality == HV_AO_QUALITY_LOW) return 4;
-  if (quality == HV_AO_QUALITY_MEDIUM) return 6;
-  return 12;
+  if (quality == HV_AO_QUALITY_LOW) return 3;
+  if (quality == HV_AO_QUALITY_MEDIUM) return 5;
+  return 6;
 }
 
 // The two horizon angles h0 <= 0 <= h1 (eq. 10's h1, h2) limited to the hemisphere around the
@@ -39,6 +41,31 @@ float gtaoSliceVisibility(float h0, float h1, float n) {
   float a0 = -cos(2.0f * h0 - n) + cn + 2.0f * h0 * sn;
   float a1 = -cos(2.0f * h1 - n) + cn + 2.0f * h1 * sn;
   return 0.25f * (a0 + a1);
+}
+
+// Eq. 10 as gtaoSliceVisibility, from the horizon cosines c0 (the -dir side) and c1 (+dir) that
+// the march finds, with cos(n) and sin(n) of the projected normal's angle n given: the angles
+// h = -+acos(c) are clamped as by gtaoClampLow / gtaoClampHigh and returned in h0, h1 (for the
+// bent normal), and cos(2h - n) = cos(2h) cos(n) + sin(2h) sin(n) comes from c and sin(h) =
+// -+sqrt(1 - c^2) (or is -cos(n) where h is clamped to n -+ pi/2), so the slice needs no
+// trigonometric call but the acos of each angle.
+float gtaoSliceVisibilityCos(float c0, float c1, float n, float cos_n, float sin_n,
+                             HV_OUT(float) h0, HV_OUT(float) h1) {
+  h0 = -acos(c0);
+  h1 = acos(c1);
+  float s0 = -sqrt(max(1.0f - c0 * c0, 0.0f));
+  float s1 = sqrt(max(1.0f - c1 * c1, 0.0f));
+  float k0 = (2.0f * c0 * c0 - 1.0f) * cos_n + 2.0f * s0 * c0 * sin_n;
+  float k1 = (2.0f * c1 * c1 - 1.0f) * cos_n + 2.0f * s1 * c1 * sin_n;
+  if (h0 - n < -0.5f * PI) {
+    h0 = n - 0.5f * PI;
+    k0 = -cos_n;
+  }
+  if (h1 - n > 0.5f * PI) {
+    h1 = n + 0.5f * PI;
+    k1 = -cos_n;
+  }
+  return 0.25f * (2.0f * cos_n - k0 - k1 + 2.0f * (h0 + h1) * sin_n);
 }
 
 // Section 5, "Multiple bounces": the visibility with interreflection from the albedo, the

@@ -77,38 +77,55 @@ layout(std140, binding = HV_UBO_ENVIRONMENT) uniform EnvironmentBlock {
 layout(binding = HV_UNIT_DEPTH) uniform sampler2D t_depth;
 layout(binding = HV_UNIT_AO) uniform sampler2D t_ao;
 
-// The AO of pixel px (x: visibility, yzw: world bent normal). At full resolution its texel; at
-// half, the four nearest texels with bilinear weights times a depth weight (the denoise's 5% of
-// the distance), so that an edge does not take the occlusion of the surface across it; where no
-// texel is within that, the nearest in distance.
+// The AO of pixel px (x: visibility, yzw: world bent normal, read only by the cone specular
+// occlusion). At full resolution its texel; at half, the four nearest texels with bilinear
+// weights times a depth weight (5% of the distance), so that an edge does not take
+// the occlusion of the surface across it; where no texel is within that, the nearest in distance.
+// The four texels come as one textureGather per channel at the corner they share.
 vec4 aoAt(ivec2 px) {
   ivec2 size = textureSize(t_ao, 0);
   if (size.x >= int(u_viewport.x)) {
     vec4 a = texelFetch(t_ao, px, 0);
+#if HV_AO_SPECULAR == HV_AO_SPECULAR_CONE
     return vec4(a.x, octDecode(a.zw));
+#else
+    return vec4(a.x, 0.0, 0.0, 1.0);
+#endif
   }
-  float dist = u_near_params.x / max(texelFetch(t_depth, px, 0).r, 1e-30);
+  // Inverse view distances (1 / m), as the AO target holds them (gtao.comp).
+  float inv_dist = texelFetch(t_depth, px, 0).r / u_near_params.x;
   // Texel q holds pixel 2q (gtao.comp), at q + 0.25 in texel units: pixel px sits at px / 2.
   vec2 f = vec2(px) * 0.5;
-  ivec2 b = ivec2(floor(f));
-  vec2 t = f - floor(f);
-  vec4 sum = vec4(0.0);
-  float wsum = 0.0;
-  vec4 nearest = vec4(1.0, 0.0, 0.0, 0.0);
-  float nearest_diff = 1e30;
-  for (int j = 0; j < 2; ++j) {
-    for (int i = 0; i < 2; ++i) {
-      vec4 a = texelFetch(t_ao, clamp(b + ivec2(i, j), ivec2(0), size - 1), 0);
-      vec4 v = vec4(a.x, octDecode(a.zw));
-      float diff = abs(a.y - dist);
-      float wb = (i == 1 ? t.x : 1.0 - t.x) * (j == 1 ? t.y : 1.0 - t.y);
-      float w = wb * clamp(1.0 - diff / dist * 20.0, 0.0, 1.0);
-      sum += v * w;
-      wsum += w;
-      if (diff < nearest_diff) {
-        nearest_diff = diff;
-        nearest = v;
-      }
+  vec2 b = floor(f);
+  vec2 t = f - b;
+  // The footprint of texels b .. b + 1 (clamped to the edge as the sampler does), in gather
+  // order (0,1), (1,1), (1,0), (0,0).
+  vec2 uv = (b + 1.0) / vec2(size);
+  vec4 vis = textureGather(t_ao, uv, 0);
+  vec4 inv = textureGather(t_ao, uv, 1);
+  vec4 wb = vec4((1.0 - t.x) * t.y, t.x * t.y, t.x * (1.0 - t.y), (1.0 - t.x) * (1.0 - t.y));
+  // |dist_texel / dist - 1| = |w_pixel - w_texel| / w_texel; a background texel (w 0) never
+  // counts.
+  vec4 diff = abs(inv - vec4(inv_dist)) / max(inv, vec4(1e-30));
+  vec4 w = wb * clamp(1.0 - diff * 20.0, 0.0, 1.0);
+  float wsum = w.x + w.y + w.z + w.w;
+#if HV_AO_SPECULAR == HV_AO_SPECULAR_CONE
+  vec4 bx = textureGather(t_ao, uv, 2);
+  vec4 by = textureGather(t_ao, uv, 3);
+  vec4 a[4];
+  for (int k = 0; k < 4; ++k) a[k] = vec4(vis[k], octDecode(vec2(bx[k], by[k])));
+#else
+  vec4 a[4];
+  for (int k = 0; k < 4; ++k) a[k] = vec4(vis[k], 0.0, 0.0, 1.0);
+#endif
+  vec4 nearest = a[0];
+  float nearest_diff = diff[0];
+  vec4 sum = a[0] * w[0];
+  for (int k = 1; k < 4; ++k) {
+    sum += a[k] * w[k];
+    if (diff[k] < nearest_diff) {
+      nearest_diff = diff[k];
+      nearest = a[k];
     }
   }
   return wsum > 1e-4 ? sum / wsum : nearest;

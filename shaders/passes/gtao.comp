@@ -3,8 +3,10 @@
 // Strategies for Accurate Indirect Occlusion"), the AO pass's first half: per AO texel, a horizon
 // search in the depth buffer along a few screen directions (slices) within a world-space radius,
 // the cosine-weighted visibility of each slice by eq. 10 with the projected normal, and a bent
-// normal. Out (raw, HV_IMAGE_AO): visibility, view distance, bent normal (world, octahedral); the
-// denoise (ao_denoise.comp) averages the 4x4 rotation pattern away. Math: common/ao.glsl.
+// normal. Out (raw, HV_IMAGE_AO): visibility, inverse view distance (1 / m: affine in screen space
+// on a plane, so that a bilinear fetch of a plane's texels lies on it), and the bent normal
+// (world, octahedral) or, without HV_AO_BENT_NORMAL, the view-space normal; the denoise
+// (ao_denoise.comp) averages the 4x4 rotation pattern away. Math: common/ao.glsl.
 #include "../common/frame.glsl"
 #include "../common/gbuffer.glsl"
 #include "../common/ao.glsl"
@@ -12,11 +14,16 @@
 // Specialization (the settings table's SettingPass::Ao rows; docs/variants.md).
 //   HV_AO_QUALITY: directions x steps (aoDirections / aoSteps).
 //   HV_AO_HALF_RESOLUTION 1|0: one AO texel per 2x2 pixels (the pixel at its lower left).
+//   HV_AO_BENT_NORMAL 1|0: the bent normal, which only the cone specular occlusion reads
+//   (ao_specular: cone); without it zw are 0 and the slices' mid-horizon sums are not made.
 #ifndef HV_AO_QUALITY
 #define HV_AO_QUALITY HV_AO_QUALITY_MEDIUM
 #endif
 #ifndef HV_AO_HALF_RESOLUTION
 #define HV_AO_HALF_RESOLUTION 1
+#endif
+#ifndef HV_AO_BENT_NORMAL
+#define HV_AO_BENT_NORMAL 1
 #endif
 
 layout(local_size_x = HV_TILE_SIZE, local_size_y = HV_TILE_SIZE) in;
@@ -47,15 +54,27 @@ float horizonCos(vec2 px, vec2 dir, float radius_px, float offset, vec3 P, vec3 
   float best = -1.0;
   float r2 = u_ao.x * u_ao.x;
   vec2 size = vec2(u_viewport.xy);
+  vec2 inv_size = 1.0 / size;
+  // The sample at screen point s and depth d lies at (near / d) ray(s), ray(s) the view ray to
+  // distance 1, affine along the line s = px + 0.5 + dir t. Its offset from P times d,
+  // near ray(s) - d P, has the same cosine to V and turns the radius test into l2 < r2 d^2: no
+  // division per sample.
+  vec2 proj = vec2(u_proj[0][0], u_proj[1][1]);
+  vec3 ray0 = u_near_params.x * vec3(((px + 0.5) * inv_size * 2.0 - 1.0) / proj, -1.0);
+  vec3 ray_dir = u_near_params.x * vec3(dir * 2.0 * inv_size / proj, 0.0);
   for (int k = 0; k < steps; ++k) {
     // At least one pixel out, so that the first step never reads the pixel itself.
     float t = max((float(k) + offset) / float(steps) * radius_px, float(k + 1));
     vec2 s = px + 0.5 + dir * t;
-    if (s.x < 0.5 || s.y < 0.5 || s.x > size.x - 0.5 || s.y > size.y - 0.5) break;
-    float d = textureLod(t_depth, s / size, 0.0).r;
-    vec3 delta = viewPosition(s - 0.5, max(d, 1e-30)) - P;
+    // Off screen: no occluder. A mask, not a break: the march leaves the screen only once, and
+    // a loop without an exit unrolls (the fetch is clamped to the edge, in bounds).
+    bool inside = s.x >= 0.5 && s.y >= 0.5 && s.x <= size.x - 0.5 && s.y <= size.y - 0.5;
+    float d = textureLod(t_depth, s * inv_size, 0.0).r;
+    vec3 delta = ray0 + ray_dir * t - P * d;
     float l2 = dot(delta, delta);
-    if (d > 0.0 && l2 < r2 && l2 > 0.0) best = max(best, dot(delta, V) * inversesqrt(l2));
+    if (inside && d > 0.0 && l2 < r2 * d * d && l2 > 0.0) {
+      best = max(best, dot(delta, V) * inversesqrt(l2));
+    }
   }
   return best;
 }
@@ -78,8 +97,10 @@ void main() {
   vec2 noise = gtaoNoise(q.x, q.y);
   const int dirs = aoDirections(HV_AO_QUALITY);
   float visibility = 0.0;
+#if HV_AO_BENT_NORMAL
   vec3 bent = vec3(0.0);
   float open_sum = 0.0;
+#endif
   // The slices turn uniformly about V (eq. 9 integrates over that rotation): `ortho`, the slice's
   // direction across V, runs over the plane normal to V from T (the screen's x axis made normal
   // to V). Uniform screen-space angles would not be uniform about V off the image's centre (the
@@ -96,30 +117,38 @@ void main() {
     vec3 proj_n = N - axis * dot(N, axis);
     float proj_len = length(proj_n);
     float cos_n = clamp(dot(proj_n, V) / max(proj_len, 1e-6), -1.0, 1.0);
-    float n = (dot(proj_n, ortho) >= 0.0 ? 1.0 : -1.0) * acos(cos_n);
+    float side = dot(proj_n, ortho) >= 0.0 ? 1.0 : -1.0;
+    float n = side * acos(cos_n);
+    float sin_n = side * sqrt(max(1.0 - cos_n * cos_n, 0.0));
     // Clamped: a rounded cosine just above 1 would make acos NaN.
-    float h1 = acos(clamp(horizonCos(vec2(px), dir, radius_px, noise.y, P, V), -1.0, 1.0));
-    float h0 = -acos(clamp(horizonCos(vec2(px), -dir, radius_px, noise.y, P, V), -1.0, 1.0));
-    h0 = gtaoClampLow(h0, n);
-    h1 = gtaoClampHigh(h1, n);
-    float slice = proj_len * gtaoSliceVisibility(h0, h1, n);
+    float c1 = clamp(horizonCos(vec2(px), dir, radius_px, noise.y, P, V), -1.0, 1.0);
+    float c0 = clamp(horizonCos(vec2(px), -dir, radius_px, noise.y, P, V), -1.0, 1.0);
+    float h0, h1;
+    float slice = proj_len * gtaoSliceVisibilityCos(c0, c1, n, cos_n, sin_n, h0, h1);
     visibility += slice;
+#if HV_AO_BENT_NORMAL
     // Bent normal: the slice's mid-horizon direction weighted by what the slice sees, minus the
     // same for open horizons (mid-angle n, weight proj_len (cos n + n sin n)): the sum alone leans
     // towards V even on an open plane, its difference from the open sum is what the occluders
     // turn (added to N below).
     float hb = 0.5 * (h0 + h1);
-    float open_w = proj_len * (cos(n) + n * sin(n));
-    bent += (V * cos(hb) + ortho * sin(hb)) * slice - (V * cos(n) + ortho * sin(n)) * open_w;
+    float open_w = proj_len * (cos_n + n * sin_n);
+    bent += (V * cos(hb) + ortho * sin(hb)) * slice - (V * cos_n + ortho * sin_n) * open_w;
     open_sum += open_w;
+#endif
   }
   // Not clamped to 1 here: a single slice's share can exceed 1 (eq. 10 is 1 only on average over
   // the slices), and clamping before the denoise averages the 4x4 rotations would bias every
   // surface seen at a grazing angle dark (the open plane by up to 4%); ao_denoise.comp clamps.
   visibility = max(visibility / float(dirs), 0.0);
+#if HV_AO_BENT_NORMAL
   // View to world: the view matrix is a rotation and a translation (lookAt).
   vec3 Bv = safeNormalize(N + bent / max(open_sum, 1e-6));
   vec3 B = dot(Bv, Bv) > 0.5 ? transpose(mat3(u_view)) * Bv
                              : octDecode(texelFetch(t_normal, px, 0).xy);
-  imageStore(i_ao, q, vec4(visibility, -P.z, octEncode(B)));
+  imageStore(i_ao, q, vec4(visibility, d / u_near_params.x, octEncode(B)));
+#else
+  // The view-space normal for the denoise's plane test, which then needs no G-buffer fetch.
+  imageStore(i_ao, q, vec4(visibility, d / u_near_params.x, octEncode(N)));
+#endif
 }

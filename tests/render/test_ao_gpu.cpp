@@ -194,7 +194,7 @@ TEST(AoGpu, SpecularOcclusionOnlyNearOccluders) {
 
 // Without `ao: gtao` (or without an environment to occlude) the frame has no AO pass and the
 // ambient program no AO code; the manifest says why. With it, the two AO programs and their
-// reasons.
+// reasons, the bent normal among them only for the cone specular occlusion.
 TEST(AoGpu, ManifestHasAoCodeOnlyWithGtao) {
   testContext();
   render::Renderer r;
@@ -233,6 +233,19 @@ TEST(AoGpu, ManifestHasAoCodeOnlyWithGtao) {
   EXPECT_NE(std::find(gtao.reasons.begin(), gtao.reasons.end(),
                       "HV_AO_QUALITY=2: settings.ao_quality = high"),
             gtao.reasons.end());
+  // The bent normal only for the cone specular occlusion, its one reader (lagarde by default).
+  EXPECT_NE(std::find(gtao.reasons.begin(), gtao.reasons.end(),
+                      "HV_AO_BENT_NORMAL=0: settings.ao_specular = lagarde reads no bent normal"),
+            gtao.reasons.end());
+  s.settings.ao_specular = AoSpecular::Cone;
+  r.setScene(s);
+  r.render(32, 32);
+  m = r.manifest();
+  ASSERT_NE(programNamed(m, "ao denoise"), m.programs.end());
+  const auto& denoise = *programNamed(m, "ao denoise");
+  EXPECT_NE(std::find(denoise.reasons.begin(), denoise.reasons.end(),
+                      "HV_AO_BENT_NORMAL=1: settings.ao_specular = cone reads the bent normal"),
+            denoise.reasons.end());
   EXPECT_NE(m.key.find("gtao"), std::string::npos) << m.key;
 
   s.environment.kind = EnvironmentKind::None;  // nothing to occlude

@@ -57,6 +57,25 @@ TEST(Gtao, SliceIntegralMatchesQuadrature) {
   EXPECT_NEAR(g::gtaoSliceVisibility(0.0f, 0.0f, 0.0f), 0.0, 1e-6);  // fully occluded
 }
 
+// The cosine form of eq. 10 the AO pass runs equals the angle form with the clamps, for horizon
+// cosines and normal angles over their whole ranges, and returns the clamped angles.
+TEST(Gtao, SliceVisibilityFromCosinesMatchesAngles) {
+  for (float n = -1.5f; n <= 1.5f; n += 0.1f) {
+    for (float c0 = -1.0f; c0 <= 1.0f; c0 += 0.125f) {
+      for (float c1 = -1.0f; c1 <= 1.0f; c1 += 0.125f) {
+        const float a0 = g::gtaoClampLow(-std::acos(c0), n);
+        const float a1 = g::gtaoClampHigh(std::acos(c1), n);
+        float h0 = 0.0f, h1 = 0.0f;
+        const float v = g::gtaoSliceVisibilityCos(c0, c1, n, std::cos(n), std::sin(n), h0, h1);
+        EXPECT_NEAR(v, g::gtaoSliceVisibility(a0, a1, n), 2e-5f)
+            << "n " << n << " c0 " << c0 << " c1 " << c1;
+        EXPECT_NEAR(h0, a0, 1e-6f);
+        EXPECT_NEAR(h1, a1, 1e-6f);
+      }
+    }
+  }
+}
+
 // Averaged over the slices around V, the open hemisphere of any visible normal has visibility 1
 // (eq. 9): what makes GTAO exactly 1 on an open plane, whatever the view angle, once the 4x4
 // pattern's rotations are averaged.
@@ -70,10 +89,13 @@ TEST(Gtao, OpenHemisphereAveragesToOne) {
       double sum = 0.0;
       for (int i = 0; i < slices; ++i) sum += openSlice(V, N, float(kPi * (i + 0.5) / slices));
       EXPECT_NEAR(sum / slices, 1.0, 1e-3) << "tilt " << tilt_deg << " az " << az;
-      // The 16 rotations of a 4x4 block with medium quality's 2 directions: 32 slices.
-      double block = 0.0;
-      for (int i = 0; i < 32; ++i) block += openSlice(V, N, float(kPi * (i + 0.5) / 32.0));
-      EXPECT_NEAR(block / 32.0, 1.0, 5e-3) << "tilt " << tilt_deg;
+      // The 16 rotations of a 4x4 block times each quality's directions: 16 or 32 slices.
+      for (int q : {HV_AO_QUALITY_LOW, HV_AO_QUALITY_MEDIUM, HV_AO_QUALITY_HIGH}) {
+        const int n = 16 * g::aoDirections(q);
+        double block = 0.0;
+        for (int i = 0; i < n; ++i) block += openSlice(V, N, float(kPi * (i + 0.5) / n));
+        EXPECT_NEAR(block / n, 1.0, 5e-3) << "tilt " << tilt_deg << " quality " << q;
+      }
     }
   }
 }

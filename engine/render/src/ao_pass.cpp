@@ -21,6 +21,7 @@ void AoPass::setVariant(const VariantKey& key, const Scene& scene) {
   gtao_ = {"gtao", {{GL_COMPUTE_SHADER, "passes/gtao.comp"}}, {}};
   denoise_ = {"ao denoise", {{GL_COMPUTE_SHADER, "passes/ao_denoise.comp"}}, {}};
   gtao_.defines = defineSet(aoDefines(key, scene), gtao_.reasons);
+  denoise_.defines = defineSet(aoDefines(key, scene), denoise_.reasons);
 }
 
 GLuint AoPass::run(const PassContext& ctx, const GBufferView& gbuffer,
@@ -30,7 +31,8 @@ GLuint AoPass::run(const PassContext& ctx, const GBufferView& gbuffer,
   const int scale = settings.ao_resolution == AoResolution::Half ? 2 : 1;
   const int w = (width + scale - 1) / scale, h = (height + scale - 1) / scale;
   if (w != width_ || h != height_ || !raw_) {
-    raw_ = gl::createTexture2D("ao raw (visibility, distance, bent normal)", GL_RGBA16F, w, h);
+    raw_ =
+        gl::createTexture2D("ao raw (visibility, inverse distance, bent normal)", GL_RGBA16F, w, h);
     denoised_ = gl::createTexture2D("ao denoised", GL_RGBA16F, w, h);
     width_ = w;
     height_ = h;
@@ -44,7 +46,7 @@ GLuint AoPass::run(const PassContext& ctx, const GBufferView& gbuffer,
   bindGBuffer(b, gbuffer, ctx.nearest);
   // The horizon search filters depth bilinearly (gtao.comp, horizonCos); texelFetch ignores it.
   if (!linear_) {
-    linear_ = gl::createSampler("ao depth bilinear");
+    linear_ = gl::createSampler("ao bilinear");
     glSamplerParameteri(linear_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glSamplerParameteri(linear_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glSamplerParameteri(linear_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -59,7 +61,8 @@ GLuint AoPass::run(const PassContext& ctx, const GBufferView& gbuffer,
   b.use(denoise);
   glProgramUniform4f(denoise, HV_LOC_AO_PARAMS, settings.ao_radius, float(scale), float(w),
                      float(h));
-  b.texture(HV_UNIT_AO, raw_.id(), ctx.nearest);
+  // The denoise reads the raw target's 2x2 quads as bilinear fetches (ao_denoise.comp).
+  b.texture(HV_UNIT_AO, raw_.id(), linear_.id());
   b.image(HV_IMAGE_AO, denoised_.id(), GL_WRITE_ONLY, GL_RGBA16F);
   glDispatchCompute(groups_x, groups_y, 1);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);

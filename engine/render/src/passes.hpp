@@ -239,8 +239,8 @@ class ForwardPass {
 // ---- Screen-space ambient occlusion (ao_pass.cpp) ----------------------------------------------
 // GTAO (Jimenez et al. 2016) at full or half resolution: the horizon search (gtao.comp), then the
 // edge-keeping denoise (ao_denoise.comp), one timed pass "ao". In: the G-buffer's normal and
-// depth. Out: an RGBA16F target of (visibility, view distance, octahedral world bent normal),
-// which the ambient pass reads on HV_UNIT_AO.
+// depth. Out: an RGBA16F target of (visibility, inverse view distance, octahedral world bent
+// normal where ao_specular is cone), which the ambient pass reads on HV_UNIT_AO.
 class AoPass {
  public:
   // The programs of the key (aoDefines); call when the key changes.
@@ -252,7 +252,7 @@ class AoPass {
  private:
   gl::ProgramDesc gtao_, denoise_;
   gl::Texture raw_, denoised_;
-  gl::Sampler linear_;  // bilinear depth for the horizon search
+  gl::Sampler linear_;  // bilinear: the horizon search's depth, the denoise's quads
   int width_ = 0, height_ = 0;
 };
 

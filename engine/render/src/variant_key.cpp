@@ -573,7 +573,14 @@ std::vector<KeyDefine> forwardDefines(const VariantKey& k, size_t variant, const
 }
 
 std::vector<KeyDefine> aoDefines(const VariantKey& k, const Scene& scene) {
-  return settingKeyDefines(k, scene, SettingPass::Ao);
+  std::vector<KeyDefine> out = settingKeyDefines(k, scene, SettingPass::Ao);
+  // Only the cone specular occlusion reads the bent normal: without it the AO pass skips it.
+  const bool bent = k.settings.ao_specular == AoSpecular::Cone;
+  out.push_back({"HV_AO_BENT_NORMAL", flag(bent),
+                 bent ? "settings.ao_specular = cone reads the bent normal"
+                      : "settings.ao_specular = " + std::string(toString(k.settings.ao_specular)) +
+                            " reads no bent normal"});
+  return out;
 }
 
 std::vector<KeyDefine> toneMapDefines(const VariantKey& k, const Scene& scene) {
