@@ -58,6 +58,21 @@ Scene asShape(Scene s) {
   return s;
 }
 
+// Calls f(i, P) for every lit pixel i of frame `f` (w x h) with its world position P, as the
+// light pass reconstructs it from the depth.
+template <class F>
+void forEachLitPixel(const Scene& s, const GBufferReadback& g, int w, int h, F&& f) {
+  const glm::mat4 inv_vp = referenceInvViewProj(s.camera, w, h);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const size_t i = size_t(y) * size_t(w) + size_t(x);
+      if (g.model[i] != static_cast<uint32_t>(ShadingModel::DefaultLit)) continue;
+      const glm::vec2 uv((float(x) + 0.5f) / float(w), 1.0f - (float(y) + 0.5f) / float(h));
+      f(i, glsl::reconstructWorldPosition(uv, g.depth[i], inv_vp));
+    }
+  }
+}
+
 struct Frame {
   ImageRGBf hdr;
   GBufferReadback g;
@@ -82,34 +97,27 @@ TEST(SpotLights, PointSpotOverAFloorFollowsTheCone) {
   ReferenceOptions o;
   o.samples = 4;  // point lights are analytic: no noise
   const auto ref = renderReference(s, spot.g, o);
-  const glm::mat4 inv_vp = referenceInvViewProj(s.camera, w, h);
   const float ci = std::cos(kInner), co = std::cos(kOuter);
   int inner = 0, edge = 0, outside = 0;
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const size_t i = size_t(y) * size_t(w) + size_t(x);
-      if (spot.g.model[i] != static_cast<uint32_t>(ShadingModel::DefaultLit)) continue;
-      const glm::vec2 uv((float(x) + 0.5f) / float(w), 1.0f - (float(y) + 0.5f) / float(h));
-      const glm::vec3 P = glsl::reconstructWorldPosition(uv, spot.g.depth[i], inv_vp);
-      const float c = glm::dot(glm::normalize(P - s.lights[0].position), s.lights[0].direction);
-      const float t = std::clamp((c - co) / (ci - co), 0.0f, 1.0f);
-      for (int k = 0; k < 3; ++k) {
-        const float e = spot.hdr.px[i][k], p = point.hdr.px[i][k];
-        ASSERT_NEAR(e, ref.image.px[i][k], 4e-3f * ref.image.px[i][k] + 1e-5f) << "pixel " << i;
-        if (c > ci + 1e-3f) {
-          ASSERT_NEAR(e, p, 1e-5f * p) << "inner cone, pixel " << i;
-        } else if (c < co - 1e-3f) {
-          ASSERT_EQ(e, 0.0f) << "outside the outer cone, pixel " << i;
-        } else {
-          // The profile t^2 (half-float rounding of both images, 2 x 2^-11 relative).
-          ASSERT_NEAR(e, p * t * t, 1e-3f * p + 1e-6f) << "cone edge, pixel " << i << " t " << t;
-        }
+  forEachLitPixel(s, spot.g, w, h, [&](size_t i, glm::vec3 P) {
+    const float c = glm::dot(glm::normalize(P - s.lights[0].position), s.lights[0].direction);
+    const float t = std::clamp((c - co) / (ci - co), 0.0f, 1.0f);
+    for (int k = 0; k < 3; ++k) {
+      const float e = spot.hdr.px[i][k], p = point.hdr.px[i][k];
+      ASSERT_NEAR(e, ref.image.px[i][k], 4e-3f * ref.image.px[i][k] + 1e-5f) << "pixel " << i;
+      if (c > ci + 1e-3f) {
+        ASSERT_NEAR(e, p, 1e-5f * p) << "inner cone, pixel " << i;
+      } else if (c < co - 1e-3f) {
+        ASSERT_EQ(e, 0.0f) << "outside the outer cone, pixel " << i;
+      } else {
+        // The profile t^2 (half-float rounding of both images, 2 x 2^-11 relative).
+        ASSERT_NEAR(e, p * t * t, 1e-3f * p + 1e-6f) << "cone edge, pixel " << i << " t " << t;
       }
-      inner += c > ci + 1e-3f;
-      outside += c < co - 1e-3f;
-      edge += c <= ci + 1e-3f && c >= co - 1e-3f;
     }
-  }
+    inner += c > ci + 1e-3f;
+    outside += c < co - 1e-3f;
+    edge += c <= ci + 1e-3f && c >= co - 1e-3f;
+  });
   EXPECT_GT(inner, 300);
   EXPECT_GT(edge, 300);
   EXPECT_GT(outside, 1000);
@@ -127,26 +135,19 @@ TEST(SpotLights, SphereSpotIsTheSphereTimesTheCone) {
     o.samples = 16;
     const auto ref_spot = renderReference(s, spot.g, o);
     const auto ref_sphere = renderReference(asShape(s), spot.g, o);
-    const glm::mat4 inv_vp = referenceInvViewProj(s.camera, w, h);
     const GpuLight gl = packLight(s.lights[0]);
     int edge = 0;
-    for (int y = 0; y < h; ++y) {
-      for (int x = 0; x < w; ++x) {
-        const size_t i = size_t(y) * size_t(w) + size_t(x);
-        if (spot.g.model[i] != static_cast<uint32_t>(ShadingModel::DefaultLit)) continue;
-        const glm::vec2 uv((float(x) + 0.5f) / float(w), 1.0f - (float(y) + 0.5f) / float(h));
-        const glm::vec3 P = glsl::reconstructWorldPosition(uv, spot.g.depth[i], inv_vp);
-        const float cone =
-            glsl::spotAttenuation(glm::normalize(s.lights[0].position - P), gl.axis_length);
-        edge += cone > 0.0f && cone < 1.0f;
-        for (int k = 0; k < 3; ++k) {
-          const float b = sphere.hdr.px[i][k] * cone;
-          ASSERT_NEAR(spot.hdr.px[i][k], b, 1e-3f * b + 1e-6f) << "engine, pixel " << i;
-          const float rb = ref_sphere.image.px[i][k] * cone;
-          ASSERT_NEAR(ref_spot.image.px[i][k], rb, 1e-4f * rb + 1e-7f) << "reference, pixel " << i;
-        }
+    forEachLitPixel(s, spot.g, w, h, [&](size_t i, glm::vec3 P) {
+      const float cone =
+          glsl::spotAttenuation(glm::normalize(s.lights[0].position - P), gl.axis_length);
+      edge += cone > 0.0f && cone < 1.0f;
+      for (int k = 0; k < 3; ++k) {
+        const float b = sphere.hdr.px[i][k] * cone;
+        ASSERT_NEAR(spot.hdr.px[i][k], b, 1e-3f * b + 1e-6f) << "engine, pixel " << i;
+        const float rb = ref_sphere.image.px[i][k] * cone;
+        ASSERT_NEAR(ref_spot.image.px[i][k], rb, 1e-4f * rb + 1e-7f) << "reference, pixel " << i;
       }
-    }
+    });
     EXPECT_GT(edge, 100);
   }
 }
@@ -222,32 +223,25 @@ TEST(SpotLights, ShadowsFromAPointLightsCube) {
   shadowed.lights[0].shadows = true;
   shadowed.settings.shadow_filter = ShadowFilter::Hard;
   const Frame a = renderScene(lit, w, h), b = renderScene(shadowed, w, h);
-  const glm::mat4 inv_vp = referenceInvViewProj(lit.camera, w, h);
   const glm::vec3 light = lit.lights[0].position;
   int dark = 0, clear = 0;
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const size_t i = size_t(y) * size_t(w) + size_t(x);
-      if (a.g.model[i] != static_cast<uint32_t>(ShadingModel::DefaultLit)) continue;
-      const glm::vec2 uv((float(x) + 0.5f) / float(w), 1.0f - (float(y) + 0.5f) / float(h));
-      const glm::vec3 P = glsl::reconstructWorldPosition(uv, a.g.depth[i], inv_vp);
-      if (std::abs(P.y) > 1e-2f || a.hdr.px[i][0] <= 0.0f) continue;  // lit floor points only
-      // Distance from the sphere's center to the segment from P to the light.
-      const glm::vec3 d = glm::normalize(light - P);
-      const float t = glm::dot(center - P, d);
-      const float miss = glm::length(center - (P + d * t));
-      for (int k = 0; k < 3; ++k) {
-        const float unshadowed = a.hdr.px[i][k], v = b.hdr.px[i][k];
-        if (miss < r - 0.05f) {
-          ASSERT_LT(v, 0.02f * unshadowed) << "in the shadow, pixel " << i;
-        } else if (miss > r + 0.05f) {
-          ASSERT_NEAR(v, unshadowed, 1e-3f * unshadowed + 1e-6f) << "clear, pixel " << i;
-        }
+  forEachLitPixel(lit, a.g, w, h, [&](size_t i, glm::vec3 P) {
+    if (std::abs(P.y) > 1e-2f || a.hdr.px[i][0] <= 0.0f) return;  // lit floor points only
+    // Distance from the sphere's center to the segment from P to the light.
+    const glm::vec3 d = glm::normalize(light - P);
+    const float t = glm::dot(center - P, d);
+    const float miss = glm::length(center - (P + d * t));
+    for (int k = 0; k < 3; ++k) {
+      const float unshadowed = a.hdr.px[i][k], v = b.hdr.px[i][k];
+      if (miss < r - 0.05f) {
+        ASSERT_LT(v, 0.02f * unshadowed) << "in the shadow, pixel " << i;
+      } else if (miss > r + 0.05f) {
+        ASSERT_NEAR(v, unshadowed, 1e-3f * unshadowed + 1e-6f) << "clear, pixel " << i;
       }
-      dark += miss < r - 0.05f;
-      clear += miss > r + 0.05f;
     }
-  }
+    dark += miss < r - 0.05f;
+    clear += miss > r + 0.05f;
+  });
   EXPECT_GT(dark, 100);
   EXPECT_GT(clear, 300);
 }
