@@ -9,6 +9,21 @@
 
 namespace hv::render {
 
+namespace {
+// The draw's object-space bounding box, as centre and half extents (blended draws sort by the
+// centre and cull their lights by the box: forward_pass.cpp).
+void setBounds(DrawItem& d, const Mesh& m) {
+  if (m.vertices.empty()) return;
+  glm::vec3 lo = m.vertices[0].position, hi = lo;
+  for (const Vertex& v : m.vertices) {
+    lo = glm::min(lo, v.position);
+    hi = glm::max(hi, v.position);
+  }
+  d.center = 0.5f * (lo + hi);
+  d.half_extent = 0.5f * (hi - lo);
+}
+}  // namespace
+
 GpuScene::GpuScene(const Scene& scene) : scene_(&scene) {
   std::vector<Vertex> verts;
   std::vector<uint32_t> idx;
@@ -29,15 +44,7 @@ GpuScene::GpuScene(const Scene& scene) : scene_(&scene) {
       d.material = m.material;
       d.object = static_cast<int>(o);
       d.double_sided = scene.materials[m.material].double_sided;
-      if (!m.vertices.empty()) {
-        glm::vec3 lo = m.vertices[0].position, hi = lo;
-        for (const Vertex& v : m.vertices) {
-          lo = glm::min(lo, v.position);
-          hi = glm::max(hi, v.position);
-        }
-        d.center = 0.5f * (lo + hi);
-        d.half_extent = 0.5f * (hi - lo);
-      }
+      setBounds(d, m);
       draws_.push_back(d);
     }
   }
