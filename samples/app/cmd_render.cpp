@@ -240,7 +240,8 @@ nlohmann::ordered_json statsJson(const RenderReport& r, const Context& ctx,
                                 {"total", bake->total_ms}};
   }
   nlohmann::ordered_json counts;
-  for (auto t : {LightType::Point, LightType::Sphere, LightType::Tube, LightType::Spot}) {
+  for (auto t : {LightType::Point, LightType::Sphere, LightType::Tube, LightType::Spot,
+                 LightType::Directional}) {
     counts[std::string(toString(t))] = std::count_if(r.scene.lights.begin(), r.scene.lights.end(),
                                                      [&](const Light& l) { return l.type == t; });
   }

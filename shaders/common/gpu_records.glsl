@@ -13,10 +13,16 @@
 #define HV_GPU_RECORDS_GLSL
 
 // ---- Lights -------------------------------------------------------------------------------------
-// Light type codes stored in GpuLight.type; = hv::LightType.
+// Light type codes stored in GpuLight.type; = hv::LightType for the first three.
 #define HV_LIGHT_POINT 0
 #define HV_LIGHT_SPHERE 1
 #define HV_LIGHT_TUBE 2
+// hv::LightType::Directional. Not culled per tile (the culling bins types 0-2 only): the light
+// pass and the forward pass loop over the frame's directional lights (frame_block.glsl,
+// directional_lights) at every pixel. position_radius holds the unit direction toward the light
+// and the sine of the disk's angular radius; color_inv_range the color times the illuminance E,
+// w 0 (no range).
+#define HV_LIGHT_DIRECTIONAL 3
 // A spot (hv::LightType::Spot) is a point or sphere light times its cone: its type is
 // HV_LIGHT_POINT or HV_LIGHT_SPHERE with this bit set (so that the culling sorts it with its shape
 // and the light pass shades it in that shape's loop), and axis_length holds its cone (spotCone,

@@ -26,6 +26,8 @@
 //                               it (ltcCorrection; measurement in docs/lights.md)
 //  HV_HAS_POINT_LIGHTS / HV_HAS_SPHERE_LIGHTS / HV_HAS_TUBE_LIGHTS 1|0: compile that light type
 //  HV_HAS_SPOT_LIGHTS 1|0       compile the spot cone (spot.glsl) into the point and sphere lights
+//  HV_HAS_DIRECTIONAL_LIGHTS 1|0 compile the directional light (a sphere at infinity: the sphere
+//                               settings above govern it)
 //  HV_DIRECT_TERMS 3|1|2|0      bit 1 diffuse, bit 2 specular: the terms shadeLight returns (the
 //                               others are 0); for per-term images (`halfvec render --aov`)
 //  HV_SHADOWS, HV_SHADOW_FILTER, HV_SHADOW_MAP_SIZE: shadows.glsl (lightShadow below)
@@ -79,12 +81,16 @@
 #ifndef HV_HAS_SPOT_LIGHTS
 #define HV_HAS_SPOT_LIGHTS 1
 #endif
+#ifndef HV_HAS_DIRECTIONAL_LIGHTS
+#define HV_HAS_DIRECTIONAL_LIGHTS 1
+#endif
 #ifndef HV_DIRECT_TERMS
 #define HV_DIRECT_TERMS 3
 #endif
 // The LTC table is read, once per pixel, when a compiled light type shades its specular with it.
-#define HV_LTC_TABLE                                                             \
-  ((HV_HAS_SPHERE_LIGHTS && HV_SPHERE_SPECULAR == HV_SPHERE_SPECULAR_LTC) || \
+#define HV_LTC_TABLE                                                                        \
+  (((HV_HAS_SPHERE_LIGHTS || HV_HAS_DIRECTIONAL_LIGHTS) &&                                  \
+    HV_SPHERE_SPECULAR == HV_SPHERE_SPECULAR_LTC) ||                                        \
    (HV_HAS_TUBE_LIGHTS && HV_TUBE_SPECULAR == HV_TUBE_SPECULAR_LTC))
 
 // The light's type code (HV_LIGHT_*, gpu_records.glsl): a spot's is its shape's.
@@ -256,7 +262,7 @@ vec3 evaluatePointLight(GpuLight light, Surface s, vec3 P, vec3 V) {
 }
 #endif
 
-#if HV_HAS_SPHERE_LIGHTS
+#if HV_HAS_SPHERE_LIGHTS || HV_HAS_DIRECTIONAL_LIGHTS
 // Sphere light specular, Karis 2013 eqs. 11 and 14: the representative point of the sphere
 // closest to the reflection ray, with the energy normalization (alpha / alpha')^2.
 vec3 sphereSpecularRepresentativePoint(Surface s, ShadingPoint sp, vec3 Lc, float d2,
@@ -265,6 +271,9 @@ vec3 sphereSpecularRepresentativePoint(Surface s, ShadingPoint sp, vec3 Lc, floa
   float norm = sphereNormalization(s.alpha, radius, d2);
   return specularTerm(s, sp, Ls, falloff, norm);
 }
+#endif
+
+#if HV_HAS_SPHERE_LIGHTS
 
 // Sphere light: diffuse from the center (Karis point approximation) or the horizon-correct sphere
 // irradiance (Lagarde & de Rousiers 2014 section 4.7.2); specular from the representative point
@@ -396,6 +405,39 @@ vec3 evaluateTubeLight(GpuLight light, Surface s, vec3 P, vec3 V) {
   return evaluateTubeLightAt(light, s, makeShadingPoint(s, P, V));
 }
 #endif
+#if HV_HAS_DIRECTIONAL_LIGHTS
+// Directional light: a distant disk of uniform radiance seen under the angular radius sigma (the
+// sun of Lagarde & de Rousiers 2014, section 4.7), whose illuminance at normal incidence is E.
+// Seen from the shading point it is the cone of directions of a sphere of radius sin(sigma) at
+// distance 1, so the sphere light's code shades it exactly as it shades that sphere, with E in
+// place of the falloff I / d^2 (a sphere's irradiance at normal incidence): diffuse from the
+// center direction (Karis point approximation, exact while the disk is above the horizon) or
+// the horizon-clipped disk (Lagarde & de Rousiers 2014 section 4.7.2, their illuminance of a
+// sphere or disk); specular from the representative point, the disk's direction closest to R
+// (Karis 2013 eq. 11; Lagarde & de Rousiers 2014 listing 9 for the sun), with the normalization
+// of eq. 14 at sin(sigma) / 1, or the pixel's LTC over the cone (HV_SPHERE_SPECULAR_LTC). A disk
+// of angular radius 0 is a single direction: the point-light limit of either method.
+vec3 evaluateDirectionalLightAt(GpuLight light, Surface s, ShadingPoint sp) {
+  vec3 L = vec3(light.position_radius);  // unit, toward the light
+  float sin_sigma = light.position_radius.w;
+#if HV_SPHERE_DIFFUSE == HV_SPHERE_DIFFUSE_HORIZON
+  float cos_factor = sphereHorizonFactor(dot(s.N, L), sin_sigma * sin_sigma);
+#else
+  float cos_factor = saturate(dot(s.N, L));
+#endif
+  vec3 diffuse = diffuseTerm(s, sp, L, cos_factor);
+#if HV_SPHERE_SPECULAR == HV_SPHERE_SPECULAR_LTC
+  vec3 specular = ltcSphereSpecular(s, sp, L, L, 1.0f, sin_sigma, 1.0f);
+#else
+  vec3 specular = sphereSpecularRepresentativePoint(s, sp, L, 1.0f, sin_sigma, 1.0f);
+#endif
+  return combineTerms(s, vec3(light.color_inv_range), diffuse, specular);
+}
+vec3 evaluateDirectionalLight(GpuLight light, Surface s, vec3 P, vec3 V) {
+  return evaluateDirectionalLightAt(light, s, makeShadingPoint(s, P, V));
+}
+#endif
+
 // Karis 2013 "Lighting": outgoing radiance at P toward V (unit, from P to the eye) from one light,
 // for surface s (docs/lights.md).
 // Cavity is applied to all of it (see shadeLight). Only the compiled light types are handled;
@@ -411,6 +453,9 @@ vec3 evaluateLightAt(GpuLight light, Surface s, ShadingPoint sp) {
 #endif
 #if HV_HAS_TUBE_LIGHTS
   if (type == HV_LIGHT_TUBE) result = evaluateTubeLightAt(light, s, sp);
+#endif
+#if HV_HAS_DIRECTIONAL_LIGHTS
+  if (type == HV_LIGHT_DIRECTIONAL) result = evaluateDirectionalLightAt(light, s, sp);
 #endif
   return result;
 }

@@ -88,6 +88,7 @@ vec3 probeLight(GpuLight l) { return l.color_inv_range.rgb * step(0.0, l.positio
 #define HV_EVAL_POINT(l, j) probeLight(l)
 #define HV_EVAL_SPHERE(l, j) probeLight(l)
 #define HV_EVAL_TUBE(l, j) (probeLight(l) * step(0.0, l.axis_length.w))
+#define HV_EVAL_DIRECTIONAL(l, j) probeLight(l)
 #elif HV_SHADOWS
 // Shadowed lights (shadows.glsl): each light's radiance times its visibility at the
 // invocation's pixels, computed for all of them at once (HV_SHADOW_OF, before the pixel loop);
@@ -103,6 +104,10 @@ vec3 probeLight(GpuLight l) { return l.color_inv_range.rgb * step(0.0, l.positio
 #define HV_EVAL_POINT(l, j) evaluatePointLightAt(l, s[j], sp[j])
 #define HV_EVAL_SPHERE(l, j) evaluateSphereLightAt(l, s[j], sp[j])
 #define HV_EVAL_TUBE(l, j) evaluateTubeLightAt(l, s[j], sp[j])
+#endif
+// Directional lights have no shadow map (docs/lights.md, "Directional lights").
+#ifndef HV_EVAL_DIRECTIONAL
+#define HV_EVAL_DIRECTIONAL(l, j) evaluateDirectionalLightAt(l, s[j], sp[j])
 #endif
 
 #ifndef HV_SHADOW_OF
@@ -206,6 +211,17 @@ void main() {
       HV_SHADOW_OF(l);
       for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += HV_EVAL_TUBE(l, j);
     } while (++i < end);
+  }
+#endif
+#if HV_HAS_DIRECTIONAL_LIGHTS && HV_LIGHT_PROBE != 2
+  // The directional lights, which no tile list holds: every pixel shades each of them (the
+  // brute-force loop above reaches them through evaluateLightAt). The index is uniform across
+  // the dispatch, so its fetch is one load, not a gather.
+  for (int k = 0; k < 4; ++k) {
+    uint d = u_directional_lights[k];
+    if (d == 0u) break;
+    GpuLight l = lights[d - 1u];
+    for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += HV_EVAL_DIRECTIONAL(l, j);
   }
 #endif
 #endif

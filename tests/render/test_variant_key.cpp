@@ -176,13 +176,49 @@ TEST(VariantKey, SpotIsItsShapeAndItsCone) {
   EXPECT_EQ(l.at("HV_HAS_SPOT_LIGHTS").why, "no spot lights");
 }
 
+// A directional light compiles its own loop and evaluation (HV_HAS_DIRECTIONAL_LIGHTS) and no
+// other light type; it keeps the sphere settings, which govern it (a sphere at infinity), and
+// draws no shadow map (shadows: true leaves HV_SHADOWS off).
+TEST(VariantKey, DirectionalKeepsTheSphereSettings) {
+  Material a;
+  Scene s = sceneWith({a});
+  Light sun;
+  sun.type = LightType::Directional;
+  sun.shadows = true;
+  s.lights = {sun};
+  s.settings.sphere_specular = SphereSpecular::Ltc;
+  s.settings.sphere_diffuse = SphereDiffuse::HorizonCorrect;
+  VariantKey k = deriveVariantKey(s);
+  EXPECT_TRUE(k.directional_lights && k.hasLights());
+  EXPECT_FALSE(k.point_lights || k.sphere_lights || k.tube_lights || k.spot_lights);
+  EXPECT_FALSE(k.shadows);
+  EXPECT_EQ(k.text().substr(0, 19), "lights directional;");
+  EXPECT_EQ(k.settings.sphere_specular, SphereSpecular::Ltc);
+  EXPECT_EQ(k.settings.sphere_diffuse, SphereDiffuse::HorizonCorrect);
+  EXPECT_TRUE(validateKey(k).empty());
+  auto l = byName(lightDefines(k, s));
+  EXPECT_EQ(l.at("HV_HAS_DIRECTIONAL_LIGHTS").value, "1");
+  EXPECT_EQ(l.at("HV_HAS_DIRECTIONAL_LIGHTS").why, "1 directional light");
+  EXPECT_EQ(l.at("HV_SHADOWS").value, "0");
+  // Without it: HV_HAS_DIRECTIONAL_LIGHTS=0, and the sphere settings reset (no sphere either).
+  s.lights[0].type = LightType::Point;
+  s.lights[0].shadows = false;
+  k = deriveVariantKey(s);
+  EXPECT_FALSE(k.directional_lights);
+  EXPECT_EQ(k.settings.sphere_specular, SphereSpecular::RepresentativePoint);
+  l = byName(lightDefines(k, s));
+  EXPECT_EQ(l.at("HV_HAS_DIRECTIONAL_LIGHTS").value, "0");
+  EXPECT_EQ(l.at("HV_HAS_DIRECTIONAL_LIGHTS").why, "no directional lights");
+}
+
 TEST(VariantKey, UberTurnsEveryFeatureOn) {
   Material a;
   Scene s = sceneWith({a, a});
   s.settings.uber = true;
   const VariantKey k = deriveVariantKey(s);
   EXPECT_TRUE(k.uber);
-  EXPECT_TRUE(k.point_lights && k.sphere_lights && k.tube_lights && k.spot_lights);
+  EXPECT_TRUE(k.point_lights && k.sphere_lights && k.tube_lights && k.spot_lights &&
+              k.directional_lights);
   EXPECT_TRUE(k.unlit && k.default_lit);
   ASSERT_EQ(k.material_variants.size(), 1u);
   EXPECT_EQ(k.material_variants[0], allMaterialFeatures());

@@ -56,11 +56,29 @@ TEST(Lights, PackLayoutAndValues) {
   std::vector<hv::Light> lights(2);
   lights[1].type = hv::LightType::Tube;
   auto defs = hv::lightTypeDefines(lights);
-  ASSERT_EQ(defs.size(), 4u);
+  ASSERT_EQ(defs.size(), 5u);
   EXPECT_EQ(defs[0], std::make_pair(std::string("HV_HAS_POINT_LIGHTS"), std::string("1")));
   EXPECT_EQ(defs[1], std::make_pair(std::string("HV_HAS_SPHERE_LIGHTS"), std::string("0")));
   EXPECT_EQ(defs[2], std::make_pair(std::string("HV_HAS_TUBE_LIGHTS"), std::string("1")));
   EXPECT_EQ(defs[3], std::make_pair(std::string("HV_HAS_SPOT_LIGHTS"), std::string("0")));
+  EXPECT_EQ(defs[4], std::make_pair(std::string("HV_HAS_DIRECTIONAL_LIGHTS"), std::string("0")));
+  // A directional light: the unit direction toward it, the sine of its angular radius, E times
+  // the color, no range, and its own type code (the culling bins types 0-2 only).
+  hv::Light d;
+  d.type = hv::LightType::Directional;
+  d.direction = {0.0f, 0.0f, -2.0f};
+  d.angular_diameter = 0.5f;
+  d.intensity = 4.0f;
+  d.color = {1.0f, 0.5f, 0.25f};
+  gl = hv::packLight(d);
+  EXPECT_EQ(gl.position_radius, glm::vec4(0, 0, 1, std::sin(0.25f)));
+  EXPECT_EQ(gl.color_inv_range, glm::vec4(4.0f, 2.0f, 1.0f, 0.0f));
+  EXPECT_EQ(gl.type, unsigned(HV_LIGHT_DIRECTIONAL));
+  EXPECT_EQ(gl.cull_radius, 0.0f);
+  lights[0] = d;
+  defs = hv::lightTypeDefines(lights);
+  EXPECT_EQ(defs[0].second, "0");
+  EXPECT_EQ(defs[4].second, "1");
 }
 
 // Karis 2013 eq. 20 and the tube's energy normalization, by hand. A metallic white surface at the
@@ -313,6 +331,14 @@ TEST(Lights, RepresentativePointEqualsKarisInDouble) {
 // Finite and non-negative everywhere: roughness 0 and 1, NoV = NoL = 0, V below the surface,
 // shading point at the light center / inside the sphere or on the tube segment, radius and
 // length 0, distances 1e-6 to 1e6, intensity 1e6, base color 0/1, metallic 0/1.
+// The directional light is the sphere light at distance 1 (default methods: representative point,
+// Karis point diffuse); 1e-5 relative: the two compute the same terms, the sphere's falloff
+// rounding once more.
+TEST(Lights, DirectionalIsTheSphereAtInfinity) {
+  std::string where;
+  EXPECT_LT(g::directionalVsSphereWorst(&where), 1e-5) << where;
+}
+
 TEST(Lights, StabilitySweepDefaults) {
   int cases = hv::glsl::runStabilitySweep();
   EXPECT_GT(cases, 100000);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -318,6 +319,13 @@ TEST(LtcLights, TurningTheSceneTurnsNothing) {
 // Finite, non-negative radiance over the extreme cases of light_sweep.inc (light at the shading
 // point, radius and length 0, distances 1e-6 to 1e6, roughness 0 and 1, NoV = 0, V below the
 // surface) with every LTC mode on.
+// The directional light is the sphere light at distance 1 in the ltc modes too (LTC specular,
+// horizon-correct diffuse), 1e-5 relative.
+TEST(LtcLights, DirectionalIsTheSphereAtInfinity) {
+  std::string where;
+  EXPECT_LT(both::directionalVsSphereWorst(&where), 1e-5) << where;
+}
+
 TEST(LtcLights, StabilitySweep) {
   EXPECT_GT(both::runStabilitySweep(), 100000);
 }

@@ -219,7 +219,8 @@ std::vector<StabilityRow> runStabilitySweep(
   std::vector<StabilityRow> rows;
   render::Renderer renderer;
   for (const Option& opt : options(opts.small)) {
-    for (LightType type : {LightType::Point, LightType::Sphere, LightType::Tube, LightType::Spot}) {
+    for (LightType type : {LightType::Point, LightType::Sphere, LightType::Tube, LightType::Spot,
+                           LightType::Directional}) {
       for (const Geometry& g : geometries()) {
         StabilityRow row{std::string(toString(type)), g.name, opt.name};
         for (float roughness : {0.0f, 1.0f}) {
@@ -248,6 +249,18 @@ std::vector<StabilityRow> runStabilitySweep(
             l.inner_cone_angle = 0.1f;
             l.outer_cone_angle = 0.4f;
             l.length = 0.0f;
+          }
+          if (type == LightType::Directional) {
+            // From the geometry's light position toward the sphere's center, the disk as wide
+            // as the geometry's sphere seen from there: 0 for radius 0, pi/2 (the largest) from
+            // inside it or for the huge radius, the sun-like 4e-7 at distance 1e6.
+            const glm::vec3 to_center = glm::vec3(-1.1f, -1.1f, 0.0f) - l.position;
+            const float d = glm::length(to_center);
+            l.direction = d > 1e-3f ? to_center / d : glm::vec3(0.0f, 0.0f, -1.0f);
+            l.angular_diameter = l.radius <= 0.0f ? 0.0f
+                                 : d > l.radius
+                                     ? std::min(2.0f * std::asin(l.radius / d), kMaxAngularDiameter)
+                                     : kMaxAngularDiameter;
           }
           l.shadows = opt.shadows;
           scene.lights.push_back(l);

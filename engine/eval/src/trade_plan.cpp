@@ -72,14 +72,15 @@ using Absences = std::array<std::pair<SettingFeature, const char*>, 5>;
 Absences absentFeatures(const Scene& scene) {
   bool sphere = false, tube = false, shadowed = false;
   for (const Light& l : scene.lights) {
-    sphere |= lightShape(l) == LightType::Sphere;  // a sphere spot runs the sphere code
+    // A sphere spot runs the sphere code, and so does a directional light (a sphere at infinity).
+    sphere |= lightShape(l) == LightType::Sphere || l.type == LightType::Directional;
     tube |= l.type == LightType::Tube;
-    shadowed |= l.shadows;
+    shadowed |= l.shadows && l.type != LightType::Directional;
   }
   const bool lights = !scene.lights.empty();
   const bool env = scene.environment.kind != EnvironmentKind::None;
   return {{{SettingFeature::Lights, lights ? nullptr : "no lights"},
-           {SettingFeature::SphereLights, sphere ? nullptr : "no sphere lights"},
+           {SettingFeature::SphereLights, sphere ? nullptr : "no sphere or directional lights"},
            {SettingFeature::TubeLights, tube ? nullptr : "no tube lights"},
            {SettingFeature::AmbientIbl, env ? nullptr : "no environment"},
            {SettingFeature::ShadowedLights, shadowed ? nullptr : "no shadowed lights"}}};

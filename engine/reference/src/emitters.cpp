@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "halfvec/shading/shading.hpp"
 
@@ -78,6 +79,44 @@ LightSample sampleSphere(const Light& light, const RenderSettings& settings, con
   ls.pdf = 1.0f / (2.0f * kPi * one_minus_cos);
   ls.radiance = emitterRadiance(light, settings, d2);
   ls.distance = sphereDistance(Lc, d2, r2, ls.L);
+  return ls;
+}
+
+// A directional light's disk (docs/lights.md, "Directional lights"): the cone of half-angle
+// sigma around the unit direction toward it, of uniform radiance L_e = E / (pi sin^2 sigma), so
+// that the irradiance at normal incidence, pi L_e sin^2 sigma, is E. 1 - cos sigma from
+// sin^2 sigma / (1 + cos sigma): no cancellation for the sun's 4.65 mrad.
+struct DirectionalCone {
+  glm::vec3 axis{0.0f};
+  float cos_max = 1.0f, one_minus_cos = 0.0f, sin2 = 0.0f;
+};
+DirectionalCone directionalCone(const Light& light) {
+  DirectionalCone c;
+  c.axis = -glm::normalize(light.direction);
+  const float half = 0.5f * std::clamp(light.angular_diameter, 0.0f, kMaxAngularDiameter);
+  const float sn = std::sin(half);
+  c.sin2 = sn * sn;
+  c.cos_max = std::cos(half);
+  c.one_minus_cos = c.sin2 / (1.0f + c.cos_max);
+  return c;
+}
+glm::vec3 directionalRadiance(const Light& light, const DirectionalCone& c) {
+  return c.sin2 > 0.0f ? light.color * (light.intensity / (kPi * c.sin2)) : glm::vec3(0.0f);
+}
+
+LightSample sampleDirectional(const Light& light, glm::vec2 u) {
+  LightSample ls;
+  const DirectionalCone c = directionalCone(light);
+  if (c.sin2 <= 0.0f) return ls;  // a single direction: exact, not sampled (pixel.cpp)
+  const float cos_t = 1.0f - u.x * c.one_minus_cos;
+  const float sin_t = std::sqrt(std::max(0.0f, 1.0f - cos_t * cos_t));
+  const float phi = 2.0f * kPi * u.y;
+  glm::vec3 T, B;
+  glsl::tangentFrame(c.axis, T, B);
+  ls.L = glm::normalize(T * (sin_t * std::cos(phi)) + B * (sin_t * std::sin(phi)) + c.axis * cos_t);
+  ls.pdf = 1.0f / (2.0f * kPi * c.one_minus_cos);
+  ls.radiance = directionalRadiance(light, c);
+  ls.distance = std::numeric_limits<float>::infinity();
   return ls;
 }
 
@@ -181,6 +220,8 @@ float capsulePdf(const Light& light, const glm::vec3& Pf, const glm::vec3& Lf) {
 
 glm::vec3 emitterRadianceAt(const Light& light, const RenderSettings& settings,
                             const glm::vec3& P) {
+  if (light.type == LightType::Directional)
+    return directionalRadiance(light, directionalCone(light));
   if (light.type == LightType::Sphere) {
     const glm::vec3 Lc = light.position - P;
     return emitterRadiance(light, settings, glm::dot(Lc, Lc));
@@ -197,6 +238,11 @@ glm::vec3 emitterRadianceAt(const Light& light, const RenderSettings& settings,
 }
 
 float lightPdf(const Light& light, const glm::vec3& P, const glm::vec3& L) {
+  if (light.type == LightType::Directional) {
+    const DirectionalCone c = directionalCone(light);
+    if (c.sin2 <= 0.0f || glm::dot(L, c.axis) < c.cos_max) return 0.0f;
+    return 1.0f / (2.0f * kPi * c.one_minus_cos);
+  }
   if (light.type == LightType::Sphere) {
     const glm::vec3 Lc = light.position - P;
     const float d2 = glm::dot(Lc, Lc);
@@ -229,6 +275,7 @@ uint32_t Rng::next() {
 }
 
 float windowDistance2(const Light& light, const glm::vec3& P) {
+  if (light.type == LightType::Directional) return 0.0f;  // no range: never beyond it
   if (light.type != LightType::Tube) {
     const glm::vec3 d = light.position - P;
     return glm::dot(d, d);
@@ -245,6 +292,15 @@ LightSample evalLight(const Light& light, const RenderSettings& settings, const 
                       const glm::vec3& L) {
   LightSample ls;
   ls.L = L;
+  if (light.type == LightType::Directional) {
+    // L sees the disk iff it lies in the cone sampleDirectional draws from.
+    const DirectionalCone c = directionalCone(light);
+    if (c.sin2 <= 0.0f || glm::dot(L, c.axis) < c.cos_max) return ls;
+    ls.pdf = 1.0f / (2.0f * kPi * c.one_minus_cos);
+    ls.radiance = directionalRadiance(light, c);
+    ls.distance = std::numeric_limits<float>::infinity();
+    return ls;
+  }
   const float r = light.radius;
   if (r <= 0.0f) return ls;
   if (light.type == LightType::Sphere) {
@@ -318,6 +374,8 @@ LightSample sampleLight(const Light& light, const RenderSettings& settings, cons
       return sampleSphere(light, settings, P, u);
     case LightType::Tube:
       return sampleTube(light, settings, P, u);
+    case LightType::Directional:
+      return sampleDirectional(light, u);
     case LightType::Point:
     case LightType::Spot:  // the reference samples a spot as its shape (reference.cpp)
       break;

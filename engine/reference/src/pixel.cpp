@@ -59,6 +59,17 @@ void pointLights(ShadingPoint& p, PixelOut& out) {
   const glsl::Surface& s = p.s;
   for (size_t i = 0; i < p.ctx.point_lights.size(); ++i) {
     const Light* l = p.ctx.point_lights[i];
+    if (l->type == LightType::Directional) {  // a single direction (angular diameter 0)
+      const glm::vec3 L = -glm::normalize(l->direction);
+      const float NoL = glsl::saturate(glm::dot(p.N, L));
+      if (NoL <= 0.0f) continue;
+      if (p.visibility() && p.occluded(L, std::numeric_limits<float>::infinity())) continue;
+      Lobes f = brdfLobes(p.ctx.brdf, s, p.V, L, true);
+      const glm::vec3 irr = l->color * (l->intensity * NoL * s.cavity);
+      out.aov[kDD] += glm::dvec3(irr * f.diffuse);
+      out.aov[kDS] += glm::dvec3(irr * f.specular);
+      continue;
+    }
     glm::vec3 Lc = l->position - p.P;
     float d2 = glm::dot(Lc, Lc);
     glm::vec3 L = glsl::safeNormalize(Lc);

@@ -92,7 +92,10 @@ Context makeContext(const Scene& scene, const GBufferReadback& gb, const Referen
       shape = &ctx.spot_shapes.back();
       cone = packLight(l).axis_length;
     }
-    const bool point = shape->type == LightType::Point;
+    // A directional light of angular diameter 0 is one direction, exact as a point light; a
+    // disk is sampled as an area light (emitters.cpp, sampleDirectional).
+    const bool point = shape->type == LightType::Point ||
+                       (shape->type == LightType::Directional && !(shape->angular_diameter > 0.0f));
     (point ? ctx.point_lights : ctx.area_lights).push_back(shape);
     (point ? ctx.point_cones : ctx.area_cones).push_back(cone);
   }

@@ -43,6 +43,11 @@ std::vector<uint32_t> ForwardPass::lightsReaching(const Scene& scene, const GpuS
   std::vector<uint32_t> out;
   const auto& spheres = gpu.lightCullSpheres();
   for (size_t i = 0; i < spheres.size(); ++i) {
+    // A directional light reaches every surface (it has no culling sphere).
+    if (i < scene.lights.size() && scene.lights[i].type == LightType::Directional) {
+      out.push_back(uint32_t(i));
+      continue;
+    }
     const glm::vec3 q = glm::clamp(glm::vec3(spheres[i]), c - h, c + h);  // nearest box point
     const glm::vec3 to = q - glm::vec3(spheres[i]);
     if (glm::dot(to, to) <= spheres[i].w * spheres[i].w) out.push_back(uint32_t(i));

@@ -113,7 +113,12 @@ void GpuScene::updateLights(const Scene& scene) {
   std::vector<GpuLight> packed;
   packed.reserve(scene.lights.size());
   cull_spheres_.clear();
+  directional_ = glm::uvec4(0u);
+  int directional = 0;
   for (const Light& l : scene.lights) {
+    if (l.type == LightType::Directional && directional < int(kMaxDirectionalLights)) {
+      directional_[directional++] = uint32_t(packed.size() + 1);
+    }
     packed.push_back(packLight(l));
     cull_spheres_.push_back(glsl::lightCullSphere(toGlsl(packed.back())));
   }

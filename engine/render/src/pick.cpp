@@ -108,6 +108,10 @@ size_t countLightsInView(const Scene& scene, int width, int height) {
   for (glm::vec4& p : planes) p /= glm::length(glm::vec3(p));
   size_t n = 0;
   for (const Light& l : scene.lights) {
+    if (l.type == LightType::Directional) {  // everywhere: in every view
+      ++n;
+      continue;
+    }
     const float r = l.range + (l.type == LightType::Tube ? 0.5f * l.length : 0.0f);
     bool inside = true;
     for (const glm::vec4& p : planes)

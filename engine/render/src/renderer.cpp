@@ -232,6 +232,7 @@ FrameStats Renderer::render(int width, int height, DebugView view,
 FrameUniforms Renderer::frameUniforms(int width, int height, DebugView view) const {
   FrameUniforms frame{makeFrameBlock(*scene_, width, height), frame_ubo_.id()};
   frame.block.light_count = static_cast<uint32_t>(gpu_->lightCount());
+  frame.block.directional_lights = gpu_->directionalLights();
   frame.block.tile_capacity = static_cast<uint32_t>(passes_->culling.capacity());
   frame.block.debug_view = static_cast<uint32_t>(view);
   // Term views: no background (ambient.comp), no emissive (masked out in the G-buffer pass).
@@ -437,7 +438,8 @@ GBufferReadback Renderer::readGBuffer() const {
 // shades its specular with it.
 bool Renderer::lightPassNeedsLtc() const {
   const RenderSettings& s = key_.settings;
-  return (key_.sphere_lights && s.sphere_specular == SphereSpecular::Ltc) ||
+  return ((key_.sphere_lights || key_.directional_lights) &&
+          s.sphere_specular == SphereSpecular::Ltc) ||
          (key_.tube_lights && s.tube_specular == TubeSpecular::Ltc);
 }
 

@@ -18,7 +18,8 @@ ShadowAssignment assignShadowMaps(const std::vector<Light>& lights, size_t capac
   ShadowAssignment a;
   a.layer.assign(lights.size(), -1);
   for (size_t i = 0; i < lights.size(); ++i) {
-    if (!lights[i].shadows) continue;
+    // A directional light has no shadow map (the loader warns): it renders unshadowed.
+    if (!lights[i].shadows || lights[i].type == LightType::Directional) continue;
     if (a.maps.size() < capacity) {
       a.layer[i] = int(a.maps.size());
       a.maps.push_back(i);

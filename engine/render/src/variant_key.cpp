@@ -88,8 +88,8 @@ bool featurePresent(SettingFeature f, const VariantKey& k) {
       return true;
     case SettingFeature::Lights:
       return k.hasLights();
-    case SettingFeature::SphereLights:
-      return k.sphere_lights;
+    case SettingFeature::SphereLights:  // a directional light is shaded as a sphere at infinity
+      return k.sphere_lights || k.directional_lights;
     case SettingFeature::TubeLights:
       return k.tube_lights;
     case SettingFeature::AmbientIbl:
@@ -110,7 +110,7 @@ std::string featureAbsentReason(SettingFeature f, const VariantKey& k) {
     case SettingFeature::Lights:
       return "no lights";
     case SettingFeature::SphereLights:
-      return "no sphere lights";
+      return "no sphere or directional lights";
     case SettingFeature::TubeLights:
       return "no tube lights";
     case SettingFeature::AmbientIbl:
@@ -131,7 +131,7 @@ const char* featureInvalid(SettingFeature f) {
     case SettingFeature::Lights:
       return "BRDF or light options without lights";
     case SettingFeature::SphereLights:
-      return "sphere-light options without sphere lights";
+      return "sphere-light options without sphere or directional lights";
     case SettingFeature::TubeLights:
       return "tube-light options without tube lights";
     case SettingFeature::AmbientIbl:
@@ -252,6 +252,7 @@ std::string VariantKey::text() const {
   if (sphere_lights) lights += std::string(lights.empty() ? "" : "+") + "sphere";
   if (tube_lights) lights += std::string(lights.empty() ? "" : "+") + "tube";
   if (spot_lights) lights += std::string(lights.empty() ? "" : "+") + "spot";
+  if (directional_lights) lights += std::string(lights.empty() ? "" : "+") + "directional";
   std::string models;
   if (default_lit) models += "default_lit";
   if (unlit) models += std::string(models.empty() ? "" : "+") + "unlit";
@@ -272,7 +273,9 @@ VariantKey deriveVariantKey(const Scene& scene) {
     k.sphere_lights |= lightShape(l) == LightType::Sphere;
     k.tube_lights |= l.type == LightType::Tube;
     k.spot_lights |= l.type == LightType::Spot;
-    k.shadows |= l.shadows;
+    k.directional_lights |= l.type == LightType::Directional;
+    // A directional light's shadows are not drawn (docs/lights.md, "Directional lights").
+    k.shadows |= l.shadows && l.type != LightType::Directional;
   }
   k.environment = scene.environment.kind;
   // Only materials that are drawn count.
@@ -302,7 +305,7 @@ VariantKey deriveVariantKey(const Scene& scene) {
     k.material_variant[i] = int(it - k.material_variants.begin());
   }
   if (k.uber) {
-    k.point_lights = k.sphere_lights = k.tube_lights = k.spot_lights = true;
+    k.point_lights = k.sphere_lights = k.tube_lights = k.spot_lights = k.directional_lights = true;
     k.unlit = k.default_lit = true;
     k.material_variants = {allMaterialFeatures()};
     for (size_t i = 0; i < scene.materials.size(); ++i) k.material_variant[i] = drawn[i] ? 0 : -1;
@@ -354,7 +357,8 @@ std::vector<std::string> validateKey(const VariantKey& k) {
     }
   }
   if (k.uber && k.material_variants.size() != 1) bad.push_back("uber key with several variants");
-  if (k.uber && !(k.point_lights && k.sphere_lights && k.tube_lights && k.spot_lights)) {
+  if (k.uber && !(k.point_lights && k.sphere_lights && k.tube_lights && k.spot_lights &&
+                  k.directional_lights)) {
     bad.push_back("uber key without every light type");
   }
   for (int v : k.material_variant) {
@@ -469,7 +473,7 @@ std::vector<KeyDefine> settingKeyDefines(const VariantKey& k, const Scene& scene
 std::string shadowsWhy(const Scene& scene) {
   std::vector<size_t> on;
   for (size_t i = 0; i < scene.lights.size(); ++i) {
-    if (scene.lights[i].shadows) on.push_back(i);
+    if (scene.lights[i].shadows && scene.lights[i].type != LightType::Directional) on.push_back(i);
   }
   if (on.empty()) return "no light has shadows: true (no shadow maps, no shadow lookup)";
   std::string t = std::to_string(on.size()) + " shadowed light" + (on.size() == 1 ? "" : "s");
@@ -523,7 +527,8 @@ std::vector<KeyDefine> lightDefines(const VariantKey& k, const Scene& scene) {
   } types[] = {{"HV_HAS_POINT_LIGHTS", k.point_lights, LightType::Point},
                {"HV_HAS_SPHERE_LIGHTS", k.sphere_lights, LightType::Sphere},
                {"HV_HAS_TUBE_LIGHTS", k.tube_lights, LightType::Tube},
-               {"HV_HAS_SPOT_LIGHTS", k.spot_lights, LightType::Spot}};
+               {"HV_HAS_SPOT_LIGHTS", k.spot_lights, LightType::Spot},
+               {"HV_HAS_DIRECTIONAL_LIGHTS", k.directional_lights, LightType::Directional}};
   for (const auto& t : types) {
     const size_t n = countLights(scene, t.type);
     const std::string name(toString(t.type));

@@ -119,6 +119,30 @@ void parseSpot(const Obj& o, Light& l) {
   }
 }
 
+// A directional light: the direction its light travels, its illuminance and the disk's angular
+// diameter. It has no position, range or radius: those keys are errors, as any key that does not
+// apply to a type.
+Light parseDirectional(const Ctx& ctx, const json& j, const std::string& ptr) {
+  Obj o(ctx, j, ptr, {"type", "direction", "color", "intensity", "angular_diameter", "shadows"});
+  Light l;
+  l.type = LightType::Directional;
+  const glm::vec3 d = o.vec3("direction", l.direction);
+  if (glm::length(d) < 1e-6f) o.fail("direction", "expected a non-zero direction, got [0, 0, 0]");
+  l.direction = glm::normalize(d);
+  l.color = o.vec3("color", l.color, kNonNeg);
+  l.intensity = o.num("intensity", l.intensity, kNonNeg);
+  l.angular_diameter =
+      o.num("angular_diameter", l.angular_diameter, Range{0.0, 1.5707963267948966});  // pi / 2
+  l.shadows = o.boolean("shadows", l.shadows);
+  if (l.shadows) {
+    sceneWarning(ctx.file + ": " + ptr +
+                     "/shadows: directional lights draw no shadow maps yet; this one renders "
+                     "unshadowed (docs/lights.md, \"Directional lights\")",
+                 ctx.warnings);
+  }
+  return l;
+}
+
 Light parseLight(const Ctx& ctx, const json& j, const std::string& ptr) {
   std::optional<LightType> type;
   if (j.is_object() && j.contains("type"))
@@ -127,6 +151,7 @@ Light parseLight(const Ctx& ctx, const json& j, const std::string& ptr) {
     if (!j.is_object()) ctx.fail(ptr, "expected an object, got " + shortDump(j));
     ctx.fail(ptr + "/type", "missing; expected one of " + enumNamesJoined<LightType>());
   }
+  if (*type == LightType::Directional) return parseDirectional(ctx, j, ptr);
   std::vector<std::string_view> keys = {"type",      "position", "color",
                                         "intensity", "range",    "shadows"};
   if (*type != LightType::Point) keys.push_back("radius");

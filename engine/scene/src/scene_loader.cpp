@@ -462,8 +462,16 @@ Scene parseScene(const json& j, const std::string& source_name,
       top.fail("lights", std::to_string(ls.size()) + " lights exceed the budget of " +
                              std::to_string(kMaxSceneLights) + " (kMaxSceneLights)");
     }
+    size_t directional = 0;
     for (size_t i = 0; i < ls.size(); ++i) {
-      scene.lights.push_back(parseLight(ctx, ls[i], "/lights/" + std::to_string(i)));
+      const std::string ptr = "/lights/" + std::to_string(i);
+      scene.lights.push_back(parseLight(ctx, ls[i], ptr));
+      if (scene.lights.back().type == LightType::Directional &&
+          ++directional > kMaxDirectionalLights) {
+        ctx.fail(ptr + "/type", "a directional light beyond the scene's " +
+                                    std::to_string(kMaxDirectionalLights) +
+                                    " (kMaxDirectionalLights: every pixel shades them all)");
+      }
     }
   }
   if (top.has("light_generators")) {
@@ -476,6 +484,15 @@ Scene parseScene(const json& j, const std::string& source_name,
     top.fail("objects", std::to_string(builder.model_lights.size()) +
                             " lights of glTF models exceed, with the scene's, the budget of " +
                             std::to_string(kMaxSceneLights) + " (kMaxSceneLights)");
+  }
+  const auto directional = [](const Light& l) { return l.type == LightType::Directional; };
+  const size_t directional_count =
+      size_t(std::count_if(scene.lights.begin(), scene.lights.end(), directional)) +
+      size_t(std::count_if(builder.model_lights.begin(), builder.model_lights.end(), directional));
+  if (directional_count > kMaxDirectionalLights) {
+    top.fail("objects", std::to_string(directional_count) +
+                            " directional lights (the scene's and its glTF models') exceed the " +
+                            std::to_string(kMaxDirectionalLights) + " of kMaxDirectionalLights");
   }
   scene.lights.insert(scene.lights.end(), builder.model_lights.begin(), builder.model_lights.end());
   if (top.has("environment")) scene.environment = parseEnvironment(ctx, top["environment"]);

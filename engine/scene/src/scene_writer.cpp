@@ -361,6 +361,15 @@ std::string escapeToken(const std::string& s) {
 }
 
 ojson lightJson(const Light& l) {
+  if (l.type == LightType::Directional) {
+    ojson j{{"type", name(l.type)},
+            {"direction", vec3(l.direction)},
+            {"color", vec3(l.color)},
+            {"intensity", l.intensity},
+            {"angular_diameter", l.angular_diameter}};
+    if (l.shadows) j["shadows"] = true;
+    return j;
+  }
   ojson j{{"type", name(l.type)},
           {"position", vec3(l.position)},
           {"color", vec3(l.color)},
@@ -435,6 +444,14 @@ void lightEdits(const nlohmann::json& file, const Scene& loaded, const Scene& ed
   for (size_t i = 0; i < explicit_count; ++i) {
     const Light &a = loaded.lights[i], &b = edited.lights[i];
     const std::string p = "/lights/" + std::to_string(i);
+    if (b.type == LightType::Directional) {
+      c.field(p + "/direction", a.direction, b.direction, vec3(b.direction));
+      c.field(p + "/color", a.color, b.color, vec3(b.color));
+      c.field(p + "/intensity", a.intensity, b.intensity, b.intensity);
+      c.field(p + "/angular_diameter", a.angular_diameter, b.angular_diameter, b.angular_diameter);
+      c.field(p + "/shadows", a.shadows, b.shadows, b.shadows);
+      continue;
+    }
     c.field(p + "/position", a.position, b.position, vec3(b.position));
     c.field(p + "/color", a.color, b.color, vec3(b.color));
     c.field(p + "/intensity", a.intensity, b.intensity, b.intensity);

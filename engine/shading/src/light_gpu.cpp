@@ -10,7 +10,27 @@ static_assert(int(LightType::Point) == HV_LIGHT_POINT &&
                   int(LightType::Tube) == HV_LIGHT_TUBE,
               "GpuLight.type holds hv::LightType (gpu_records.glsl)");
 
+// A directional light (HV_LIGHT_DIRECTIONAL, gpu_records.glsl): the unit direction toward it, the
+// sine of the disk's angular radius, the color times the illuminance. No range: the window and the
+// culling radius are 0 (the culling does not bin it).
+GpuLight packDirectional(const Light& light) {
+  GpuLight g{};
+  glm::vec3 dir = light.direction;
+  const float dir_len = glm::length(dir);
+  dir = (std::isfinite(dir_len) && dir_len > 1e-20f) ? dir / dir_len : glm::vec3(0, -1, 0);
+  const float half_angle = 0.5f * std::clamp(light.angular_diameter, 0.0f, kMaxAngularDiameter);
+  g.position_radius = glm::vec4(-dir, std::sin(half_angle));
+  g.color_inv_range = glm::vec4(light.color * light.intensity, 0.0f);
+  g.axis_length = glm::vec4(0.0f);
+  g.range = 0.0f;
+  g.type = HV_LIGHT_DIRECTIONAL;
+  g.cull_radius = 0.0f;
+  g.shadow_cube = 0;
+  return g;
+}
+
 GpuLight packLight(const Light& light) {
+  if (light.type == LightType::Directional) return packDirectional(light);
   GpuLight g{};
   const LightType shape = lightShape(light);  // a spot: its point or sphere
   float radius = shape == LightType::Point ? 0.0f : std::max(light.radius, 0.0f);
@@ -45,16 +65,17 @@ GpuLight packLight(const Light& light) {
 
 std::vector<std::pair<std::string, std::string>> lightTypeDefines(
     const std::vector<Light>& lights) {
-  bool has[4] = {false, false, false, false};
+  bool has[5] = {false, false, false, false, false};
   for (const Light& l : lights) {
-    has[static_cast<int>(lightShape(l))] = true;
+    has[static_cast<int>(lightShape(l))] = true;  // Directional: index 4
     has[3] = has[3] || l.type == LightType::Spot;
   }
   auto flag = [](bool b) { return std::string(b ? "1" : "0"); };
   return {{"HV_HAS_POINT_LIGHTS", flag(has[0])},
           {"HV_HAS_SPHERE_LIGHTS", flag(has[1])},
           {"HV_HAS_TUBE_LIGHTS", flag(has[2])},
-          {"HV_HAS_SPOT_LIGHTS", flag(has[3])}};
+          {"HV_HAS_SPOT_LIGHTS", flag(has[3])},
+          {"HV_HAS_DIRECTIONAL_LIGHTS", flag(has[4])}};
 }
 
 }  // namespace hv

@@ -291,6 +291,9 @@ HV_LIGHT_SETTER(setConeAngles, glm::vec2 a,
                                           ? std::clamp(a.x, 0.0f, 0.999f * l->outer_cone_angle)
                                           : std::min(before.inner_cone_angle,
                                                      0.999f * l->outer_cone_angle))
+HV_LIGHT_SETTER(setAngularDiameter, float v,
+                l->angular_diameter = std::isfinite(v) ? std::clamp(v, 0.0f, kMaxAngularDiameter)
+                                                       : before.angular_diameter)
 HV_LIGHT_SETTER(setRange, float v, l->range = std::isfinite(v) ? std::max(v, 0.01f) : before.range)
 HV_LIGHT_SETTER(setShadows, bool on, l->shadows = on)
 #undef HV_LIGHT_SETTER

@@ -153,12 +153,24 @@ bool drawLightFields(LightsPanelModel& model, const Light& cur) {
   Light l = cur;
   int type = int(l.type);
   if (nameCombo("type", &type, enumNames<LightType>())) changed |= model.setType(LightType(type));
-  if (ImGui::DragFloat3("position", &l.position.x, 0.02f)) changed |= model.setPosition(l.position);
+  const bool directional = l.type == LightType::Directional;
+  if (!directional && ImGui::DragFloat3("position", &l.position.x, 0.02f)) {
+    changed |= model.setPosition(l.position);
+  }
   if (ImGui::ColorEdit3("color", &l.color.x, ImGuiColorEditFlags_Float)) {
     changed |= model.setColor(l.color);
   }
   if (ImGui::DragFloat("intensity", &l.intensity, 0.1f, 0.0f, 1e4f)) {
     changed |= model.setIntensity(l.intensity);
+  }
+  if (directional) {  // no position, range or radius: a direction and the disk's size
+    if (ImGui::DragFloat3("direction", &l.direction.x, 0.01f, -1.0f, 1.0f)) {
+      changed |= model.setDirection(l.direction);
+    }
+    if (ImGui::DragFloat("angle (rad)", &l.angular_diameter, 0.0005f, 0.0f, kMaxAngularDiameter)) {
+      changed |= model.setAngularDiameter(l.angular_diameter);
+    }
+    return changed;
   }
   if (ImGui::DragFloat("range", &l.range, 0.05f, 0.01f, 1e3f)) changed |= model.setRange(l.range);
   if (l.type != LightType::Point && ImGui::DragFloat("radius", &l.radius, 0.005f, 0.0f, 100.0f)) {
@@ -216,19 +228,22 @@ bool drawLightGenerator(LightsPanelModel& model) {
 bool drawLightsContents(LightsPanelModel& model) {
   bool changed = false;
   ImGui::Text("%zu lights", model.count());
-  bool first = true;
-  for (LightType t : {LightType::Point, LightType::Sphere, LightType::Tube, LightType::Spot}) {
+  int button = 0;
+  for (LightType t : {LightType::Point, LightType::Sphere, LightType::Tube, LightType::Spot,
+                      LightType::Directional}) {
     const std::string label = "+ " + std::string(toString(t));
-    if (!first) ImGui::SameLine();
-    first = false;
+    // Two rows (three, then two): five on one would overflow the panel at 960 x 540.
+    if (button % 3 != 0) ImGui::SameLine();
+    ++button;
     if (ImGui::SmallButton(label.c_str())) {
       model.add(t);
       changed = true;
     }
   }
-  pushLabelColumn({"type", "position", "color", "intensity", "range", "radius", "length", "axis",
-                   "direction", "cone (rad)", "shadows", "shadow filter", "count", "point",
-                   "sphere", "tube", "box min", "box max", "seed"});
+  pushLabelColumn({"type",        "position", "color",         "intensity", "range",
+                   "radius",      "length",   "axis",          "direction", "cone (rad)",
+                   "angle (rad)", "shadows",  "shadow filter", "count",     "point",
+                   "sphere",      "tube",     "box min",       "box max",   "seed"});
   if (model.count() > 0) {
     drawLightTable(model);
     if (const Light* cur = model.current()) {

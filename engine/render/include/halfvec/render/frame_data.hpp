@@ -31,12 +31,15 @@ struct alignas(16) FrameBlock {
 #include "halfvec/shaders/common/frame_block.glsl"
 #undef HV_BLOCK_MEMBER
 };
-static_assert(sizeof(FrameBlock) == 4 * 64 + 5 * 16, "FrameBlock must match std140 layout");
+static_assert(sizeof(FrameBlock) == 4 * 64 + 6 * 16, "FrameBlock must match std140 layout");
 static_assert(offsetof(FrameBlock, viewport) == 4 * 64 + 16);
 static_assert(offsetof(FrameBlock, light_count) == 4 * 64 + 32);
 static_assert(offsetof(FrameBlock, frame_flags) == 4 * 64 + 44);
 static_assert(offsetof(FrameBlock, output) == 4 * 64 + 48);
 static_assert(offsetof(FrameBlock, near_params) == 4 * 64 + 64);
+static_assert(offsetof(FrameBlock, directional_lights) == 4 * 64 + 80);
+static_assert(kMaxDirectionalLights == glm::uvec4::length(),
+              "FrameBlock::directional_lights holds kMaxDirectionalLights indices");
 
 // The material record: hv::GpuMaterial, declared once for C++ and GLSL (gpu_records.glsl, its
 // layout checked in halfvec/shading/gpu_records.hpp). Filled from the scene's material here.

@@ -49,6 +49,10 @@ class GpuScene {
   // What the GPU buffer holds, per light: world-space bounding sphere of the culling (xyz center,
   // w lightCullRadius), for sizing the tile lists on the CPU (Renderer::cullLightsPass).
   const std::vector<glm::vec4>& lightCullSpheres() const { return cull_spheres_; }
+  // FrameBlock::directional_lights: the directional lights' indices + 1, 0 after the last (the
+  // loader allows at most kMaxDirectionalLights; further ones, from a scene built in code, are
+  // not shaded).
+  glm::uvec4 directionalLights() const { return directional_; }
   size_t triangleCount() const { return triangles_; }
   const std::vector<DrawItem>& draws() const { return draws_; }
   // Texture units 0..4 for a material: base color, metal-rough, normal, occlusion, emissive.
@@ -65,6 +69,7 @@ class GpuScene {
   size_t material_stride_ = 0;
   size_t light_count_ = 0;
   std::vector<glm::vec4> cull_spheres_;
+  glm::uvec4 directional_{0u};
   size_t light_capacity_ = 0;
   size_t triangles_ = 0;
   std::map<std::pair<int, bool>, gl::Texture> textures_;

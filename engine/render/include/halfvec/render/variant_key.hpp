@@ -72,6 +72,9 @@ struct VariantKey {
   // compile only these. spot_lights: some light is a spot, whose cone the point and sphere code
   // then contains (HV_HAS_SPOT_LIGHTS).
   bool point_lights = false, sphere_lights = false, tube_lights = false, spot_lights = false;
+  // Some light is directional: the light and forward passes then loop over the frame's
+  // directional lights at every pixel (HV_HAS_DIRECTIONAL_LIGHTS).
+  bool directional_lights = false;
   // Shading models present among the materials drawn. Background (no geometry) is always
   // possible, so it has no flag: the ambient pass always writes it.
   bool unlit = false, default_lit = false;
@@ -100,7 +103,9 @@ struct VariantKey {
   CullingChoice auto_culling;
   bool uber = false;  // every feature compiled in, chosen at run time
 
-  bool hasLights() const { return point_lights || sphere_lights || tube_lights; }
+  bool hasLights() const {
+    return point_lights || sphere_lights || tube_lights || directional_lights;
+  }
   bool hasEnvironment() const { return environment != EnvironmentKind::None; }
   // Whether the ambient pass contains image-based lighting of lit surfaces.
   bool ambientIbl() const { return hasEnvironment() && (default_lit || uber); }

@@ -27,7 +27,7 @@ HV_ENUM_NAMES(ShadingModel, "background", "unlit", "default_lit");
 HV_ENUM_NAMES(Wrap, "repeat", "clamp_to_edge", "mirrored_repeat");
 HV_ENUM_NAMES(Filter, "nearest", "linear");
 HV_ENUM_NAMES(AlphaMode, "opaque", "mask", "blend");
-HV_ENUM_NAMES(LightType, "point", "sphere", "tube", "spot");
+HV_ENUM_NAMES(LightType, "point", "sphere", "tube", "spot", "directional");
 HV_ENUM_NAMES(EnvironmentKind, "none", "uniform", "sky", "hdr");
 
 #undef HV_ENUM_NAMES

@@ -153,7 +153,7 @@ HV_SETTING_ENUM(AoSpecular, HV_AO_SPECULARS);
 enum class SettingFeature : uint8_t {
   Frame,           // always in use (output size, tone mapping, the uber switch)
   Lights,          // any light: the BRDF terms, the falloff, culling
-  SphereLights,    // sphere lights
+  SphereLights,    // sphere lights, and directional lights (shaded as a sphere at infinity)
   TubeLights,      // tube lights
   AmbientIbl,      // an environment lighting a default_lit material
   ShadowedLights,  // a light with `shadows: true`

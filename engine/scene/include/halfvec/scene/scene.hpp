@@ -115,24 +115,40 @@ struct Object {
 };
 
 // Spot: a point (radius 0) or sphere light whose light is restricted to a cone about
-// `direction` (docs/lights.md, "Spot lights").
-enum class LightType : uint8_t { Point = 0, Sphere = 1, Tube = 2, Spot = 3 };
+// `direction` (docs/lights.md, "Spot lights"). Directional: light from a distant disk (the sun)
+// travelling along `direction` (docs/lights.md, "Directional lights").
+enum class LightType : uint8_t { Point = 0, Sphere = 1, Tube = 2, Spot = 3, Directional = 4 };
+
+// A directional light's angular diameter: the sun's mean as seen from the Earth (0.533 degrees),
+// the default; and the largest accepted, a cone of half-angle pi/4, beyond which a "distant disk"
+// is half a sky and the representative-point and LTC methods were not measured.
+constexpr float kSunAngularDiameter = 0.0093f;
+constexpr float kMaxAngularDiameter = 1.5707963f;  // pi / 2
+// Directional lights are not culled per tile: every lit pixel loops over them all, from a list
+// of this many in the frame block (frame_block.glsl, directional_lights).
+constexpr size_t kMaxDirectionalLights = 4;
 
 // Physical meaning of each field: docs/lights.md.
 struct Light {
   LightType type = LightType::Point;
   glm::vec3 position{0.0f};
-  glm::vec3 color{1.0f};    // linear RGB, multiplied by intensity
-  float intensity = 10.0f;  // radiant intensity I (W/sr per unit color); see docs/lights.md
-  float radius = 0.0f;      // sphere radius / tube capsule radius
-  float length = 0.0f;      // tube segment length
+  glm::vec3 color{1.0f};  // linear RGB, multiplied by intensity
+  // radiant intensity I (W/sr per unit color); a directional light's illuminance E at normal
+  // incidence (W/m^2 per unit color); see docs/lights.md
+  float intensity = 10.0f;
+  float radius = 0.0f;               // sphere radius / tube capsule radius
+  float length = 0.0f;               // tube segment length
   glm::vec3 axis{1.0f, 0.0f, 0.0f};  // tube segment direction (normalized on load)
   float range = 10.0f;  // falloff window radius R of Karis eq. 9; also the culling bound
   // Spot: the cone's axis (unit, from the light) and its angles from it in radians, with
   // KHR_lights_punctual's names and defaults; 0 <= inner < outer <= pi/2 (checked on load).
+  // Directional: the direction the light travels (unit).
   glm::vec3 direction{0.0f, -1.0f, 0.0f};
   float inner_cone_angle = 0.0f;
   float outer_cone_angle = 0.78539816f;  // pi / 4
+  // Directional: the full angle the disk subtends, radians, in [0, kMaxAngularDiameter]; 0 is a
+  // single direction. The default is the sun's mean (about 0.53 degrees).
+  float angular_diameter = kSunAngularDiameter;
   // Casts shadows: an omnidirectional shadow map (docs/lights.md, "Shadows").
   bool shadows = false;
 };

@@ -26,9 +26,9 @@ inline const GpuLight& toGlsl(const GpuLight& g) {
   return g;
 }
 
-// Defines HV_HAS_POINT_LIGHTS / HV_HAS_SPHERE_LIGHTS / HV_HAS_TUBE_LIGHTS / HV_HAS_SPOT_LIGHTS
-// ("0"/"1") for the light shapes present (a spot counts as its shape and as a spot), so a scene
-// without tubes compiles no tube code and one without spots no cone.
+// Defines HV_HAS_POINT_LIGHTS / HV_HAS_SPHERE_LIGHTS / HV_HAS_TUBE_LIGHTS / HV_HAS_SPOT_LIGHTS /
+// HV_HAS_DIRECTIONAL_LIGHTS ("0"/"1") for the light shapes present (a spot counts as its shape
+// and as a spot), so a scene without tubes compiles no tube code and one without spots no cone.
 std::vector<std::pair<std::string, std::string>> lightTypeDefines(const std::vector<Light>& lights);
 
 }  // namespace hv

@@ -118,6 +118,7 @@ class LightsPanelModel {
   bool setAxis(glm::vec3 a);
   bool setDirection(glm::vec3 d);
   bool setConeAngles(glm::vec2 inner_outer);  // radians
+  bool setAngularDiameter(float v);           // radians, in [0, kMaxAngularDiameter]
   bool setRange(float v);
   bool setShadows(bool on);  // the light casts shadows (a shadow map)
   // The scene's settings.shadow_filter (the filter of every shadowed light).
