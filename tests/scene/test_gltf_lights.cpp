@@ -1,6 +1,6 @@
-// KHR_lights_punctual import: point and spot lights placed by a rotated, scaled and translated
-// node under a turned model, candela to I, the range rule, the one warning for directional
-// lights, errors naming the element, and the order of a scene file's lights (docs/gltf.md,
+// KHR_lights_punctual import: point, spot and directional lights placed by a rotated, scaled and
+// translated node under a turned model, candela and lux to I and E, the range rule, errors naming
+// the element, the directional budget, and the order of a scene file's lights (docs/gltf.md,
 // "Lights").
 #include <gtest/gtest.h>
 
@@ -67,7 +67,7 @@ std::string writeGltf(const json& j, const std::string& name) {
 
 }  // namespace
 
-TEST(GltfLights, PointAndSpotFromTheNodesWorldTransform) {
+TEST(GltfLights, PointSpotAndDirectionalFromTheNodesWorldTransform) {
   hv::Scene scene;
   std::vector<std::string> warnings;
   hv::GltfOptions opt;
@@ -75,7 +75,7 @@ TEST(GltfLights, PointAndSpotFromTheNodesWorldTransform) {
   // The file's transform (a turn of 90 degrees about +Y) composes with the nodes'.
   const glm::mat4 t = glm::mat4_cast(glm::angleAxis(kPi / 2.0f, glm::vec3(0, 1, 0)));
   hv::loadGltf(writeGltf(litQuad(), "lights.gltf"), t, scene, opt);
-  ASSERT_EQ(scene.lights.size(), 2u);  // the directional light is not imported
+  ASSERT_EQ(scene.lights.size(), 3u);
   const hv::Light& p = scene.lights[0];
   EXPECT_EQ(p.type, hv::LightType::Point);
   expectNear(p.position, glm::vec3(t * glm::vec4(1, 2, 3, 1)), 1e-5f);
@@ -95,10 +95,48 @@ TEST(GltfLights, PointAndSpotFromTheNodesWorldTransform) {
   // No range: where I / d^2 falls to 0.01, sqrt(100 / 0.01) = 100 m.
   EXPECT_FLOAT_EQ(s.range, 100.0f);
   EXPECT_FLOAT_EQ(hv::gltfInfiniteRange({1.0f, 0.5f, 0.25f}, 20.0f), std::sqrt(2000.0f));
-  // One warning, naming the directional light; none for the extension itself.
+  // The directional light: lux -> E one to one, the node's local -Z under the file's turn (-X),
+  // a single direction (the extension's lights have no size), no range.
+  const hv::Light& d = scene.lights[2];
+  EXPECT_EQ(d.type, hv::LightType::Directional);
+  EXPECT_EQ(d.intensity, 3.0f);
+  expectNear(d.direction, glm::vec3(t * glm::vec4(0, 0, -1, 0)), 1e-6f);
+  expectNear(d.direction, {-1, 0, 0}, 1e-6f);
+  EXPECT_EQ(d.angular_diameter, 0.0f);
+  EXPECT_FALSE(d.shadows);
+  EXPECT_TRUE(warnings.empty()) << warnings[0];
+}
+
+// More directional light instances than every pixel shades (kMaxDirectionalLights): the first
+// ones are imported, one warning names the first left out; with a scene file's own directional
+// lights the total is an error naming the objects.
+TEST(GltfLights, DirectionalLightsBeyondTheBudgetWarnOrFail) {
+  json j = litQuad();
+  for (size_t i = 0; i < hv::kMaxDirectionalLights; ++i) {
+    j["nodes"].push_back({{"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}});
+    j["scenes"][0]["nodes"].push_back(j["nodes"].size() - 1);
+  }
+  hv::Scene scene;
+  std::vector<std::string> warnings;
+  hv::GltfOptions opt;
+  opt.warnings = &warnings;
+  hv::loadGltf(writeGltf(j, "suns.gltf"), glm::mat4(1.0f), scene, opt);
+  size_t directional = 0;
+  for (const hv::Light& l : scene.lights) directional += l.type == hv::LightType::Directional;
+  EXPECT_EQ(directional, hv::kMaxDirectionalLights);
   ASSERT_EQ(warnings.size(), 1u);
-  EXPECT_NE(warnings[0].find("directional"), std::string::npos) << warnings[0];
-  EXPECT_NE(warnings[0].find("lights[2]"), std::string::npos) << warnings[0];
+  EXPECT_NE(warnings[0].find("kMaxDirectionalLights"), std::string::npos) << warnings[0];
+  EXPECT_NE(warnings[0].find("nodes[8]"), std::string::npos) << warnings[0];
+  const std::string text = R"({"objects": [{"gltf": ")" + writeGltf(j, "suns2.gltf") + R"("}],
+      "lights": [{"type": "directional"}]})";
+  try {
+    hv::parseScene(json::parse(text), "suns.json", &warnings);
+    ADD_FAILURE() << "five directional lights loaded";
+  } catch (const hv::SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("suns.json: /objects: 5 directional lights"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(GltfLights, BadLightsAreErrorsNamingThem) {
@@ -133,8 +171,9 @@ TEST(GltfLights, SceneFileKeepsItsOwnLightsFirst) {
       "lights": [{"type": "sphere", "position": [0, 1, 0]}]})";
   std::vector<std::string> warnings;
   const hv::Scene s = hv::parseScene(json::parse(text), "with_model.json", &warnings);
-  ASSERT_EQ(s.lights.size(), 3u);
+  ASSERT_EQ(s.lights.size(), 4u);
   EXPECT_EQ(s.lights[0].type, hv::LightType::Sphere);  // /lights/0 stays scene.lights[0]
   EXPECT_EQ(s.lights[1].type, hv::LightType::Point);
   EXPECT_EQ(s.lights[2].type, hv::LightType::Spot);
+  EXPECT_EQ(s.lights[3].type, hv::LightType::Directional);
 }

@@ -1,5 +1,6 @@
-// KHR_lights_punctual: the point and spot lights of the nodes (docs/gltf.md, "Lights"). The
-// engine's units and the conversion: docs/lights.md, "Spot lights" and "glTF lights".
+// KHR_lights_punctual: the point, spot and directional lights of the nodes (docs/gltf.md,
+// "Lights"). The engine's units and the conversion: docs/lights.md, "Spot lights" and "glTF
+// lights".
 #include <algorithm>
 #include <cmath>
 
@@ -32,8 +33,8 @@ constexpr double kHalfPi = 1.5707963267948966;
 }  // namespace
 
 // The light a node holds (its extensions.KHR_lights_punctual.light), placed by the node's world
-// transform: position its origin, a spot's direction its local -Z (KHR_lights_punctual,
-// "Adding Light Instances to Nodes"). Directional lights are not imported (one warning).
+// transform: position its origin, a spot's or a directional light's direction its local -Z
+// (KHR_lights_punctual, "Adding Light Instances to Nodes").
 void Importer::importNodeLight(const tinygltf::Node& n, const glm::mat4& world,
                                const std::string& el) {
   const auto ext = n.extensions.find("KHR_lights_punctual");
@@ -48,14 +49,7 @@ void Importer::importNodeLight(const tinygltf::Node& n, const glm::mat4& world,
   }
   const tinygltf::Light& g = m_.lights[size_t(index)];
   const std::string gel = "extensions.KHR_lights_punctual.lights[" + std::to_string(index) + "]";
-  if (g.type == "directional") {
-    warnOnce("directional light",
-             gel +
-                 ": directional lights are not supported; ignored (every directional light of "
-                 "the file; the model renders without them)");
-    return;
-  }
-  if (g.type != "point" && g.type != "spot") {
+  if (g.type != "point" && g.type != "spot" && g.type != "directional") {
     fail(gel + ".type", "expected \"point\", \"spot\" or \"directional\", got \"" + g.type + "\"");
   }
   if (lights.size() >= kMaxSceneLights) {
@@ -63,7 +57,9 @@ void Importer::importNodeLight(const tinygltf::Node& n, const glm::mat4& world,
          "more than " + std::to_string(kMaxSceneLights) + " light instances (kMaxSceneLights)");
   }
   Light l;
-  l.type = g.type == "spot" ? LightType::Spot : LightType::Point;
+  l.type = g.type == "spot"          ? LightType::Spot
+           : g.type == "directional" ? LightType::Directional
+                                     : LightType::Point;
   l.position = glm::vec3(world[3]);
   if (!g.color.empty()) {
     if (g.color.size() != 3) fail(gel + ".color", "expected 3 numbers");
@@ -72,9 +68,32 @@ void Importer::importNodeLight(const tinygltf::Node& n, const glm::mat4& world,
       if (l.color[k] < 0.0f) fail(gel + ".color", "expected values >= 0");
     }
   }
-  // Candela (lm/sr) to the engine's I, one to one (docs/lights.md, "glTF lights").
+  // Candela (lm/sr) to the engine's I, and lux (lm/m^2) of a directional light to its E, one to
+  // one (docs/lights.md, "glTF lights").
   l.intensity = finite(g.intensity, gel + ".intensity");
   if (l.intensity < 0.0f) fail(gel + ".intensity", "expected a value >= 0");
+  if (l.type == LightType::Directional) {
+    // The extension's directional light is a single direction, its local -Z (range does not
+    // apply to it): angular diameter 0, as the glTF viewers shade it.
+    const glm::vec3 d = glm::mat3(world) * glm::vec3(0.0f, 0.0f, -1.0f);
+    if (!(glm::length(d) > 1e-20f)) {
+      warnOnce("directional singular", lel +
+                                           ": a singular transform gives the directional light "
+                                           "no direction; not imported (nor any other such light)");
+      return;
+    }
+    const auto directional = [](const Light& x) { return x.type == LightType::Directional; };
+    if (size_t(std::count_if(lights.begin(), lights.end(), directional)) >= kMaxDirectionalLights) {
+      warnOnce("directional budget", lel + ": more than " + std::to_string(kMaxDirectionalLights) +
+                                         " directional light instances (kMaxDirectionalLights); "
+                                         "this one and any further ones not imported");
+      return;
+    }
+    l.direction = glm::normalize(d);
+    l.angular_diameter = 0.0f;
+    lights.push_back(l);
+    return;
+  }
   const float range = finite(g.range, gel + ".range");
   if (range < 0.0f) fail(gel + ".range", "expected a value > 0 (or none: infinite)");
   l.range = range > 0.0f ? std::max(range, 1e-4f) : gltfInfiniteRange(l.color, l.intensity);
