@@ -268,6 +268,30 @@ std::string sphereMarkdown(const eval::SphereAccuracy& a) {
   return md.str();
 }
 
+std::string directionalMarkdown(const eval::SphereAccuracy& a) {
+  std::ostringstream md;
+  double noise_spec = 0.0;
+  for (const SphereSweepRow& r : a.rows) {
+    if (r.specular[0].valid) noise_spec = std::max(noise_spec, r.specular[0].noise);
+  }
+  md << "## Directional lights\n\n"
+     << "The sphere sweep with the sphere replaced by a directional light whose disk subtends the "
+        "same cone: angular radius sigma = asin(r/d), illuminance 1 at normal incidence, centered "
+        "at elevation e (docs/lights.md, \"Directional lights\"). The tables' r/d is sin(sigma); "
+        "the first column is the sun's (angular diameter "
+     << fmtNum("%.4f", kSunAngularDiameter)
+     << " rad). The engine shades the disk with the sphere's code, so where r/d is also a column "
+        "of the sphere section its errors are the sphere's. Reference: "
+     << a.grid.samples << " + " << a.grid.samples << " samples per view. " << a.rows.size()
+     << " configurations, " << fmtNum("%.1f", a.seconds)
+     << " s. Reference noise, worst configuration: specular " << pct(noise_spec) << ".\n\n";
+  for (int m : {eval::kSphereRp, eval::kSphereLtc, eval::kSphereRpPlain}) {
+    md << sphereMethodTable(a, m);
+  }
+  md << sphereStraddlingTable(a) << sphereDiffuseTable(a);
+  return md.str();
+}
+
 std::string tubeMarkdown(const eval::TubeAccuracy& a) {
   std::ostringstream md;
   double max_noise = 0.0;

@@ -30,6 +30,7 @@ tables to a markdown file, with heat maps in a folder next to it (<out stem>/*.p
   - sphere lights: representative point with/without the (alpha/alpha')^2 normalization, ltc,
     both sphere-diffuse modes, over roughness x radius/distance x elevation (per shading
     configuration, on the CPU: the engine's formula vs the integral over the emitter);
+  - directional lights: the same sweep with a disk of the sphere's cone, from the sun's size;
   - tube lights: eq. 19 vs eq. 18, with/without normalization, ltc; karis_eq16 and ltc diffuse,
     over roughness x length x radius x orientation;
   - the ltc modes with another V or D term than the fitted lobe's;
@@ -45,7 +46,8 @@ Options:
   --quick           small grids and images, few samples (a smoke test; seconds)
   --threads N       CPU threads (default: all cores)
   --only SECTION    measure and write only that section (minutes, not hours): shadows (the
-                    shadow filters against the traced reference) or occlusion (screen-space AO)
+                    shadow filters against the traced reference), occlusion (screen-space AO)
+                    or directional (the directional-light sweep)
   -h, --help        this text
 )";
 
@@ -68,8 +70,9 @@ Options parseArgs(const Args& args) {
       o.eval.threads = intInRange(a, optionValue(args, i), 0, 4096);
     } else if (a == "--only") {
       o.only = optionValue(args, i);
-      if (o.only != "shadows" && o.only != "occlusion") {
-        throw UsageError{"--only: expected 'shadows' or 'occlusion', got '" + o.only + "'"};
+      if (o.only != "shadows" && o.only != "occlusion" && o.only != "directional") {
+        throw UsageError{"--only: expected 'shadows', 'occlusion' or 'directional', got '" +
+                         o.only + "'"};
       }
     } else {
       throw UsageError{"unknown argument '" + a + "'"};
@@ -93,6 +96,7 @@ Options parseArgs(const Args& args) {
 struct Measured {
   eval::PointLightAccuracy point;
   eval::SphereAccuracy sphere;
+  eval::SphereAccuracy directional;
   eval::TubeAccuracy tube;
   eval::AmbientAccuracy ambient;
   eval::ShadowAccuracy shadows;
@@ -113,10 +117,17 @@ Measured measure(const eval::AccuracyOptions& o, const std::string& only) {
     m.occlusion = eval::measureOcclusion(o);
     return m;
   }
+  if (only == "directional") {
+    step("directional lights");
+    m.directional = eval::measureDirectionalLights(o);
+    return m;
+  }
   step("point lights");
   m.point = eval::measurePointLights(o);
   step("sphere lights");
   m.sphere = eval::measureSphereLights(o);
+  step("directional lights");
+  m.directional = eval::measureDirectionalLights(o);
   step("tube lights");
   m.tube = eval::measureTubeLights(o);
   step("ambient");
@@ -153,10 +164,15 @@ std::string document(const Options& o, const Measured& m, double secs, const std
     md << occlusionMarkdown(m.occlusion);
     return md.str();
   }
+  if (o.only == "directional") {
+    md << directionalMarkdown(m.directional);
+    return md.str();
+  }
   md << summaryMarkdown(m.sphere, m.tube, m.point, m.ambient) << pointLightMarkdown(m.point)
-     << sphereMarkdown(m.sphere) << tubeMarkdown(m.tube) << otherBrdfMarkdown(m.sphere, m.tube)
-     << ambientMarkdown(m.ambient) << shadowsMarkdown(m.shadows)
-     << scenesMarkdown(m.scenes, fs::path(o.out).stem().string()) << occlusionMarkdown(m.occlusion);
+     << sphereMarkdown(m.sphere) << directionalMarkdown(m.directional) << tubeMarkdown(m.tube)
+     << otherBrdfMarkdown(m.sphere, m.tube) << ambientMarkdown(m.ambient)
+     << shadowsMarkdown(m.shadows) << scenesMarkdown(m.scenes, fs::path(o.out).stem().string())
+     << occlusionMarkdown(m.occlusion);
   return md.str();
 }
 

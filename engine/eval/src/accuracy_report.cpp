@@ -331,6 +331,30 @@ SphereAccuracy measureSphereLights(const AccuracyOptions& o) {
   return a;
 }
 
+SphereAccuracy measureDirectionalLights(const AccuracyOptions& o) {
+  SphereAccuracy a;
+  a.grid.threads = o.threads;
+  a.grid.directional = true;
+  // sin(sigma): the sun's (angular diameter kSunAngularDiameter), then disks of 5.7, 29 and 60
+  // degrees.
+  const float sun = std::sin(0.5f * kSunAngularDiameter);
+  if (o.quick) {
+    a.grid.roughness = {0.1f, 0.5f};
+    a.grid.radius = {sun, 0.25f};
+    a.grid.elevation_deg = {45.0f, 5.0f};
+    a.grid.samples = 256;
+  } else {
+    a.grid.roughness = {0.05f, 0.1f, 0.2f, 0.35f, 0.5f, 1.0f};
+    a.grid.radius = {sun, 0.05f, 0.25f, 0.5f};
+    a.grid.elevation_deg = {90.0f, 45.0f, 15.0f, 5.0f, 0.0f};
+    a.grid.samples = 4096;
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  a.rows = sweepSphere(a.grid);
+  a.seconds = secondsSince(t0);
+  return a;
+}
+
 TubeAccuracy measureTubeLights(const AccuracyOptions& o) {
   TubeAccuracy a;
   a.grid.threads = o.threads;

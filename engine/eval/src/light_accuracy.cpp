@@ -346,10 +346,12 @@ std::vector<SphereSweepRow> sweepSphere(const SphereSweepGrid& g) {
   const auto& sm = sphereSpecularMethods();
   detail::parallelFor(int(rows.size()), g.threads, [&](int i) {
     SphereSweepRow& row = rows[size_t(i)];
-    Light light = whiteLight(LightType::Sphere);
+    Light light = whiteLight(g.directional ? LightType::Directional : LightType::Sphere);
     const glm::vec3 dir = dirFromElevation(float(row.elevation_deg * kPi / 180.0), 0.0f);
     light.position = dir;  // distance 1
     light.radius = row.radius;
+    light.direction = -dir;  // a directional light: travelling toward the shading point
+    light.angular_diameter = 2.0f * std::asin(std::min(row.radius, 1.0f));
     const float alpha = lobeAlpha(row.roughness);
     const auto views = sweepViews(dir, 2.0f * alpha + std::asin(std::min(row.radius, 1.0f)));
     const References ref = referencesAtViews(light, views, row.roughness, g.samples,

@@ -49,6 +49,9 @@ struct SphereAccuracy {
   double seconds = 0.0;
 };
 SphereAccuracy measureSphereLights(const AccuracyOptions& o);
+// Directional lights: the sphere sweep with a disk of angular radius asin(r) (grid.directional),
+// from the sun's size to wide disks.
+SphereAccuracy measureDirectionalLights(const AccuracyOptions& o);
 struct TubeAccuracy {
   TubeSweepGrid grid;
   std::vector<TubeSweepRow> rows;

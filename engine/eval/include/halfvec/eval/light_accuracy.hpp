@@ -118,6 +118,10 @@ struct SphereSweepGrid {
   int samples = 2048;
   uint64_t seed = 1;
   int threads = 0;
+  // The light is a directional light whose disk subtends the sphere's cone (angular radius
+  // asin(radius)) instead of the sphere at distance 1, with illuminance 1 at normal incidence
+  // (docs/lights.md, "Directional lights": the same cone, the same code).
+  bool directional = false;
 };
 struct SphereSweepRow {
   float roughness = 0.0f, radius = 0.0f, elevation_deg = 0.0f;
