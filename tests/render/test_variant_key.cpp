@@ -424,6 +424,19 @@ TEST(VariantKey, AutoCullingBruteForceOnlyBelowTheCrossover) {
   EXPECT_EQ(d.at("HV_CULLING_BRUTE_FORCE").value, "0");
   EXPECT_NE(d.at("HV_CULLING_BRUTE_FORCE").why.find("auto: tiled"), std::string::npos);
 
+  // Directional lights are in no tile list: they do not count, and with nothing else to cull
+  // there is no culling pass.
+  Light sun;
+  sun.type = LightType::Directional;
+  s.lights = around(int(kAutoCullingMaxLights) + 1);
+  s.lights.push_back(sun);
+  EXPECT_EQ(chooseCulling(s).lights, kAutoCullingMaxLights + 1);
+  s.lights = {sun, sun};
+  c = chooseCulling(s);
+  EXPECT_EQ(c.lights, 0u);
+  EXPECT_EQ(c.culling, Culling::BruteForce);
+  EXPECT_NE(c.why.find("directional lights only"), std::string::npos) << c.why;
+
   // An off-screen light costs brute force an evaluation per pixel that culling saves.
   ASSERT_LT(kAutoCullingSavedLights, 1.0);
   s.lights = behind(1);

@@ -213,15 +213,26 @@ RenderSettings canonicalSettings(const RenderSettings& s, const VariantKey& key)
 
 CullingChoice chooseCulling(const Scene& scene) {
   CullingChoice c;
-  c.lights = scene.lights.size();
+  // Directional lights are in no tile list (every lit pixel shades them either way): only the
+  // other lights count.
+  const size_t directional =
+      size_t(std::count_if(scene.lights.begin(), scene.lights.end(),
+                           [](const Light& l) { return l.type == LightType::Directional; }));
+  c.lights = scene.lights.size() - directional;
   if (c.lights == 0) {
-    c.why = "no lights";
+    if (directional) {  // no culling pass: the brute-force loop shades them at every pixel
+      c.culling = Culling::BruteForce;
+      c.why = "no lights to cull (directional lights only: every pixel shades them)";
+    } else {
+      c.why = "no lights";
+    }
     return c;
   }
   const FrameBlock f = makeFrameBlock(scene, scene.settings.width, scene.settings.height);
   const glm::ivec2 tiles(f.viewport.z, f.viewport.w);
   double covered = 0.0;
   for (const Light& l : scene.lights) {
+    if (l.type == LightType::Directional) continue;
     const glm::vec4 sphere = glsl::lightCullSphere(toGlsl(packLight(l)));
     const glm::vec3 center = glm::vec3(f.view * glm::vec4(glm::vec3(sphere), 1.0f));
     glm::ivec4 r;
