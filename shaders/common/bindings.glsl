@@ -10,6 +10,7 @@
 #define HV_UBO_ENVIRONMENT 1  // EnvironmentBlock (ambient.comp): SH9, mip count, presence
 #define HV_UBO_MATERIAL 2     // MaterialBlock (material.glsl): the draw's material, bound per draw
 #define HV_UBO_CULL_BATCH 3   // light culling: the dispatch's CullBatch (cull_layout.glsl)
+#define HV_UBO_SUN_SHADOWS 4  // light and forward passes: the directional lights' shadow maps
 
 // ---- Storage buffers ---------------------------------------------------------------------------
 // At most 8 binding points (0..7: GL 4.5's minimum of GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS), so a
@@ -57,6 +58,10 @@
 #define HV_UNIT_FORWARD_RADIANCE 10
 #define HV_UNIT_FORWARD_ENV_BRDF 11
 #define HV_UNIT_FORWARD_IRRADIANCE 12
+// Light and forward passes with a shadowed directional light: its orthographic maps (a 2D depth
+// array), raw depth and with depth comparison (shadows.glsl, sunShadowVisibility).
+#define HV_UNIT_SUN_SHADOW_DEPTH 13
+#define HV_UNIT_SUN_SHADOW_COMPARE 14
 // Tone map: the HDR target.
 #define HV_UNIT_HDR 0
 // G-buffer pass: a material's textures on units HV_UNIT_MATERIAL_TEXTURES + 0..4 (base color,

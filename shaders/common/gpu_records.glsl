@@ -50,6 +50,19 @@ struct GpuLight {
                          //    by the shadow pass (engine/render/src/shadow_pass.cpp)
 };
 
+// One directional light's shadow map as the lookup reads it (shadows.glsl, sunShadowVisibility):
+// an orthographic map along the light's travel direction over the casters' bounds, layer
+// shadow_cube - 1 of the sun map array (engine/render/src/shadow_pass.cpp). A point P maps to
+// uv = (dot(P - origin, right), dot(P - origin, up)) / extent + 0.5 and depth dot(P - origin,
+// forward) / range; std140 uniform block HV_UBO_SUN_SHADOWS, kMaxDirectionalLights of them, 64
+// bytes each. Offsets in bytes on the right.
+struct GpuSunShadow {
+  vec4 origin_inv_range;  //  0 xyz the map's center on its near plane, w 1 / range (m)
+  vec4 right_inv_extent;  // 16 xyz unit across the light, w 1 / extent (the square's side, m)
+  vec4 up_texel;          // 32 xyz unit across the light, w one texel's side (m)
+  vec4 forward_tan;       // 48 xyz unit, the light's travel direction, w tan(angular radius)
+};
+
 // ---- Materials ----------------------------------------------------------------------------------
 // GpuMaterial::texture_bits
 #define HV_MAT_BASE_COLOR_TEX 1u

@@ -489,6 +489,13 @@ vec4 lightCullSphere(GpuLight light) {
 // radius, axis and length size PCSS's penumbra. Multiplies the light's whole contribution, diffuse and specular
 // (light_shade.comp).
 vec4 lightShadow(GpuLight l, vec3 P[HV_SHADOW_RECEIVERS], vec3 N[HV_SHADOW_RECEIVERS], bvec4 use) {
+#if HV_HAS_DIRECTIONAL_LIGHTS
+  // A directional light's map is orthographic (sunShadowVisibility); the branch is uniform (one
+  // light for the whole invocation).
+  if (lightType(l) == HV_LIGHT_DIRECTIONAL) {
+    return sunShadowVisibility(float(l.shadow_cube) - 1.0f, P, N, use);
+  }
+#endif
   float len = l.axis_length.w;
 #if HV_HAS_SPOT_LIGHTS
   // A spot's axis_length is its cone: its emitter is its point or sphere (length 0), and its map

@@ -12,6 +12,7 @@
 #ifndef HV_SHADOWS_GLSL
 #define HV_SHADOWS_GLSL
 
+#include "gpu_records.glsl"
 #include "math.glsl"
 #include "sampling.glsl"
 #include "setting_values.glsl"
@@ -269,6 +270,101 @@ vec4 shadowVisibility(vec3 Lpos, float far, float layer, float radius, vec3 axis
         int filters = blocker_far > 0.0f ? 1 : 0;
         for (int f = 0; f < filters; ++f) {
           vis[j] = shadowPcfDisk(r, radii, far, inv_far, layer, HV_PCSS_FILTER_TAPS * lookup);
+        }
+      }
+#endif
+    }
+  }
+  return vis;
+}
+
+// ---- Directional lights: orthographic maps (docs/lights.md, "Directional lights") -------------
+// One map per shadowed directional light, layer shadow_cube - 1 of a 2D depth array, rendered
+// along the light's travel direction over the casters' bounds (GpuSunShadow, gpu_records.glsl):
+// each texel holds the depth along that direction over the map's range. Raw depths (nearest) and
+// with depth comparison (bilinear), as the atlas.
+layout(binding = HV_UNIT_SUN_SHADOW_DEPTH) uniform sampler2DArray t_sun_depth;
+layout(binding = HV_UNIT_SUN_SHADOW_COMPARE) uniform sampler2DArrayShadow t_sun_compare;
+layout(std140, binding = HV_UBO_SUN_SHADOWS) uniform SunShadowBlock {
+  GpuSunShadow u_sun_shadows[4];  // hv::kMaxDirectionalLights
+};
+// The widest PCSS filter of a directional light's map, in texels (a receiver far below its
+// blocker under a wide disk would otherwise average half the map).
+const float HV_SUN_MAX_FILTER_TEXELS = 24.0f;
+
+// Visibility of directional light map `layer` (< 0: none; lit) at the receivers P[j], normals
+// N[j] (`use[j]` false: not needed). The same filters as shadowVisibility with the geometry of a
+// parallel projection: a tap's offset is metres across the light, the receiver plane's depth
+// changes along it by -(N.right, N.up) / N.forward per metre (receiver-plane depth), the bias
+// is the atlas's in texels of this map, and PCSS's penumbra is Fernando 2005 eq. 1 for a light
+// at infinity: w = (z_receiver - z_blocker) tan(sigma), the emitter's angular radius sigma. The
+// blocker search covers the widest penumbra a blocker between the map's near plane and the
+// receiver casts, z_receiver tan(sigma). A receiver outside the map's square (no caster above
+// it) is lit.
+vec4 sunShadowVisibility(float layer, vec3 P[HV_SHADOW_RECEIVERS], vec3 N[HV_SHADOW_RECEIVERS],
+                         bvec4 use) {
+  vec4 vis = vec4(1.0f);
+  int lookups = layer >= 0.0f ? 1 : 0;
+  for (int k = 0; k < lookups; ++k) {
+    GpuSunShadow m = u_sun_shadows[int(layer)];
+    vec3 F = vec3(m.forward_tan);
+    vec3 Rt = vec3(m.right_inv_extent);
+    vec3 U = vec3(m.up_texel);
+    float texel = m.up_texel.w;
+    float inv_extent = m.right_inv_extent.w;
+    float range = 1.0f / m.origin_inv_range.w;
+    float tan_sigma = m.forward_tan.w;
+    for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
+      vec3 q = P[j] + N[j] * (HV_SHADOW_NORMAL_OFFSET * texel) - vec3(m.origin_inv_range);
+      vec2 uv = vec2(dot(q, Rt), dot(q, U)) * inv_extent + 0.5f;
+      float z = dot(q, F) / range;  // the receiver's depth in the map's units
+      float nf = dot(N[j], F);      // < 0 on the lit side
+      vec2 grad = clamp(-vec2(dot(N[j], Rt), dot(N[j], U)) / min(nf, -1e-4f),
+                        vec2(-HV_SHADOW_MAX_SLOPE), vec2(HV_SHADOW_MAX_SLOPE)) / range;
+      float bias = shadowDepthBias(1.0f, abs(nf)) / shadowTexelAngle() * texel / range;
+      bool inside = all(greaterThanEqual(uv, vec2(0.0f))) && all(lessThanEqual(uv, vec2(1.0f)));
+      int lookup = use[j] && inside ? 1 : 0;
+#if HV_SHADOW_FILTER == HV_SHADOW_FILTER_HARD
+      for (int i = 0; i < lookup; ++i) {
+        vis[j] = step(z - bias, textureLod(t_sun_depth, vec3(uv, layer), 0.0f).r);
+      }
+#elif HV_SHADOW_FILTER == HV_SHADOW_FILTER_PCF
+      for (int i = 0; i < lookup; ++i) {
+        float lit = 0.0f;
+        for (int t = 0; t < 4 * lookup; ++t) {
+          vec2 o = pcfTap(t) * (HV_SHADOW_PCF_RADIUS * texel);  // metres
+          lit += texture(t_sun_compare, vec4(uv + o * inv_extent, layer, z + dot(grad, o) - bias));
+        }
+        vis[j] = 0.25f * lit;
+      }
+#else
+      for (int i = 0; i < lookup; ++i) {
+        // Blocker search (step 1): the farthest blocker nearer than the receiver, as for the
+        // other lights (shadowVisibility says why).
+        float search = clamp(z * range * tan_sigma, HV_SHADOW_PCF_RADIUS * texel,
+                             HV_SUN_MAX_FILTER_TEXELS * texel);
+        float blocker = 0.0f;  // depth; 0: no blocker
+        vec2 rot = vec2(1.0f, 0.0f);
+        for (int g = 0; g < HV_PCSS_SEARCH_GATHERS * lookup; ++g) {
+          vec2 o = sqrt((float(g) + 0.5f) / float(HV_PCSS_SEARCH_GATHERS)) * search * rot;
+          rot = vogelNext(rot);
+          vec4 zt = textureGather(t_sun_depth, vec3(uv + o * inv_extent, layer));
+          vec4 zb = zt * step(zt, vec4(z + dot(grad, o) - bias));
+          blocker = max(blocker, max(max(zb.x, zb.y), max(zb.z, zb.w)));
+        }
+        // Penumbra (step 2), metres, at least PCF's radius; then the filter (step 3).
+        float radius = clamp(max(z - blocker, 0.0f) * range * tan_sigma,
+                             HV_SHADOW_PCF_RADIUS * texel, HV_SUN_MAX_FILTER_TEXELS * texel);
+        int filters = blocker > 0.0f ? 1 : 0;
+        for (int f = 0; f < filters; ++f) {
+          float lit = 0.0f;
+          rot = vec2(1.0f, 0.0f);
+          for (int t = 0; t < HV_PCSS_FILTER_TAPS * lookup; ++t) {
+            vec2 o = sqrt((float(t) + 0.5f) / float(HV_PCSS_FILTER_TAPS)) * radius * rot;
+            rot = vogelNext(rot);
+            lit += texture(t_sun_compare, vec4(uv + o * inv_extent, layer, z + dot(grad, o) - bias));
+          }
+          vis[j] = lit / float(HV_PCSS_FILTER_TAPS);
         }
       }
 #endif

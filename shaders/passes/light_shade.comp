@@ -105,9 +105,12 @@ vec3 probeLight(GpuLight l) { return l.color_inv_range.rgb * step(0.0, l.positio
 #define HV_EVAL_SPHERE(l, j) evaluateSphereLightAt(l, s[j], sp[j])
 #define HV_EVAL_TUBE(l, j) evaluateTubeLightAt(l, s[j], sp[j])
 #endif
-// Directional lights have no shadow map (docs/lights.md, "Directional lights").
 #ifndef HV_EVAL_DIRECTIONAL
+#if HV_SHADOWS
+#define HV_EVAL_DIRECTIONAL(l, j) (evaluateDirectionalLightAt(l, s[j], sp[j]) * vis[j])
+#else
 #define HV_EVAL_DIRECTIONAL(l, j) evaluateDirectionalLightAt(l, s[j], sp[j])
+#endif
 #endif
 
 #ifndef HV_SHADOW_OF
@@ -221,6 +224,7 @@ void main() {
     uint d = u_directional_lights[k];
     if (d == 0u) break;
     GpuLight l = lights[d - 1u];
+    HV_SHADOW_OF(l);
     for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += HV_EVAL_DIRECTIONAL(l, j);
   }
 #endif

@@ -45,5 +45,10 @@ void main() {
 #if HV_SHADOW_ALPHA_MASK
   if (baseAlpha() < u_material.alpha_cutoff) discard;
 #endif
+#ifndef HV_SHADOW_ORTHO
+  // A cube face: the distance from the light's center over far (a perspective depth would not
+  // match across faces).
   gl_FragDepth = length(v_world - u_light.xyz) * u_light.w;
+#endif
+  // HV_SHADOW_ORTHO (a directional light's map): the rasterized depth, linear along the light.
 }

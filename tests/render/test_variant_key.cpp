@@ -178,7 +178,7 @@ TEST(VariantKey, SpotIsItsShapeAndItsCone) {
 
 // A directional light compiles its own loop and evaluation (HV_HAS_DIRECTIONAL_LIGHTS) and no
 // other light type; it keeps the sphere settings, which govern it (a sphere at infinity), and
-// draws no shadow map (shadows: true leaves HV_SHADOWS off).
+// with shadows: true compiles the shadow lookup (its orthographic map).
 TEST(VariantKey, DirectionalKeepsTheSphereSettings) {
   Material a;
   Scene s = sceneWith({a});
@@ -191,7 +191,7 @@ TEST(VariantKey, DirectionalKeepsTheSphereSettings) {
   VariantKey k = deriveVariantKey(s);
   EXPECT_TRUE(k.directional_lights && k.hasLights());
   EXPECT_FALSE(k.point_lights || k.sphere_lights || k.tube_lights || k.spot_lights);
-  EXPECT_FALSE(k.shadows);
+  EXPECT_TRUE(k.shadows);
   EXPECT_EQ(k.text().substr(0, 19), "lights directional;");
   EXPECT_EQ(k.settings.sphere_specular, SphereSpecular::Ltc);
   EXPECT_EQ(k.settings.sphere_diffuse, SphereDiffuse::HorizonCorrect);
@@ -199,7 +199,7 @@ TEST(VariantKey, DirectionalKeepsTheSphereSettings) {
   auto l = byName(lightDefines(k, s));
   EXPECT_EQ(l.at("HV_HAS_DIRECTIONAL_LIGHTS").value, "1");
   EXPECT_EQ(l.at("HV_HAS_DIRECTIONAL_LIGHTS").why, "1 directional light");
-  EXPECT_EQ(l.at("HV_SHADOWS").value, "0");
+  EXPECT_EQ(l.at("HV_SHADOWS").value, "1");
   // Without it: HV_HAS_DIRECTIONAL_LIGHTS=0, and the sphere settings reset (no sphere either).
   s.lights[0].type = LightType::Point;
   s.lights[0].shadows = false;

@@ -75,7 +75,7 @@ Absences absentFeatures(const Scene& scene) {
     // A sphere spot runs the sphere code, and so does a directional light (a sphere at infinity).
     sphere |= lightShape(l) == LightType::Sphere || l.type == LightType::Directional;
     tube |= l.type == LightType::Tube;
-    shadowed |= l.shadows && l.type != LightType::Directional;
+    shadowed |= l.shadows;
   }
   const bool lights = !scene.lights.empty();
   const bool env = scene.environment.kind != EnvironmentKind::None;

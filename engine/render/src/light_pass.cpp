@@ -20,6 +20,10 @@ void bindLightTables(gl::PassBindings& b, std::unique_ptr<LtcTextures>* ltc,
     shadows->bind();
     b.declareTexture(HV_UNIT_SHADOW_DEPTH);
     b.declareTexture(HV_UNIT_SHADOW_COMPARE);
+    // The directional lights' orthographic maps and their frames.
+    b.texture(HV_UNIT_SUN_SHADOW_DEPTH, shadows->sunMaps(), shadows->rawSampler());
+    b.texture(HV_UNIT_SUN_SHADOW_COMPARE, shadows->sunMaps(), shadows->compareSampler());
+    b.uniform(HV_UBO_SUN_SHADOWS, shadows->sunBlock());
   }
 }
 

@@ -17,9 +17,16 @@ size_t shadowAtlasCapacity(int map_size) {
 ShadowAssignment assignShadowMaps(const std::vector<Light>& lights, size_t capacity) {
   ShadowAssignment a;
   a.layer.assign(lights.size(), -1);
+  a.sun_layer.assign(lights.size(), -1);
   for (size_t i = 0; i < lights.size(); ++i) {
-    // A directional light has no shadow map (the loader warns): it renders unshadowed.
-    if (!lights[i].shadows || lights[i].type == LightType::Directional) continue;
+    if (!lights[i].shadows) continue;
+    if (lights[i].type == LightType::Directional) {
+      if (a.suns.size() < kMaxDirectionalLights) {
+        a.sun_layer[i] = int(a.suns.size());
+        a.suns.push_back(i);
+      }
+      continue;
+    }
     if (a.maps.size() < capacity) {
       a.layer[i] = int(a.maps.size());
       a.maps.push_back(i);
@@ -50,6 +57,11 @@ void logShadowWarning(const std::string& message) {
 std::string describeLight(const std::vector<Light>& lights, size_t index) {
   const Light& l = lights.at(index);
   char pos[96];
+  if (l.type == LightType::Directional) {
+    std::snprintf(pos, sizeof pos, "[%g, %g, %g]", double(l.direction.x), double(l.direction.y),
+                  double(l.direction.z));
+    return "light " + std::to_string(index) + " (directional along " + pos + ")";
+  }
   std::snprintf(pos, sizeof pos, "[%g, %g, %g]", double(l.position.x), double(l.position.y),
                 double(l.position.z));
   return "light " + std::to_string(index) + " (" + std::string(toString(l.type)) + " at " + pos +

@@ -45,16 +45,76 @@ bool maskedDraw(const Scene& scene, const DrawItem& d) {
   return scene.materials[size_t(d.material)].alpha_mode == AlphaMode::Mask;
 }
 
-gl::ProgramDesc shadowProgram(bool masked) {
+gl::ProgramDesc shadowProgram(bool masked, bool ortho = false) {
   gl::ProgramDesc desc{
-      masked ? "shadow_masked" : "shadow",
+      std::string(ortho ? "sun_" : "") + (masked ? "shadow_masked" : "shadow"),
       {{GL_VERTEX_SHADER, "passes/shadow.vert"}, {GL_FRAGMENT_SHADER, "passes/shadow.frag"}},
       {}};
   if (masked) {
     desc.defines.push_back({"HV_SHADOW_ALPHA_MASK", "1"});
     desc.reasons["HV_SHADOW_ALPHA_MASK"] = "the scene has alpha-masked materials (alphaMode MASK)";
   }
+  if (ortho) {
+    desc.defines.push_back({"HV_SHADOW_ORTHO", "1"});
+    desc.reasons["HV_SHADOW_ORTHO"] =
+        "a directional light's map: the rasterized depth of an orthographic view";
+  }
   return desc;
+}
+
+// A directional light's map (GpuSunShadow, gpu_records.glsl): a square across the light's
+// travel direction F holding the casters' world bounds (the union of the draws' boxes), its near
+// plane upstream of all of them, padded by two texels across and 1% along F. One map over the
+// whole scene: no cascades, so its texels are the scene's extent over the map size.
+struct SunFrame {
+  GpuSunShadow map;
+  glm::mat4 view_proj;  // world -> clip of the orthographic render (GL's -1..1 depth)
+};
+SunFrame sunFrame(const Scene& scene, const GpuScene& gpu, const Light& light, int size) {
+  glm::vec3 F = light.direction;
+  const float len = glm::length(F);
+  F = std::isfinite(len) && len > 1e-20f ? F / len : glm::vec3(0, -1, 0);
+  const glm::vec3 helper = std::abs(F.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+  const glm::vec3 R = glm::normalize(glm::cross(F, helper));
+  const glm::vec3 U = glm::cross(R, F);
+  glm::vec3 lo(3e38f), hi(-3e38f);  // light-space bounds (along R, U, F)
+  for (const DrawItem& d : gpu.draws()) {
+    const glm::mat4& m = scene.objects[size_t(d.object)].transform;
+    for (int c = 0; c < 8; ++c) {
+      const glm::vec3 corner =
+          d.center + d.half_extent * glm::vec3(c & 1 ? 1 : -1, c & 2 ? 1 : -1, c & 4 ? 1 : -1);
+      const glm::vec3 w = glm::vec3(m * glm::vec4(corner, 1.0f));
+      const glm::vec3 l(glm::dot(w, R), glm::dot(w, U), glm::dot(w, F));
+      lo = glm::min(lo, l);
+      hi = glm::max(hi, l);
+    }
+  }
+  if (!(lo.x <= hi.x)) lo = hi = glm::vec3(0.0f);  // no geometry: an empty 1 m map
+  float extent = std::max({hi.x - lo.x, hi.y - lo.y, 1e-3f});
+  extent *= 1.0f + 4.0f / float(std::max(size, 1));
+  const float range = std::max(hi.z - lo.z, 1e-3f) * 1.02f + 1e-3f;
+  const glm::vec3 origin = R * (0.5f * (lo.x + hi.x)) + U * (0.5f * (lo.y + hi.y)) +
+                           F * (lo.z - 0.01f * (hi.z - lo.z) - 5e-4f);
+  SunFrame f;
+  f.map.origin_inv_range = glm::vec4(origin, 1.0f / range);
+  f.map.right_inv_extent = glm::vec4(R, 1.0f / extent);
+  f.map.up_texel = glm::vec4(U, extent / float(std::max(size, 1)));
+  const float sigma = 0.5f * std::clamp(light.angular_diameter, 0.0f, kMaxAngularDiameter);
+  f.map.forward_tan = glm::vec4(F, std::tan(sigma));
+  // clip = (2 (P - o).R / extent, 2 (P - o).U / extent, 2 (P - o).F / range - 1): the rows.
+  const float sx = 2.0f / extent, sz = 2.0f / range;
+  glm::mat4 vp(0.0f);
+  for (int c = 0; c < 3; ++c) {
+    vp[c][0] = sx * R[c];
+    vp[c][1] = sx * U[c];
+    vp[c][2] = sz * F[c];
+  }
+  vp[3][0] = -sx * glm::dot(R, origin);
+  vp[3][1] = -sx * glm::dot(U, origin);
+  vp[3][2] = -sz * glm::dot(F, origin) - 1.0f;
+  vp[3][3] = 1.0f;
+  f.view_proj = vp;
+  return f;
 }
 
 // The six faces in the order of GL's cube map layers (+X, -X, +Y, -Y, +Z, -Z), each a view
@@ -102,44 +162,78 @@ void ShadowMaps::ensureAtlas(int size, size_t cubes) {
   }
 }
 
+namespace {
+
+// Every caster drawn with view_proj into the bound framebuffer layer: the opaque draws, then (a
+// second program) the masked ones with their materials. `light`: the cube's center and 1 / far
+// (shadow.frag's distance), unused by the orthographic program (rasterized depth).
+void drawCasters(const PassContext& ctx, const ShadowMaps::Input& in, gl::PassBindings& b,
+                 const glm::mat4& view_proj, const glm::vec4* light) {
+  const auto& draws = in.gpu.draws();
+  bool any_masked = false;
+  for (const DrawItem& d : draws) any_masked = any_masked || maskedDraw(in.scene, d);
+  for (const bool masked : {false, true}) {
+    if (masked && !any_masked) break;
+    b.use(ctx.programs.get(shadowProgram(masked, light == nullptr)));
+    if (light) glUniform4f(HV_LOC_SHADOW_LIGHT, light->x, light->y, light->z, light->w);
+    glUniformMatrix4fv(HV_LOC_SHADOW_VIEW_PROJ, 1, GL_FALSE, glm::value_ptr(view_proj));
+    int bound_material = -1;
+    for (const DrawItem& d : draws) {
+      if (maskedDraw(in.scene, d) != masked) continue;
+      if (masked && d.material != bound_material) {
+        bound_material = d.material;
+        b.uniformRange(HV_UBO_MATERIAL, in.gpu.materialBuffer(),
+                       GLintptr(size_t(d.material) * in.gpu.materialStride()),
+                       GLsizeiptr(sizeof(GpuMaterial)));
+        const BoundTexture base = in.gpu.materialTextures(d.material)[0];
+        b.texture(HV_UNIT_MATERIAL_TEXTURES, base.texture, base.sampler);
+      }
+      glUniformMatrix4fv(HV_LOC_MODEL, 1, GL_FALSE,
+                         glm::value_ptr(in.scene.objects[size_t(d.object)].transform));
+      glDrawElementsBaseVertex(
+          GL_TRIANGLES, GLsizei(d.index_count), GL_UNSIGNED_INT,
+          reinterpret_cast<const void*>(size_t(d.first_index) * sizeof(uint32_t)), d.base_vertex);
+    }
+  }
+}
+
+}  // namespace
+
 void ShadowMaps::renderCube(const PassContext& ctx, const Input& in, gl::PassBindings& b,
                             size_t cube, const Light& light, float far) {
   const float near_plane = std::max(1e-3f, 1e-6f * far);
   const glm::mat4 proj = glm::perspective(glm::radians(90.0f), 1.0f, near_plane, far);
   const glm::vec3 p = light.position;
-  const auto& draws = in.gpu.draws();
-  bool any_masked = false;
-  for (const DrawItem& d : draws) any_masked = any_masked || maskedDraw(in.scene, d);
+  const glm::vec4 center(p, 1.0f / far);
   for (int f = 0; f < 6; ++f) {
     glNamedFramebufferTextureLayer(fbo_.id(), GL_DEPTH_ATTACHMENT, atlas_.id(), 0,
                                    GLint(cube * 6 + size_t(f)));
     const float one = 1.0f;
     glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
-    const glm::mat4 view_proj = proj * glm::lookAt(p, p + kFaces[f].dir, kFaces[f].up);
-    // The opaque draws, then (a second program) the masked ones with their materials.
-    for (const bool masked : {false, true}) {
-      if (masked && !any_masked) break;
-      b.use(ctx.programs.get(shadowProgram(masked)));
-      glUniform4f(HV_LOC_SHADOW_LIGHT, p.x, p.y, p.z, 1.0f / far);
-      glUniformMatrix4fv(HV_LOC_SHADOW_VIEW_PROJ, 1, GL_FALSE, glm::value_ptr(view_proj));
-      int bound_material = -1;
-      for (const DrawItem& d : draws) {
-        if (maskedDraw(in.scene, d) != masked) continue;
-        if (masked && d.material != bound_material) {
-          bound_material = d.material;
-          b.uniformRange(HV_UBO_MATERIAL, in.gpu.materialBuffer(),
-                         GLintptr(size_t(d.material) * in.gpu.materialStride()),
-                         GLsizeiptr(sizeof(GpuMaterial)));
-          const BoundTexture base = in.gpu.materialTextures(d.material)[0];
-          b.texture(HV_UNIT_MATERIAL_TEXTURES, base.texture, base.sampler);
-        }
-        glUniformMatrix4fv(HV_LOC_MODEL, 1, GL_FALSE,
-                           glm::value_ptr(in.scene.objects[size_t(d.object)].transform));
-        glDrawElementsBaseVertex(
-            GL_TRIANGLES, GLsizei(d.index_count), GL_UNSIGNED_INT,
-            reinterpret_cast<const void*>(size_t(d.first_index) * sizeof(uint32_t)), d.base_vertex);
-      }
-    }
+    drawCasters(ctx, in, b, proj * glm::lookAt(p, p + kFaces[f].dir, kFaces[f].up), &center);
+  }
+}
+
+void ShadowMaps::renderSun(const PassContext& ctx, const Input& in, gl::PassBindings& b,
+                           size_t layer, const glm::mat4& view_proj) {
+  glNamedFramebufferTextureLayer(fbo_.id(), GL_DEPTH_ATTACHMENT, sun_maps_.id(), 0, GLint(layer));
+  const float one = 1.0f;
+  glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
+  drawCasters(ctx, in, b, view_proj, nullptr);
+}
+
+void ShadowMaps::ensureSunMaps(int size, size_t layers) {
+  if (sun_maps_ && size == sun_size_ && layers <= sun_layers_) return;
+  sun_size_ = size;
+  sun_layers_ = layers;
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
+  sun_maps_ = gl::Texture(id, "directional shadow maps (depth 2D array)");
+  glTextureStorage3D(id, 1, GL_DEPTH_COMPONENT32F, size, size, GLsizei(layers));
+  suns_.assign(layers, SunKey{});
+  if (!sun_block_) {
+    sun_block_ = gl::createBuffer("directional shadow maps: frames (GpuSunShadow)",
+                                  kMaxDirectionalLights * sizeof(GpuSunShadow));
   }
 }
 
@@ -162,20 +256,34 @@ ShadowMaps::Stats ShadowMaps::run(const PassContext& ctx, const Input& in) {
     written_version_ = in.lights_version;
   }
   for (size_t i = 0; i < a.layer.size(); ++i) {
-    const uint32_t cube = uint32_t(a.layer[i] + 1);
+    const uint32_t cube = a.shadowSlot(i);
     if (cube == written_cube_[i]) continue;
     written_cube_[i] = cube;
     glNamedBufferSubData(in.gpu.lightBuffer(),
                          GLintptr(i * sizeof(GpuLight) + offsetof(GpuLight, shadow_cube)),
                          sizeof cube, &cube);
   }
-  if (a.maps.empty()) return st;
-  ensureAtlas(in.map_size, a.maps.size());
+  // Both map arrays exist whenever shadows are drawn (one layer at least), so that the passes'
+  // lookups always sample a complete texture of their type.
+  ensureAtlas(in.map_size, std::max<size_t>(a.maps.size(), 1));
+  ensureSunMaps(in.map_size, std::max<size_t>(a.suns.size(), 1));
   const uint64_t casters = castersHash(in.scene);
   // The pass's bindings (the masked casters' material block and base colour texture), opened
   // with the first cube rendered: a frame whose maps are all cached binds nothing.
   std::optional<gl::PassBindings> bindings;
   bool bound = false;
+  const auto open = [&] {
+    PipelineState ps;
+    ps.depth_test = true;
+    ps.depth_write = true;
+    ps.depth_func = GL_LESS;
+    applyState(ps);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, in.map_size, in.map_size);
+    glBindVertexArray(in.gpu.vertexArray());
+    bindings.emplace(kPassSlots, "shadows");
+    bound = true;
+  };
   for (size_t c = 0; c < a.maps.size(); ++c) {
     const Light& l = in.scene.lights[a.maps[c]];
     const GpuLight g = packLight(l);
@@ -187,22 +295,29 @@ ShadowMaps::Stats ShadowMaps::run(const PassContext& ctx, const Input& in) {
     key.casters = casters;
     key.size = in.map_size;
     if (cubes_[c] == key) continue;
-    if (!bound) {
-      PipelineState s;
-      s.depth_test = true;
-      s.depth_write = true;
-      s.depth_func = GL_LESS;
-      applyState(s);
-      glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-      glViewport(0, 0, in.map_size, in.map_size);
-      glBindVertexArray(in.gpu.vertexArray());
-      bindings.emplace(kPassSlots, "shadows");
-      bound = true;
-    }
+    if (!bound) open();
     renderCube(ctx, in, *bindings, c, l, far);
     cubes_[c] = key;
     ++st.rendered;
   }
+  // The directional lights' maps, each re-rendered when its frame (direction, disk, the casters'
+  // bounds) or the casters changed; their frames go to the uniform block the lookups read.
+  std::array<GpuSunShadow, kMaxDirectionalLights> frames{};
+  for (size_t c = 0; c < a.suns.size(); ++c) {
+    const SunFrame f = sunFrame(in.scene, in.gpu, in.scene.lights[a.suns[c]], in.map_size);
+    frames[c] = f.map;
+    SunKey key;
+    std::memcpy(key.frame.data(), &f.map, sizeof f.map);
+    key.casters = casters;
+    key.size = in.map_size;
+    if (suns_[c] == key) continue;
+    if (!bound) open();
+    renderSun(ctx, in, *bindings, c, f.view_proj);
+    suns_[c] = key;
+    ++st.rendered;
+  }
+  st.maps += a.suns.size();
+  glNamedBufferSubData(sun_block_.id(), 0, sizeof frames, frames.data());
   if (bound) {
     bindings.reset();  // releases and checks what the pass bound
     glBindVertexArray(0);

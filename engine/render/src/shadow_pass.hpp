@@ -43,6 +43,12 @@ class ShadowMaps {
   // comparison) for the light pass; unbind releases both units.
   void bind() const;
   static void unbind();
+  // The directional lights' maps (a 2D depth array), its two samplers and its uniform block
+  // (GpuSunShadow per layer), for gl::PassBindings::texture / uniform.
+  GLuint sunMaps() const { return sun_maps_.id(); }
+  GLuint rawSampler() const { return raw_.id(); }
+  GLuint compareSampler() const { return compare_.id(); }
+  GLuint sunBlock() const { return sun_block_.id(); }
 
  private:
   // What a cube was rendered from: the light's shape and place, and the casters.
@@ -53,9 +59,24 @@ class ShadowMaps {
     bool operator==(const CubeKey&) const = default;
   };
   void ensureAtlas(int size, size_t cubes);
+  void ensureSunMaps(int size, size_t layers);
   void renderCube(const PassContext& ctx, const Input& in, gl::PassBindings& b, size_t cube,
                   const Light& light, float far);
-  gl::Texture atlas_;
+  // Renders directional light map `layer` from the orthographic view `view_proj`.
+  void renderSun(const PassContext& ctx, const Input& in, gl::PassBindings& b, size_t layer,
+                 const glm::mat4& view_proj);
+  gl::Texture atlas_, sun_maps_;
+  gl::Buffer sun_block_;  // GpuSunShadow[kMaxDirectionalLights]
+  size_t sun_layers_ = 0;
+  int sun_size_ = 0;
+  // What a sun layer was rendered from: the light's direction and the map's frame, the casters.
+  struct SunKey {
+    std::array<float, 16> frame{};
+    uint64_t casters = 0;
+    int size = 0;
+    bool operator==(const SunKey&) const = default;
+  };
+  std::vector<SunKey> suns_;
   gl::Framebuffer fbo_;
   gl::Sampler raw_, compare_;
   int size_ = 0;

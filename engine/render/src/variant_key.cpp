@@ -285,8 +285,7 @@ VariantKey deriveVariantKey(const Scene& scene) {
     k.tube_lights |= l.type == LightType::Tube;
     k.spot_lights |= l.type == LightType::Spot;
     k.directional_lights |= l.type == LightType::Directional;
-    // A directional light's shadows are not drawn (docs/lights.md, "Directional lights").
-    k.shadows |= l.shadows && l.type != LightType::Directional;
+    k.shadows |= l.shadows;
   }
   k.environment = scene.environment.kind;
   // Only materials that are drawn count.
@@ -484,7 +483,7 @@ std::vector<KeyDefine> settingKeyDefines(const VariantKey& k, const Scene& scene
 std::string shadowsWhy(const Scene& scene) {
   std::vector<size_t> on;
   for (size_t i = 0; i < scene.lights.size(); ++i) {
-    if (scene.lights[i].shadows && scene.lights[i].type != LightType::Directional) on.push_back(i);
+    if (scene.lights[i].shadows) on.push_back(i);
   }
   if (on.empty()) return "no light has shadows: true (no shadow maps, no shadow lookup)";
   std::string t = std::to_string(on.size()) + " shadowed light" + (on.size() == 1 ? "" : "s");

@@ -134,12 +134,6 @@ Light parseDirectional(const Ctx& ctx, const json& j, const std::string& ptr) {
   l.angular_diameter =
       o.num("angular_diameter", l.angular_diameter, Range{0.0, 1.5707963267948966});  // pi / 2
   l.shadows = o.boolean("shadows", l.shadows);
-  if (l.shadows) {
-    sceneWarning(ctx.file + ": " + ptr +
-                     "/shadows: directional lights draw no shadow maps yet; this one renders "
-                     "unshadowed (docs/lights.md, \"Directional lights\")",
-                 ctx.warnings);
-  }
   return l;
 }
 

@@ -5,7 +5,9 @@
 // the lights beyond it render unshadowed (the renderer warns, naming them). No GL here.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -22,8 +24,15 @@ struct ShadowAssignment {
   std::vector<int> layer;           // per light: its cube in the atlas, -1 for none
   std::vector<size_t> maps;         // the lights with a map, in cube order
   std::vector<size_t> over_budget;  // shadowed lights beyond the atlas, unshadowed
+  // Directional lights: an orthographic map each, layers 0, 1, ... of the sun map array (at most
+  // kMaxDirectionalLights, which the loader enforces; any beyond are unshadowed).
+  std::vector<int> sun_layer;  // per light: its layer, -1 for none
+  std::vector<size_t> suns;    // the directional lights with a map, in layer order
+  // GpuLight.shadow_cube of light i: its cube or its sun layer, + 1 (0: none).
+  uint32_t shadowSlot(size_t i) const { return uint32_t(std::max(layer[i], sun_layer[i]) + 1); }
 };
-// The first `capacity` lights with shadows get cubes 0, 1, ... in scene order.
+// The first `capacity` point, sphere, tube and spot lights with shadows get cubes 0, 1, ... in
+// scene order; the shadowed directional lights get sun layers 0, 1, ...
 ShadowAssignment assignShadowMaps(const std::vector<Light>& lights, size_t capacity);
 
 // The warning for the lights beyond the atlas ("" when none), naming them.

@@ -18,6 +18,7 @@ using uint = unsigned int;
 namespace hv {
 using gpu_records::GpuLight;
 using gpu_records::GpuMaterial;
+using gpu_records::GpuSunShadow;
 }  // namespace hv
 // The shading headers compiled as C++ (shading.hpp, and the variants compiled again in their own
 // namespaces) skip gpu_records.glsl by its include guard and find these through the enclosing
@@ -25,12 +26,17 @@ using gpu_records::GpuMaterial;
 namespace hv::glsl {
 using hv::GpuLight;
 using hv::GpuMaterial;
+using hv::GpuSunShadow;
 }  // namespace hv::glsl
 
 namespace hv::gpu_records {
 // std430 (and std140): three vec4, then four scalars filling the fourth 16 bytes (the fourth
 // texel of the buffer-texture path). The shadow pass writes shadow_cube alone, at its offset
 // (engine/render/src/shadow_pass.cpp).
+static_assert(sizeof(GpuSunShadow) == 64);
+static_assert(offsetof(GpuSunShadow, right_inv_extent) == 16);
+static_assert(offsetof(GpuSunShadow, up_texel) == 32);
+static_assert(offsetof(GpuSunShadow, forward_tan) == 48);
 static_assert(sizeof(GpuLight) == 64);
 static_assert(offsetof(GpuLight, position_radius) == 0);
 static_assert(offsetof(GpuLight, color_inv_range) == 16);
