@@ -237,18 +237,9 @@ void ShadowMaps::ensureSunMaps(int size, size_t layers) {
   }
 }
 
-ShadowMaps::Stats ShadowMaps::run(const PassContext& ctx, const Input& in) {
-  gl::ScopedPass pass(ctx.timer, "shadows");
-  const ShadowAssignment a = assignShadowMaps(in.scene.lights, shadowAtlasCapacity(in.map_size));
-  Stats st;
-  st.maps = a.maps.size();
-  st.over_budget = a.over_budget;
-  // The warning names the lights beyond the budget, once per change of that list.
-  const std::string warning = overBudgetWarning(in.scene.lights, a, in.map_size);
-  if (warning != warned_ && !warning.empty()) logShadowWarning(warning);
-  warned_ = warning;
-  // shadow_cube of every light: its cube + 1 (0: no map), written when the buffer was re-uploaded
-  // (GpuScene::updateLights writes 0) or a light's cube changed.
+// shadow_cube of every light: its cube or sun layer + 1 (0: no map), written when the buffer was
+// re-uploaded (GpuScene::updateLights writes 0) or a light's map changed.
+void ShadowMaps::writeShadowSlots(const Input& in, const ShadowAssignment& a) {
   if (written_for_ != &in.gpu || written_version_ != in.lights_version ||
       written_cube_.size() != a.layer.size()) {
     written_cube_.assign(a.layer.size(), 0u);
@@ -263,6 +254,19 @@ ShadowMaps::Stats ShadowMaps::run(const PassContext& ctx, const Input& in) {
                          GLintptr(i * sizeof(GpuLight) + offsetof(GpuLight, shadow_cube)),
                          sizeof cube, &cube);
   }
+}
+
+ShadowMaps::Stats ShadowMaps::run(const PassContext& ctx, const Input& in) {
+  gl::ScopedPass pass(ctx.timer, "shadows");
+  const ShadowAssignment a = assignShadowMaps(in.scene.lights, shadowAtlasCapacity(in.map_size));
+  Stats st;
+  st.maps = a.maps.size();
+  st.over_budget = a.over_budget;
+  // The warning names the lights beyond the budget, once per change of that list.
+  const std::string warning = overBudgetWarning(in.scene.lights, a, in.map_size);
+  if (warning != warned_ && !warning.empty()) logShadowWarning(warning);
+  warned_ = warning;
+  writeShadowSlots(in, a);
   // Both map arrays exist whenever shadows are drawn (one layer at least), so that the passes'
   // lookups always sample a complete texture of their type.
   ensureAtlas(in.map_size, std::max<size_t>(a.maps.size(), 1));

@@ -58,6 +58,7 @@ class ShadowMaps {
     int size = 0;
     bool operator==(const CubeKey&) const = default;
   };
+  void writeShadowSlots(const Input& in, const ShadowAssignment& a);
   void ensureAtlas(int size, size_t cubes);
   void ensureSunMaps(int size, size_t layers);
   void renderCube(const PassContext& ctx, const Input& in, gl::PassBindings& b, size_t cube,

@@ -213,19 +213,14 @@ RenderSettings canonicalSettings(const RenderSettings& s, const VariantKey& key)
 
 CullingChoice chooseCulling(const Scene& scene) {
   CullingChoice c;
-  // Directional lights are in no tile list (every lit pixel shades them either way): only the
-  // other lights count.
-  const size_t directional =
-      size_t(std::count_if(scene.lights.begin(), scene.lights.end(),
-                           [](const Light& l) { return l.type == LightType::Directional; }));
+  // Directional lights are in no tile list (every lit pixel shades them): the others count.
+  size_t directional = 0;
+  for (const Light& l : scene.lights) directional += l.type == LightType::Directional;
   c.lights = scene.lights.size() - directional;
-  if (c.lights == 0) {
-    if (directional) {  // no culling pass: the brute-force loop shades them at every pixel
-      c.culling = Culling::BruteForce;
-      c.why = "no lights to cull (directional lights only: every pixel shades them)";
-    } else {
-      c.why = "no lights";
-    }
+  if (c.lights == 0) {  // directional lights only: no culling pass, the brute-force loop
+    if (directional) c.culling = Culling::BruteForce;
+    c.why = directional ? "no lights to cull (directional lights only: every pixel shades them)"
+                        : "no lights";
     return c;
   }
   const FrameBlock f = makeFrameBlock(scene, scene.settings.width, scene.settings.height);
