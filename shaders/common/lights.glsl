@@ -487,15 +487,9 @@ vec4 lightCullSphere(GpuLight light) {
 // The shadow of light l at the light pass's receivers (shadows.glsl): its map is cube
 // shadow_cube - 1 of the atlas (-1: none), distances over the culling radius; the emitter's
 // radius, axis and length size PCSS's penumbra. Multiplies the light's whole contribution, diffuse and specular
-// (light_shade.comp).
+// (light_shade.comp). For a point, sphere, tube or spot light: the tiled loops, which know the
+// type, call it (and sunShadowVisibility for directional lights) directly.
 vec4 lightShadow(GpuLight l, vec3 P[HV_SHADOW_RECEIVERS], vec3 N[HV_SHADOW_RECEIVERS], bvec4 use) {
-#if HV_HAS_DIRECTIONAL_LIGHTS
-  // A directional light's map is orthographic (sunShadowVisibility); the branch is uniform (one
-  // light for the whole invocation).
-  if (lightType(l) == HV_LIGHT_DIRECTIONAL) {
-    return sunShadowVisibility(float(l.shadow_cube) - 1.0f, P, N, use);
-  }
-#endif
   float len = l.axis_length.w;
 #if HV_HAS_SPOT_LIGHTS
   // A spot's axis_length is its cone: its emitter is its point or sphere (length 0), and its map
@@ -504,6 +498,19 @@ vec4 lightShadow(GpuLight l, vec3 P[HV_SHADOW_RECEIVERS], vec3 N[HV_SHADOW_RECEI
 #endif
   return shadowVisibility(vec3(l.position_radius), lightCullRadius(l), float(l.shadow_cube) - 1.0f,
                           l.position_radius.w, vec3(l.axis_length), len, P, N, use);
+}
+
+// The shadow of a light of any type, for the loops that mix them (brute force, the forward
+// pass): a directional light's map is orthographic (sunShadowVisibility). The branch is uniform,
+// one light for the whole invocation.
+vec4 anyLightShadow(GpuLight l, vec3 P[HV_SHADOW_RECEIVERS], vec3 N[HV_SHADOW_RECEIVERS],
+                    bvec4 use) {
+#if HV_HAS_DIRECTIONAL_LIGHTS
+  if (lightType(l) == HV_LIGHT_DIRECTIONAL) {
+    return sunShadowVisibility(float(l.shadow_cube) - 1.0f, P, N, use);
+  }
+#endif
+  return lightShadow(l, P, N, use);
 }
 #endif
 

@@ -118,7 +118,7 @@ void main() {
         sP[j] = P;
         sN[j] = s.N;
       }
-      float vis = lightShadow(l, sP, sN, bvec4(true, false, false, false)).x;
+      float vis = anyLightShadow(l, sP, sN, bvec4(true, false, false, false)).x;
       direct += evaluateLightAt(l, s, sp) * vis;
 #else
       direct += evaluateLightAt(l, s, sp);

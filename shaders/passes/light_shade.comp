@@ -97,6 +97,8 @@ vec3 probeLight(GpuLight l) { return l.color_inv_range.rgb * step(0.0, l.positio
 #error "shadowVisibility takes one receiver per pixel of the invocation"
 #endif
 #define HV_SHADOW_OF(l) vec4 vis = lightShadow(l, shadow_P, shadow_N, bvec4(lit[0], lit[1], lit[2], lit[3]))
+#define HV_SUN_SHADOW_OF(l) \
+  vec4 vis = sunShadowVisibility(float(l.shadow_cube) - 1.0f, shadow_P, shadow_N, bvec4(lit[0], lit[1], lit[2], lit[3]))
 #define HV_EVAL_POINT(l, j) (evaluatePointLightAt(l, s[j], sp[j]) * vis[j])
 #define HV_EVAL_SPHERE(l, j) (evaluateSphereLightAt(l, s[j], sp[j]) * vis[j])
 #define HV_EVAL_TUBE(l, j) (evaluateTubeLightAt(l, s[j], sp[j]) * vis[j])
@@ -115,6 +117,9 @@ vec3 probeLight(GpuLight l) { return l.color_inv_range.rgb * step(0.0, l.positio
 
 #ifndef HV_SHADOW_OF
 #define HV_SHADOW_OF(l)
+#endif
+#ifndef HV_SUN_SHADOW_OF
+#define HV_SUN_SHADOW_OF(l)
 #endif
 
 // This invocation's tile row (may lie below the viewport in the last row of workgroups).
@@ -169,7 +174,7 @@ void main() {
   for (uint i = 0u; i < n; ++i) {
     GpuLight l = lights[i];
 #if HV_SHADOWS
-    HV_SHADOW_OF(l);
+    vec4 vis = anyLightShadow(l, shadow_P, shadow_N, bvec4(lit[0], lit[1], lit[2], lit[3]));
     for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += evaluateLightAt(l, s[j], sp[j]) * vis[j];
 #else
     for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += evaluateLightAt(l, s[j], sp[j]);
@@ -224,7 +229,7 @@ void main() {
     uint d = u_directional_lights[k];
     if (d == 0u) break;
     GpuLight l = lights[d - 1u];
-    HV_SHADOW_OF(l);
+    HV_SUN_SHADOW_OF(l);
     for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += HV_EVAL_DIRECTIONAL(l, j);
   }
 #endif

@@ -89,6 +89,12 @@ LightSample sampleSphere(const Light& light, const RenderSettings& settings, con
 struct DirectionalCone {
   glm::vec3 axis{0.0f};
   float cos_max = 1.0f, one_minus_cos = 0.0f, sin2 = 0.0f;
+  // The solid-angle pdf of a uniform sample of the cone at L: 0 outside it (and for a single
+  // direction, which is not sampled).
+  float uniformPdf() const { return 1.0f / (2.0f * kPi * one_minus_cos); }
+  float pdf(const glm::vec3& L) const {
+    return sin2 <= 0.0f || glm::dot(L, axis) < cos_max ? 0.0f : uniformPdf();
+  }
 };
 DirectionalCone directionalCone(const Light& light) {
   DirectionalCone c;
@@ -114,7 +120,7 @@ LightSample sampleDirectional(const Light& light, glm::vec2 u) {
   glm::vec3 T, B;
   glsl::tangentFrame(c.axis, T, B);
   ls.L = glm::normalize(T * (sin_t * std::cos(phi)) + B * (sin_t * std::sin(phi)) + c.axis * cos_t);
-  ls.pdf = 1.0f / (2.0f * kPi * c.one_minus_cos);
+  ls.pdf = c.uniformPdf();
   ls.radiance = directionalRadiance(light, c);
   ls.distance = std::numeric_limits<float>::infinity();
   return ls;
@@ -238,11 +244,7 @@ glm::vec3 emitterRadianceAt(const Light& light, const RenderSettings& settings,
 }
 
 float lightPdf(const Light& light, const glm::vec3& P, const glm::vec3& L) {
-  if (light.type == LightType::Directional) {
-    const DirectionalCone c = directionalCone(light);
-    if (c.sin2 <= 0.0f || glm::dot(L, c.axis) < c.cos_max) return 0.0f;
-    return 1.0f / (2.0f * kPi * c.one_minus_cos);
-  }
+  if (light.type == LightType::Directional) return directionalCone(light).pdf(L);
   if (light.type == LightType::Sphere) {
     const glm::vec3 Lc = light.position - P;
     const float d2 = glm::dot(Lc, Lc);
@@ -295,8 +297,8 @@ LightSample evalLight(const Light& light, const RenderSettings& settings, const 
   if (light.type == LightType::Directional) {
     // L sees the disk iff it lies in the cone sampleDirectional draws from.
     const DirectionalCone c = directionalCone(light);
-    if (c.sin2 <= 0.0f || glm::dot(L, c.axis) < c.cos_max) return ls;
-    ls.pdf = 1.0f / (2.0f * kPi * c.one_minus_cos);
+    ls.pdf = c.pdf(L);
+    if (ls.pdf <= 0.0f) return ls;
     ls.radiance = directionalRadiance(light, c);
     ls.distance = std::numeric_limits<float>::infinity();
     return ls;

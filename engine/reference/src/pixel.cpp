@@ -53,31 +53,31 @@ struct ShadingPoint {
   }
 };
 
-// Point lights: exact, as the light pass (cavity on all direct light).
+// Point lights and single-direction directional lights: exact, as the light pass (cavity on all
+// direct light).
 void pointLights(ShadingPoint& p, PixelOut& out) {
   const RenderSettings& settings = p.ctx.scene->settings;
   const glsl::Surface& s = p.s;
   for (size_t i = 0; i < p.ctx.point_lights.size(); ++i) {
     const Light* l = p.ctx.point_lights[i];
-    if (l->type == LightType::Directional) {  // a single direction (angular diameter 0)
-      const glm::vec3 L = -glm::normalize(l->direction);
-      const float NoL = glsl::saturate(glm::dot(p.N, L));
-      if (NoL <= 0.0f) continue;
-      if (p.visibility() && p.occluded(L, std::numeric_limits<float>::infinity())) continue;
-      Lobes f = brdfLobes(p.ctx.brdf, s, p.V, L, true);
-      const glm::vec3 irr = l->color * (l->intensity * NoL * s.cavity);
-      out.aov[kDD] += glm::dvec3(irr * f.diffuse);
-      out.aov[kDS] += glm::dvec3(irr * f.specular);
-      continue;
+    glm::vec3 L;
+    float scale, tfar;
+    if (l->type == LightType::Directional) {
+      // A single direction (angular diameter 0): its illuminance E, no falloff, a ray to infinity.
+      L = -glm::normalize(l->direction);
+      scale = glsl::saturate(glm::dot(p.N, L)) * s.cavity;
+      tfar = std::numeric_limits<float>::infinity();
+    } else {
+      glm::vec3 Lc = l->position - p.P;
+      float d2 = glm::dot(Lc, Lc);
+      L = glsl::safeNormalize(Lc);
+      float NoL = glsl::saturate(glm::dot(p.N, L));
+      scale = falloff(settings, d2, 0.0f, l->range) * NoL * s.cavity *
+              glsl::spotAttenuation(L, p.ctx.point_cones[i]);
+      tfar = glm::length(l->position - p.O);
     }
-    glm::vec3 Lc = l->position - p.P;
-    float d2 = glm::dot(Lc, Lc);
-    glm::vec3 L = glsl::safeNormalize(Lc);
-    float NoL = glsl::saturate(glm::dot(p.N, L));
-    float scale = falloff(settings, d2, 0.0f, l->range) * NoL * s.cavity *
-                  glsl::spotAttenuation(L, p.ctx.point_cones[i]);
     // One ray to the light's position: a point light's shadow is hard.
-    if (p.visibility() && scale > 0.0f && p.occluded(L, glm::length(l->position - p.O))) continue;
+    if (p.visibility() && scale > 0.0f && p.occluded(L, tfar)) continue;
     Lobes f = brdfLobes(p.ctx.brdf, s, p.V, L, true);
     glm::vec3 radiant = l->color * l->intensity;
     out.aov[kDD] += glm::dvec3(radiant * f.diffuse * scale);

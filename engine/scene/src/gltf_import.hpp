@@ -188,7 +188,6 @@ class Importer {
 
   // ---- gltf_lights.cpp ------------------------------------------------------------------------
   void importNodeLight(const tinygltf::Node& n, const glm::mat4& world, const std::string& el);
-  void importDirectional(Light l, const glm::mat4& world, const std::string& lel);
 
   std::string path_;
   tinygltf::Model& m_;  // images are moved out of it

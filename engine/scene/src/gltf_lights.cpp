@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "gltf_import.hpp"
+#include "halfvec/scene/enums.hpp"
 #include "halfvec/scene/scene_loader.hpp"
 
 namespace hv {
@@ -31,28 +32,6 @@ namespace hv::gltf {
 namespace {
 constexpr double kHalfPi = 1.5707963267948966;
 }  // namespace
-
-// A directional light of the node: the extension's directional light is a single direction, its
-// local -Z (range does not apply to it): angular diameter 0, as the glTF viewers shade it.
-void Importer::importDirectional(Light l, const glm::mat4& world, const std::string& lel) {
-  const glm::vec3 d = glm::mat3(world) * glm::vec3(0.0f, 0.0f, -1.0f);
-  if (!(glm::length(d) > 1e-20f)) {
-    warnOnce("directional singular", lel +
-                                         ": a singular transform gives the directional light "
-                                         "no direction; not imported (nor any other such light)");
-    return;
-  }
-  const auto directional = [](const Light& x) { return x.type == LightType::Directional; };
-  if (size_t(std::count_if(lights.begin(), lights.end(), directional)) >= kMaxDirectionalLights) {
-    warnOnce("directional budget", lel + ": more than " + std::to_string(kMaxDirectionalLights) +
-                                       " directional light instances (kMaxDirectionalLights); "
-                                       "this one and any further ones not imported");
-    return;
-  }
-  l.direction = glm::normalize(d);
-  l.angular_diameter = 0.0f;
-  lights.push_back(l);
-}
 
 // The light a node holds (its extensions.KHR_lights_punctual.light), placed by the node's world
 // transform: position its origin, a spot's or a directional light's direction its local -Z
@@ -94,19 +73,37 @@ void Importer::importNodeLight(const tinygltf::Node& n, const glm::mat4& world,
   // one (docs/lights.md, "glTF lights").
   l.intensity = finite(g.intensity, gel + ".intensity");
   if (l.intensity < 0.0f) fail(gel + ".intensity", "expected a value >= 0");
-  if (l.type == LightType::Directional) return importDirectional(l, world, lel);
+  if (l.type != LightType::Point) {
+    // A spot's or a directional light's direction: the node's local -Z, normalized (the node's
+    // scale does not change it).
+    const glm::vec3 d = glm::mat3(world) * glm::vec3(0.0f, 0.0f, -1.0f);
+    if (!(glm::length(d) > 1e-20f)) {
+      const std::string type(toString(l.type));
+      warnOnce(type + " singular", lel + ": a singular transform gives the " + type +
+                                       " light no direction; not imported (nor any other such " +
+                                       "light)");
+      return;
+    }
+    l.direction = glm::normalize(d);
+  }
+  if (l.type == LightType::Directional) {
+    // The extension's directional light is a single direction (range does not apply to it):
+    // angular diameter 0, as the glTF viewers shade it; at most kMaxDirectionalLights of them.
+    const auto directional = [](const Light& x) { return x.type == LightType::Directional; };
+    if (size_t(std::count_if(lights.begin(), lights.end(), directional)) >= kMaxDirectionalLights) {
+      warnOnce("directional budget", lel + ": more than " + std::to_string(kMaxDirectionalLights) +
+                                         " directional light instances (kMaxDirectionalLights); "
+                                         "this one and any further ones not imported");
+      return;
+    }
+    l.angular_diameter = 0.0f;
+    lights.push_back(l);
+    return;
+  }
   const float range = finite(g.range, gel + ".range");
   if (range < 0.0f) fail(gel + ".range", "expected a value > 0 (or none: infinite)");
   l.range = range > 0.0f ? std::max(range, 1e-4f) : gltfInfiniteRange(l.color, l.intensity);
   if (l.type == LightType::Spot) {
-    const glm::vec3 d = glm::mat3(world) * glm::vec3(0.0f, 0.0f, -1.0f);
-    if (!(glm::length(d) > 1e-20f)) {
-      warnOnce("spot singular", lel +
-                                    ": a singular transform gives the spot no direction; "
-                                    "not imported (nor any other such spot)");
-      return;
-    }
-    l.direction = glm::normalize(d);
     const double inner = g.spot.innerConeAngle, outer = g.spot.outerConeAngle;
     if (!(inner >= 0.0 && inner < outer && outer <= kHalfPi)) {
       fail(gel + ".spot", "expected 0 <= innerConeAngle < outerConeAngle <= pi/2, got " +
