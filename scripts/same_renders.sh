@@ -2,7 +2,8 @@
 # Checks that every sample scene renders bit-identically to another revision (default: HEAD):
 # builds REV in a temporary worktree (no tests), renders each sample scene headless with both
 # builds (HDR PFM and tone-mapped PNG at --size, default 320x180) and compares the files byte for
-# byte. Exit 0 when every image is identical, 1 otherwise (the differing files are listed).
+# byte. Exit 0 when every image is identical, 1 otherwise (the differing files are listed). A
+# sample scene REV cannot load (newer than REV) is reported as NEW and compared with nothing.
 # The working tree renders each scene twice and must produce the same bytes both times (renders
 # are reproducible since the culling keeps every tile's list in light order): a tree image that
 # differs between its two runs fails as NONDETERMINISTIC. REV renders each scene twice too: where
@@ -21,7 +22,7 @@ while [ $# -gt 0 ]; do
   case "$1" in
     --size) size="$2"; shift 2 ;;
     --base-exe) base_exe="$(cd "$(dirname "$2")" && pwd)/$(basename "$2")"; shift 2 ;;
-    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,15p' "$0"; exit 0 ;;
     *) rev="$1"; shift ;;
   esac
 done
@@ -53,6 +54,7 @@ status=0
 n=0
 for scene in samples/scenes/*.json; do
   name=$(basename "$scene" .json)
+  failed=""
   for side in base base2 tree tree2; do
     case "$side" in
       tree*) exe="$root/build/halfvec"; dir="$root" ;;
@@ -61,8 +63,20 @@ for scene in samples/scenes/*.json; do
     mkdir -p "$work/out/$side"
     (cd "$dir" && XDG_CACHE_HOME="$work/cache-$side" "$exe" render "$root/$scene" --size "$size" \
       --out "$work/out/$side/$name.png" --hdr "$work/out/$side/$name.pfm" >/dev/null 2>"$work/out/$side/$name.err") || {
-      echo "[same_renders] $name: render failed ($side):" >&2; cat "$work/out/$side/$name.err" >&2; status=1; }
+      failed="$failed $side"; }
   done
+  # A scene REV cannot load (one newer than REV, using what REV lacks) has nothing to compare
+  # with: reported as NEW when the working tree renders it, a failure when the tree fails too.
+  if [ "$failed" = " base base2" ]; then
+    echo "NEW        $name: $rev cannot render it ($(head -c 160 "$work/out/base/$name.err"))"
+    continue
+  elif [ -n "$failed" ]; then
+    for side in $failed; do
+      echo "[same_renders] $name: render failed ($side):" >&2; cat "$work/out/$side/$name.err" >&2
+    done
+    status=1
+    continue
+  fi
   for ext in pfm png; do
     n=$((n + 1))
     o="$work/out"
