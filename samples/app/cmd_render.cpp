@@ -226,7 +226,7 @@ nlohmann::ordered_json statsJson(const RenderReport& r, const Context& ctx,
   j["passes"] = passes;
   j["total_ms"] = r.stats.total_ms;
   j["setup_ms"] = r.setup_ms;
-  j["gbuffer_bytes_per_pixel"] = render::kGBufferBytesPerPixel;
+  j["gbuffer_bytes_per_pixel"] = render::gbufferBytesPerPixel(renderer.variantKey().clear_coat);
   j["triangles"] = r.triangles;
   if (const BakeTimings* bake = renderer.environmentTimings()) {
     j["environment_bake_ms"] = {{"cache_hit", bake->cache_hit},

@@ -62,6 +62,9 @@
 // array), raw depth and with depth comparison (shadows.glsl, sunShadowVisibility).
 #define HV_UNIT_SUN_SHADOW_DEPTH 13
 #define HV_UNIT_SUN_SHADOW_COMPARE 14
+// Light, ambient and debug-view passes of a scene with clear coat: the G-buffer's coat target
+// (gbuffer.glsl, encodeCoat), bound by bindGBuffer with the other four.
+#define HV_UNIT_COAT 15
 // Tone map: the HDR target.
 #define HV_UNIT_HDR 0
 // G-buffer pass: a material's textures on units HV_UNIT_MATERIAL_TEXTURES + 0..4 (base color,

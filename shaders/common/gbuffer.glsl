@@ -4,7 +4,10 @@
 //                    (perceptual roughness in 16 bits: encodeRoughness16, docs/gbuffer.md)
 //   RT2 RG16 snorm : octahedral normal (world space)
 //   depth 32F      : reversed-Z depth; world position is reconstructed from it
-// 16 bytes per pixel including depth. Emissive goes straight into the HDR target.
+//   RT3 RGBA16 snorm (scenes with a clear_coat material only): the coat's octahedral normal (xy),
+//                    layer weight (z) and perceptual roughness (w) (encodeCoat)
+// 16 bytes per pixel including depth, 24 with the coat target. Emissive goes straight into the
+// HDR target.
 #ifndef HV_GBUFFER_GLSL
 #define HV_GBUFFER_GLSL
 
@@ -14,6 +17,10 @@
 const uint HV_MODEL_BACKGROUND = 0u;
 const uint HV_MODEL_UNLIT = 1u;
 const uint HV_MODEL_DEFAULT_LIT = 2u;
+const uint HV_MODEL_CLEAR_COAT = 3u;  // default lit under a clear coat (clear_coat.glsl)
+
+// The models the light and ambient passes light (hv::isLit).
+bool isLitModel(uint id) { return id == HV_MODEL_DEFAULT_LIT || id == HV_MODEL_CLEAR_COAT; }
 
 // The shading-model ID in RT1's blue channel, written as ID / 255 (which the unorm8 target stores
 // exactly, as the roughness bytes below) and read back as the nearest code. The one encoding:
@@ -69,6 +76,12 @@ vec2 encodeRoughness16(float roughness) {
 // `e` = (high, low) as read back from the unorm8 channels.
 float decodeRoughness16(vec2 e) {
   return (round(e.x * 255.0f) * 256.0f + round(e.y * 255.0f)) / 65535.0f;
+}
+
+// The coat target: octahedral normal, weight and roughness, each a snorm16 (15 bits over 0..1:
+// a roughness step of 3e-5, below the 16 bits of the base's at its 0.045 minimum).
+vec4 encodeCoat(vec3 nc, float clearcoat, float roughness) {
+  return vec4(octEncode(nc), clamp(clearcoat, 0.0f, 1.0f), clamp(roughness, 0.0f, 1.0f));
 }
 
 // Reversed-Z perspective: depth 1 at the near plane, 0 at infinity (precision of 32F depth is

@@ -105,8 +105,8 @@ struct GpuMaterial {
   uint texcoord_normal;        //  72
   uint texcoord_occlusion;     //  76
   uint texcoord_emissive;      //  80
-  uint unused0;                //  84
-  uint unused1;                //  88
+  float clearcoat;             //  84 KHR_materials_clearcoat layer weight (shading_model 3)
+  float clearcoat_roughness;   //  88 the coat's perceptual roughness
   uint unused2;                //  92
   // KHR_texture_transform per slot (HV_MAT_SLOT_*): uv_linear[i] = textureTransformLinear
   // (texture_transform.glsl), uv_offset[i].xy the offset.

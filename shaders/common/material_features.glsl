@@ -6,7 +6,8 @@
 //   HV_MAT_BASE_COLOR_MAP, HV_MAT_METAL_ROUGH_MAP, HV_MAT_NORMAL_MAP, HV_MAT_OCCLUSION_MAP,
 //   HV_MAT_EMISSIVE, HV_MAT_EMISSIVE_MAP, HV_MAT_ALPHA_MASK, HV_MAT_DOUBLE_SIDED, HV_MAT_UV1,
 //   HV_MAT_VERTEX_COLOR (COLOR_0 multiplies base colour and alpha), HV_MAT_TEX_TRANSFORM
-//   (KHR_texture_transform) 1|0.
+//   (KHR_texture_transform), HV_MAT_CLEAR_COAT (shading model clear_coat: the coat's weight,
+//   roughness and normal, written to the G-buffer's coat target) 1|0.
 #ifndef HV_MATERIAL_FEATURES_GLSL
 #define HV_MATERIAL_FEATURES_GLSL
 
@@ -45,6 +46,9 @@
 #endif
 #ifndef HV_MAT_TEX_TRANSFORM
 #define HV_MAT_TEX_TRANSFORM 1
+#endif
+#ifndef HV_MAT_CLEAR_COAT
+#define HV_MAT_CLEAR_COAT 1
 #endif
 
 #endif

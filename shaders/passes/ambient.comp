@@ -8,11 +8,15 @@
 #include "../common/gbuffer.glsl"
 #include "../common/brdf.glsl"
 #include "../common/ibl.glsl"
+#include "../common/clear_coat.glsl"
 
 // Specialization (docs/variants.md); the defaults are the uber build.
 //   HV_ENVIRONMENT 1|0: 0 = no environment: black background, no image-based lighting code.
 //   HV_ENV_RUNTIME_CHECK 1|0: 1 = the environment's presence is read from u_env.z (uber).
 //   HV_HAS_DEFAULT_LIT 1|0: 0 = no lit material: only the background is written.
+//   HV_HAS_CLEAR_COAT 1|0: a clear_coat material is drawn: its pixels add the coat's split-sum
+//     specular (a second prefiltered lookup along the coat's reflection) over the base, which the
+//     coat scales by coatBaseScale (clear_coat.glsl).
 #ifndef HV_ENVIRONMENT
 #define HV_ENVIRONMENT 1
 #endif
@@ -21,6 +25,9 @@
 #endif
 #ifndef HV_HAS_DEFAULT_LIT
 #define HV_HAS_DEFAULT_LIT 1
+#endif
+#ifndef HV_HAS_CLEAR_COAT
+#define HV_HAS_CLEAR_COAT 1
 #endif
 #ifndef HV_ENV_BRDF_ANALYTIC
 #define HV_ENV_BRDF_ANALYTIC 0
@@ -63,6 +70,9 @@ layout(binding = HV_UNIT_RADIANCE) uniform samplerCube t_radiance;    // prefilt
 layout(binding = HV_UNIT_ENV_BRDF) uniform sampler2D t_env_brdf;      // (scale, bias) over (NoV, roughness)
 layout(binding = HV_UNIT_IRRADIANCE) uniform samplerCube t_irradiance;  // E(n), not divided by pi
 layout(rgba16f, binding = HV_IMAGE_HDR) uniform image2D i_hdr;
+#if HV_HAS_CLEAR_COAT && HV_HAS_DEFAULT_LIT && HV_ENVIRONMENT
+layout(binding = HV_UNIT_COAT) uniform sampler2D t_coat;
+#endif
 
 #define HV_BLOCK_MEMBER(type, name) type u_##name;
 #define HV_BLOCK_ARRAY(type, name, count) type u_##name[count];
@@ -130,6 +140,18 @@ vec4 aoAt(ivec2 px) {
   }
   return wsum > 1e-4 ? sum / wsum : nearest;
 }
+
+// The screen-space AO's occlusion of the coat's ambient specular: the base's rule (settings.
+// ao_specular) on the coat's normal, roughness and reflection.
+float coatSpecularOcclusion(Surface cs, float NoVc, vec3 Rc, vec4 ao, float vis) {
+#if HV_AO_SPECULAR == HV_AO_SPECULAR_LAGARDE
+  return specularOcclusion(NoVc, vis, cs.alpha);
+#elif HV_AO_SPECULAR == HV_AO_SPECULAR_CONE
+  return specularOcclusionCone(safeNormalize(ao.yzw), cs.N, Rc, vis, cs.alpha);
+#else
+  return 1.0;
+#endif
+}
 #endif
 
 void main() {
@@ -173,7 +195,7 @@ void main() {
   vec3 radiance = textureLod(t_radiance, dir, lod).rgb;
   if (background) result = vec4(env_present ? radiance : vec3(0.0), 1.0);
 #if HV_HAS_DEFAULT_LIT
-  if (model == HV_MODEL_DEFAULT_LIT && env_present) {
+  if (isLitModel(model) && env_present) {
 #if HV_IRRADIANCE_CUBEMAP
     vec3 E = textureLod(t_irradiance, N, 0.0).rgb;
 #else
@@ -206,10 +228,36 @@ void main() {
     vec3 diffuse = ambientDiffuse(open_s, E) * diffuse_vis;
     vec3 specular = ambientSpecular(s, radiance, ab, NoV, HV_ENERGY_COMPENSATION != 0, false) *
                     specular_vis;
+#define HV_COAT_OCCLUSION(cs, NoVc, Rc) coatSpecularOcclusion(cs, NoVc, Rc, ao, vis)
 #else
     vec3 diffuse = ambientDiffuse(s, E);
     vec3 specular = ambientSpecular(s, radiance, ab, NoV, HV_ENERGY_COMPENSATION != 0,
                                     HV_SPECULAR_OCCLUSION != 0);
+#define HV_COAT_OCCLUSION(cs, NoVc, Rc) 1.0
+#endif
+#if HV_HAS_CLEAR_COAT
+    // The coat (clear_coat.glsl): the base under it scaled, its own split-sum lobe added, with
+    // the base's environment BRDF, energy compensation and specular occlusion rules.
+    if (model == HV_MODEL_CLEAR_COAT) {
+      vec4 ct = texelFetch(t_coat, px, 0);
+      vec3 Nc = octDecode(ct.xy);
+      Surface cs = makeCoatSurface(Nc, ct.w, bc.a);
+      float NoVc = clamp(dot(Nc, V), 1e-4, 1.0);
+      vec3 Rc = reflect(-V, Nc);
+      vec3 coat_radiance = textureLod(t_radiance, prefilteredDirection(Nc, Rc, cs.alpha),
+                                      roughnessToMip(cs.roughness, u_env.x)).rgb;
+#if HV_ENV_BRDF_ANALYTIC
+      vec2 abc = EnvBRDFApproxScaleBias(cs.roughness, NoVc);
+#else
+      vec2 abc = texture(t_env_brdf, vec2(NoVc, cs.roughness)).rg;
+#endif
+      float scale = coatBaseScale(ct.z, Nc, V);
+      diffuse *= scale;
+      specular = specular * scale +
+                 ambientSpecular(cs, coat_radiance, abc, NoVc, HV_ENERGY_COMPENSATION != 0,
+                                 HV_AO == 0 && HV_SPECULAR_OCCLUSION != 0) *
+                     (ct.z * HV_COAT_OCCLUSION(cs, NoVc, Rc));
+    }
 #endif
 #if (HV_AMBIENT_TERMS & 1) == 0
     diffuse = vec3(0.0);

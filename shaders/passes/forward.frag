@@ -10,6 +10,7 @@
 #include "../common/gbuffer.glsl"
 #include "../common/lights.glsl"
 #include "../common/ibl.glsl"
+#include "../common/clear_coat.glsl"
 #include "surface_material.glsl"
 
 #ifndef HV_ENVIRONMENT
@@ -55,17 +56,30 @@ layout(std140, binding = HV_UBO_ENVIRONMENT) uniform EnvironmentBlock {
 #undef HV_BLOCK_ARRAY
 #undef HV_BLOCK_MEMBER
 
-// Ambient light of surface s seen from V: ambient.comp's surface path (split-sum specular along
-// the prefiltered direction, SH9 or irradiance-cube diffuse, the cavity), without screen-space AO,
-// which a surface absent from the depth buffer cannot have.
-vec3 ambientLight(Surface s, vec3 V) {
-#if HV_ENV_RUNTIME_CHECK
-  if (u_env.z < 0.5) return vec3(0.0);
-#endif
+// The split-sum specular of surface s seen from V (ambient.comp's: along the prefiltered
+// direction, with the environment BRDF, energy compensation and the cavity's specular occlusion).
+vec3 ambientSpecularOf(Surface s, vec3 V) {
   float NoV = clamp(dot(s.N, V), 1e-4, 1.0);
   vec3 R = reflect(-V, s.N);
   vec3 radiance = textureLod(t_radiance, prefilteredDirection(s.N, R, s.alpha),
                              roughnessToMip(s.roughness, u_env.x)).rgb;
+#if HV_ENV_BRDF_ANALYTIC
+  vec2 ab = EnvBRDFApproxScaleBias(s.roughness, NoV);
+#else
+  vec2 ab = texture(t_env_brdf, vec2(NoV, s.roughness)).rg;
+#endif
+  return ambientSpecular(s, radiance, ab, NoV, HV_ENERGY_COMPENSATION != 0,
+                         HV_SPECULAR_OCCLUSION != 0);
+}
+
+// Ambient light of surface s seen from V: ambient.comp's surface path (split-sum specular along
+// the prefiltered direction, SH9 or irradiance-cube diffuse, the cavity), without screen-space AO,
+// which a surface absent from the depth buffer cannot have. With a coat of weight `coat` (surface
+// cs, clear_coat.glsl) the base is scaled by base_scale and the coat's own lobe added.
+vec3 ambientLight(Surface s, vec3 V, Surface cs, float coat, float base_scale) {
+#if HV_ENV_RUNTIME_CHECK
+  if (u_env.z < 0.5) return vec3(0.0);
+#endif
 #if HV_IRRADIANCE_CUBEMAP
   vec3 E = textureLod(t_irradiance, s.N, 0.0).rgb;
 #else
@@ -73,14 +87,11 @@ vec3 ambientLight(Surface s, vec3 V) {
   for (int i = 0; i < 9; ++i) sh[i] = u_sh[i].rgb;
   vec3 E = evalSH9Irradiance(sh, s.N);
 #endif
-#if HV_ENV_BRDF_ANALYTIC
-  vec2 ab = EnvBRDFApproxScaleBias(s.roughness, NoV);
-#else
-  vec2 ab = texture(t_env_brdf, vec2(NoV, s.roughness)).rg;
+  vec3 diffuse = ambientDiffuse(s, E) * base_scale;
+  vec3 specular = ambientSpecularOf(s, V) * base_scale;
+#if HV_MAT_CLEAR_COAT
+  if (coat > 0.0) specular += ambientSpecularOf(cs, V) * coat;
 #endif
-  vec3 diffuse = ambientDiffuse(s, E);
-  vec3 specular = ambientSpecular(s, radiance, ab, NoV, HV_ENERGY_COMPENSATION != 0,
-                                  HV_SPECULAR_OCCLUSION != 0);
 #if (HV_AMBIENT_TERMS & 1) == 0
   diffuse = vec3(0.0);
 #endif
@@ -100,7 +111,7 @@ void main() {
 #endif
   float alpha = clamp(sm.base.a, 0.0, 1.0);
   vec3 color = (u_frame_flags & HV_FRAME_NO_EMISSIVE) != 0u ? vec3(0.0) : sm.emissive;
-  if (u_material.shading_model == HV_MODEL_DEFAULT_LIT) {
+  if (isLitModel(u_material.shading_model)) {
     // The fragment's world position as the deferred passes reconstruct it from the depth buffer.
     vec2 uv = gl_FragCoord.xy / vec2(u_viewport.xy);
     vec3 P = reconstructWorldPosition(uv, gl_FragCoord.z, u_inv_view_proj);
@@ -108,7 +119,15 @@ void main() {
     Surface s = makeSurface(sm.n, clamp(sm.base.rgb, 0.0, 1.0), clamp(sm.metallic, 0.0, 1.0),
                             sm.roughness, clamp(sm.cavity, 0.0, 1.0));
     ShadingPoint sp = makeShadingPoint(s, P, V);
+    // The coat (clear_coat.glsl): weight 0 and base scale 1 off clear_coat materials.
+    Surface cs = makeCoatSurface(sm.coat_n, sm.coat_roughness, s.cavity);
+    float coat = clamp(sm.coat, 0.0, 1.0);
+    float base_scale = coatBaseScale(coat, sm.coat_n, V);
+#if HV_MAT_CLEAR_COAT
+    ShadingPoint csp = makeShadingPoint(cs, P, V);
+#endif
     vec3 direct = vec3(0.0);
+    vec3 coat_direct = vec3(0.0);
     for (uint i = 0u; i < u_draw_lights.y; ++i) {
       GpuLight l = lights[draw_lights[u_draw_lights.x + i]];
 #if HV_SHADOWS
@@ -119,14 +138,17 @@ void main() {
         sN[j] = s.N;
       }
       float vis = anyLightShadow(l, sP, sN, bvec4(true, false, false, false)).x;
-      direct += evaluateLightAt(l, s, sp) * vis;
 #else
-      direct += evaluateLightAt(l, s, sp);
+      float vis = 1.0;
+#endif
+      direct += evaluateLightAt(l, s, sp) * vis;
+#if HV_MAT_CLEAR_COAT
+      if (coat > 0.0) coat_direct += evaluateLightAt(l, cs, csp) * vis;
 #endif
     }
-    color += direct;
+    color += direct * base_scale + coat_direct * coat;
 #if HV_ENVIRONMENT
-    color += ambientLight(s, V);
+    color += ambientLight(s, V, cs, coat, base_scale);
 #endif
   }
   o_hdr = vec4(min(color, vec3(HV_HDR_MAX)), alpha);

@@ -10,6 +10,9 @@ layout(location = 0) out vec4 o_base_cavity;  // SRGB8_ALPHA8
 layout(location = 1) out vec4 o_material;     // RGBA8: metallic, roughness high, model, roughness low
 layout(location = 2) out vec2 o_normal;       // RG16_SNORM
 layout(location = 3) out vec4 o_hdr;          // RGBA16F
+#if HV_MAT_CLEAR_COAT
+layout(location = 4) out vec4 o_coat;  // RGBA16_SNORM (scenes with clear coat): encodeCoat
+#endif
 
 void main() {
   SurfaceMaterial sm = surfaceMaterial();
@@ -21,6 +24,9 @@ void main() {
   o_material = vec4(clamp(sm.metallic, 0.0, 1.0), roughness16.x,
                     encodeShadingModel(u_material.shading_model), roughness16.y);
   o_normal = octEncode(sm.n);
+#if HV_MAT_CLEAR_COAT
+  o_coat = encodeCoat(sm.coat_n, sm.coat, sm.coat_roughness);
+#endif
   // Clamped as every pass that writes the HDR target clamps (frame.glsl HV_HDR_MAX): without an
   // environment no ambient pass follows to clamp unlit pixels.
   o_hdr = vec4(min(sm.emissive, vec3(HV_HDR_MAX)), 0.0);

@@ -9,6 +9,14 @@
 #include "../common/frame.glsl"
 #include "../common/gbuffer.glsl"
 #include "../common/lights.glsl"
+#include "../common/clear_coat.glsl"
+
+// HV_HAS_CLEAR_COAT 1|0: a clear_coat material is drawn. Its pixels shade every light twice, the
+// base (scaled by coatBaseScale) and the coat's lobe (clear_coat.glsl); an invocation with no
+// such pixel skips the second evaluation.
+#ifndef HV_HAS_CLEAR_COAT
+#define HV_HAS_CLEAR_COAT 1
+#endif
 
 // Each invocation shades HV_LIGHT_PIXELS pixels of a tile column (HV_TILE_HEIGHT must be a
 // multiple): a light's data is fetched once and evaluated for all of them, so the fetch (a gather
@@ -27,6 +35,9 @@ layout(binding = HV_UNIT_BASE_CAVITY) uniform sampler2D t_base_cavity;
 layout(binding = HV_UNIT_MATERIAL) uniform sampler2D t_material;
 layout(binding = HV_UNIT_NORMAL) uniform sampler2D t_normal;
 layout(binding = HV_UNIT_DEPTH) uniform sampler2D t_depth;
+#if HV_HAS_CLEAR_COAT
+layout(binding = HV_UNIT_COAT) uniform sampler2D t_coat;
+#endif
 layout(rgba16f, binding = HV_IMAGE_HDR) uniform image2D i_hdr;
 
 layout(std430, binding = HV_BINDING_LIGHTS) readonly buffer LightBlock { GpuLight lights[]; };
@@ -85,10 +96,10 @@ GpuLight tileLight(uint i) { return lights[tile_indices[i]]; }
 #endif
 #if HV_LIGHT_PROBE == 1
 vec3 probeLight(GpuLight l) { return l.color_inv_range.rgb * step(0.0, l.position_radius.w); }
-#define HV_EVAL_POINT(l, j) probeLight(l)
-#define HV_EVAL_SPHERE(l, j) probeLight(l)
-#define HV_EVAL_TUBE(l, j) (probeLight(l) * step(0.0, l.axis_length.w))
-#define HV_EVAL_DIRECTIONAL(l, j) probeLight(l)
+#define HV_EVAL_POINT(l, S, SP, j) probeLight(l)
+#define HV_EVAL_SPHERE(l, S, SP, j) probeLight(l)
+#define HV_EVAL_TUBE(l, S, SP, j) (probeLight(l) * step(0.0, l.axis_length.w))
+#define HV_EVAL_DIRECTIONAL(l, S, SP, j) probeLight(l)
 #elif HV_SHADOWS
 // Shadowed lights (shadows.glsl): each light's radiance times its visibility at the
 // invocation's pixels, computed for all of them at once (HV_SHADOW_OF, before the pixel loop);
@@ -99,20 +110,28 @@ vec3 probeLight(GpuLight l) { return l.color_inv_range.rgb * step(0.0, l.positio
 #define HV_SHADOW_OF(l) vec4 vis = lightShadow(l, shadow_P, shadow_N, bvec4(lit[0], lit[1], lit[2], lit[3]))
 #define HV_SUN_SHADOW_OF(l) \
   vec4 vis = sunShadowVisibility(float(l.shadow_cube) - 1.0f, shadow_P, shadow_N, bvec4(lit[0], lit[1], lit[2], lit[3]))
-#define HV_EVAL_POINT(l, j) (evaluatePointLightAt(l, s[j], sp[j]) * vis[j])
-#define HV_EVAL_SPHERE(l, j) (evaluateSphereLightAt(l, s[j], sp[j]) * vis[j])
-#define HV_EVAL_TUBE(l, j) (evaluateTubeLightAt(l, s[j], sp[j]) * vis[j])
+#define HV_EVAL_POINT(l, S, SP, j) (evaluatePointLightAt(l, S[j], SP[j]) * vis[j])
+#define HV_EVAL_SPHERE(l, S, SP, j) (evaluateSphereLightAt(l, S[j], SP[j]) * vis[j])
+#define HV_EVAL_TUBE(l, S, SP, j) (evaluateTubeLightAt(l, S[j], SP[j]) * vis[j])
+#define HV_EVAL_DIRECTIONAL(l, S, SP, j) (evaluateDirectionalLightAt(l, S[j], SP[j]) * vis[j])
 #else
-#define HV_EVAL_POINT(l, j) evaluatePointLightAt(l, s[j], sp[j])
-#define HV_EVAL_SPHERE(l, j) evaluateSphereLightAt(l, s[j], sp[j])
-#define HV_EVAL_TUBE(l, j) evaluateTubeLightAt(l, s[j], sp[j])
+#define HV_EVAL_POINT(l, S, SP, j) evaluatePointLightAt(l, S[j], SP[j])
+#define HV_EVAL_SPHERE(l, S, SP, j) evaluateSphereLightAt(l, S[j], SP[j])
+#define HV_EVAL_TUBE(l, S, SP, j) evaluateTubeLightAt(l, S[j], SP[j])
+#define HV_EVAL_DIRECTIONAL(l, S, SP, j) evaluateDirectionalLightAt(l, S[j], SP[j])
 #endif
-#ifndef HV_EVAL_DIRECTIONAL
-#if HV_SHADOWS
-#define HV_EVAL_DIRECTIONAL(l, j) (evaluateDirectionalLightAt(l, s[j], sp[j]) * vis[j])
+
+// One light's radiance added at the invocation's pixels: the base's into sum, and with clear
+// coat the coat lobe's into coat_sum where some pixel has a coat.
+#if HV_HAS_CLEAR_COAT
+#define HV_ACCUMULATE(EVAL, l)                                                      \
+  for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += EVAL(l, s, sp, j);           \
+  if (any_coat) {                                                                  \
+    for (int j = 0; j < HV_LIGHT_PIXELS; ++j) coat_sum[j] += EVAL(l, cs, csp, j);  \
+  }
 #else
-#define HV_EVAL_DIRECTIONAL(l, j) evaluateDirectionalLightAt(l, s[j], sp[j])
-#endif
+#define HV_ACCUMULATE(EVAL, l) \
+  for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += EVAL(l, s, sp, j);
 #endif
 
 #ifndef HV_SHADOW_OF
@@ -139,19 +158,40 @@ void main() {
   ShadingPoint sp[HV_LIGHT_PIXELS];
   bool lit[HV_LIGHT_PIXELS];
   bool any_lit = false;
+#if HV_HAS_CLEAR_COAT
+  Surface cs[HV_LIGHT_PIXELS];
+  ShadingPoint csp[HV_LIGHT_PIXELS];
+  float coat[HV_LIGHT_PIXELS];
+  float base_scale[HV_LIGHT_PIXELS];
+  bool any_coat = false;
+  vec3 coat_sum[HV_LIGHT_PIXELS];
+  for (int j = 0; j < HV_LIGHT_PIXELS; ++j) coat_sum[j] = vec3(0.0);
+#endif
   for (int j = 0; j < HV_LIGHT_PIXELS; ++j) {
     ivec2 px = pixelOf(j);
     vec4 mat = texelFetch(t_material, px, 0);
     uint model = decodeShadingModel(mat.b);
-    lit[j] = model == HV_MODEL_DEFAULT_LIT && px.x < int(u_viewport.x) && px.y < int(u_viewport.y);
+    lit[j] = isLitModel(model) && px.x < int(u_viewport.x) && px.y < int(u_viewport.y);
     any_lit = any_lit || lit[j];
     vec4 bc = texelFetch(t_base_cavity, px, 0);
     vec3 N = octDecode(texelFetch(t_normal, px, 0).xy);
     float depth = texelFetch(t_depth, px, 0).r;
     vec2 uv = (vec2(px) + 0.5) / vec2(u_viewport.xy);
     vec3 P = reconstructWorldPosition(uv, depth, u_inv_view_proj);
+    vec3 V = normalize(u_camera_pos.xyz - P);
     s[j] = makeSurface(N, bc.rgb, mat.r, decodeRoughness16(mat.ga), bc.a);
-    sp[j] = makeShadingPoint(s[j], P, normalize(u_camera_pos.xyz - P));
+    sp[j] = makeShadingPoint(s[j], P, V);
+#if HV_HAS_CLEAR_COAT
+    // The coat (clear_coat.glsl) where the model has one; elsewhere weight 0, base scale 1.
+    vec4 ct = texelFetch(t_coat, px, 0);
+    bool coated = model == HV_MODEL_CLEAR_COAT;
+    coat[j] = coated ? ct.z : 0.0;
+    vec3 Nc = coated ? octDecode(ct.xy) : N;
+    cs[j] = makeCoatSurface(Nc, ct.w, bc.a);
+    csp[j] = makeShadingPoint(cs[j], P, V);
+    base_scale[j] = coatBaseScale(coat[j], Nc, V);
+    any_coat = any_coat || (coated && lit[j]);
+#endif
   }
   if (!any_lit) return;
 #if HV_SHADOWS
@@ -175,10 +215,11 @@ void main() {
     GpuLight l = lights[i];
 #if HV_SHADOWS
     vec4 vis = anyLightShadow(l, shadow_P, shadow_N, bvec4(lit[0], lit[1], lit[2], lit[3]));
-    for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += evaluateLightAt(l, s[j], sp[j]) * vis[j];
+#define HV_EVAL_ANY(l, S, SP, j) (evaluateLightAt(l, S[j], SP[j]) * vis[j])
 #else
-    for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += evaluateLightAt(l, s[j], sp[j]);
+#define HV_EVAL_ANY(l, S, SP, j) evaluateLightAt(l, S[j], SP[j])
 #endif
+    HV_ACCUMULATE(HV_EVAL_ANY, l)
   }
 #else
   uint tile = tileRow() * u_viewport.z + gl_WorkGroupID.x;  // tileRow() < tiles y: a pixel is lit
@@ -197,7 +238,7 @@ void main() {
     do {
       GpuLight l = tileLight(i);
       HV_SHADOW_OF(l);
-      for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += HV_EVAL_POINT(l, j);
+      HV_ACCUMULATE(HV_EVAL_POINT, l)
     } while (++i < end_point);
   }
 #endif
@@ -207,7 +248,7 @@ void main() {
     do {
       GpuLight l = tileLight(i);
       HV_SHADOW_OF(l);
-      for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += HV_EVAL_SPHERE(l, j);
+      HV_ACCUMULATE(HV_EVAL_SPHERE, l)
     } while (++i < end_sphere);
   }
 #endif
@@ -217,7 +258,7 @@ void main() {
     do {
       GpuLight l = tileLight(i);
       HV_SHADOW_OF(l);
-      for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += HV_EVAL_TUBE(l, j);
+      HV_ACCUMULATE(HV_EVAL_TUBE, l)
     } while (++i < end);
   }
 #endif
@@ -230,9 +271,13 @@ void main() {
     if (d == 0u) break;
     GpuLight l = lights[d - 1u];
     HV_SUN_SHADOW_OF(l);
-    for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] += HV_EVAL_DIRECTIONAL(l, j);
+    HV_ACCUMULATE(HV_EVAL_DIRECTIONAL, l)
   }
 #endif
+#endif
+#if HV_HAS_CLEAR_COAT
+  // f_base (1 - c F_c) + c f_coat (clear_coat.glsl), summed over the lights.
+  for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] = sum[j] * base_scale[j] + coat_sum[j] * coat[j];
 #endif
   for (int j = 0; j < HV_LIGHT_PIXELS; ++j) {
     if (!lit[j]) continue;

@@ -7,6 +7,7 @@
 #ifndef HV_SURFACE_MATERIAL_GLSL
 #define HV_SURFACE_MATERIAL_GLSL
 
+#include "../common/gbuffer.glsl"
 #include "../common/material.glsl"
 #include "../common/texture_transform.glsl"
 
@@ -65,6 +66,13 @@ struct SurfaceMaterial {
   vec3 n;  // shading normal (world space, unit)
   vec3 emissive;
   bool masked_out;  // alpha-masked out (glTF alphaCutoff)
+  // Clear coat (clear_coat.glsl): weight (0 off clear_coat materials), perceptual roughness and
+  // the coat's normal: the interpolated vertex normal, which the base's normal map does not
+  // perturb (a varnish over a bumpy surface is smooth: Filament section 4.9, KHR_materials_
+  // clearcoat's default clearcoatNormal).
+  float coat;
+  float coat_roughness;
+  vec3 coat_n;
 };
 
 SurfaceMaterial surfaceMaterial() {
@@ -108,6 +116,14 @@ SurfaceMaterial surfaceMaterial() {
   vec3 n = normalize(v_normal);
 #if HV_MAT_DOUBLE_SIDED
   if (!gl_FrontFacing) n = -n;  // double-sided surfaces light their back face
+#endif
+  sm.coat_n = n;
+#if HV_MAT_CLEAR_COAT
+  sm.coat = m.shading_model == HV_MODEL_CLEAR_COAT ? m.clearcoat : 0.0;
+  sm.coat_roughness = m.clearcoat_roughness;
+#else
+  sm.coat = 0.0;
+  sm.coat_roughness = 0.0;
 #endif
 #if HV_MAT_NORMAL_MAP
   if (HV_MAT_USES(HV_MAT_NORMAL_TEX)) {

@@ -69,8 +69,7 @@ glm::vec3 worldPosition(const Scene& s, const GBufferReadback& gb, size_t i) {
 }
 
 bool floorPixel(const Scene& s, const GBufferReadback& gb, size_t i) {
-  return gb.model[i] == uint32_t(ShadingModel::DefaultLit) &&
-         std::abs(worldPosition(s, gb, i).y) < 2e-3f;
+  return isLit(ShadingModel(gb.model[i])) && std::abs(worldPosition(s, gb, i).y) < 2e-3f;
 }
 
 }  // namespace
@@ -91,7 +90,7 @@ TEST(AoGpu, OpenPlaneIsUnoccluded) {
     int lit = 0;
     double worst = 0.0;
     for (size_t i = 0; i < ao.hdr.px.size(); ++i) {
-      if (open.gb.model[i] != uint32_t(ShadingModel::DefaultLit)) continue;
+      if (!isLit(ShadingModel(open.gb.model[i]))) continue;
       ++lit;
       worst = std::max(worst, std::abs(double(ao.hdr.px[i].y) / open.hdr.px[i].y - 1.0));
     }

@@ -197,6 +197,36 @@ TEST(SceneLoader, MaterialAlphaKeys) {
             std::string::npos);
 }
 
+// clearcoat makes the material clear_coat; clear_coat alone is a full coat; a coat on an unlit
+// material, clear_coat with a weight of 0 and weights outside [0, 1] are errors naming the key.
+TEST(SceneLoader, MaterialClearCoatKeys) {
+  const hv::Scene s = hv::parseScene(json::parse(R"({
+    "materials":[{"name":"paint","clearcoat":0.8,"clearcoat_roughness":0.05},
+                 {"name":"varnish","shading_model":"clear_coat"},
+                 {"name":"plain","clearcoat":0}],
+    "objects":[{"primitive":"box","material":"paint"},{"primitive":"plane","material":"varnish"},
+               {"primitive":"sphere","material":"plain"}]})"),
+                                     "x.json");
+  const hv::Material& paint = s.materials[size_t(s.meshes[0].material)];
+  EXPECT_EQ(paint.model, hv::ShadingModel::ClearCoat);
+  EXPECT_FLOAT_EQ(paint.clearcoat, 0.8f);
+  EXPECT_FLOAT_EQ(paint.clearcoat_roughness, 0.05f);
+  const hv::Material& varnish = s.materials[size_t(s.meshes[1].material)];
+  EXPECT_EQ(varnish.model, hv::ShadingModel::ClearCoat);
+  EXPECT_FLOAT_EQ(varnish.clearcoat, 1.0f);
+  EXPECT_EQ(s.materials[size_t(s.meshes[2].material)].model, hv::ShadingModel::DefaultLit);
+  EXPECT_EQ(parseError(R"({"materials":[{"name":"a","clearcoat":1.5}]})"),
+            "scene.json: /materials/0/clearcoat: expected a number in [0, 1], got 1.5");
+  EXPECT_EQ(parseError(R"({"materials":[{"name":"a","clearcoat_roughness":-0.1}]})"),
+            "scene.json: /materials/0/clearcoat_roughness: expected a number in [0, 1], got -0.1");
+  EXPECT_NE(parseError(R"({"materials":[{"name":"a","shading_model":"unlit","clearcoat":1}]})")
+                .find("/materials/0/clearcoat: an unlit material has no clear coat"),
+            std::string::npos);
+  EXPECT_NE(parseError(R"({"materials":[{"name":"a","shading_model":"clear_coat","clearcoat":0}]})")
+                .find("/materials/0/clearcoat: shading_model \"clear_coat\" needs clearcoat > 0"),
+            std::string::npos);
+}
+
 TEST(SceneLoader, TransformsAndEnvExpansion) {
   const hv::Scene s = hv::parseScene(
       json::parse(R"({"objects":[{"primitive":"box","transform":{"translation":[1,2,3],

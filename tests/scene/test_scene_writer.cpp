@@ -243,3 +243,37 @@ TEST(SceneWriter, GeneratedLightsAreFoldedInWhenTheListChanges) {
   EXPECT_EQ(readText(path).find("light_generators"), std::string::npos);
   fs::remove_all(dir);
 }
+
+// A coat given to a material in the viewer is saved as its two keys and loads back as a
+// clear_coat material; taking it off (weight 0) loads back as default_lit.
+TEST(SceneWriter, ClearCoatEditsRoundTrip) {
+  const fs::path dir = tmpDir();
+  const fs::path path = dir / "coat.json";
+  {
+    std::ofstream f(path);
+    f << R"({"materials": {"red": {"base_color": [0.7, 0.05, 0.05], "roughness": 0.5}},
+ "objects": [{"primitive": "sphere", "material": "red"}],
+ "lights": [{"type": "point", "position": [0, 2, 2]}]})";
+  }
+  const Scene loaded = loadScene(path.string(), {}, nullptr);
+  Scene edited = loaded;
+  Material& m = edited.materials.at(size_t(edited.meshes.at(0).material));
+  m.clearcoat = 0.75f;
+  m.clearcoat_roughness = 0.05f;
+  m.model = ShadingModel::ClearCoat;
+  EXPECT_GE(saveSceneEdits(path.string(), loaded, edited), 2u);
+  const Scene back = loadScene(path.string(), {}, nullptr);
+  const Material& b = back.materials.at(size_t(back.meshes.at(0).material));
+  EXPECT_EQ(b.model, ShadingModel::ClearCoat);
+  EXPECT_EQ(b.clearcoat, 0.75f);
+  EXPECT_EQ(b.clearcoat_roughness, 0.05f);
+  Scene off = back;
+  Material& o = off.materials.at(size_t(off.meshes.at(0).material));
+  o.clearcoat = 0.0f;
+  o.model = ShadingModel::DefaultLit;
+  saveSceneEdits(path.string(), back, off);
+  const Scene again = loadScene(path.string(), {}, nullptr);
+  EXPECT_EQ(again.materials.at(size_t(again.meshes.at(0).material)).model,
+            ShadingModel::DefaultLit);
+  fs::remove_all(dir);
+}

@@ -26,8 +26,7 @@ std::array<ImageRGBf, kReferenceAovCount> renderEngineAovs(render::Renderer& ren
   const GBufferReadback g = renderer.readGBuffer();
   for (auto& img : aov) {
     for (size_t i = 0; i < img.px.size(); ++i) {
-      if (g.model[i] != static_cast<uint32_t>(ShadingModel::DefaultLit))
-        img.px[i] = glm::vec3(0.0f);
+      if (!isLit(ShadingModel(g.model[i]))) img.px[i] = glm::vec3(0.0f);
     }
   }
   return aov;

@@ -139,7 +139,7 @@ void measureCase(const AccuracyOptions& o, Case& c, OcclusionScene& out) {
   const GBufferReadback g = r.readGBuffer();
   std::vector<bool> lit(g.model.size());
   for (size_t i = 0; i < lit.size(); ++i) {
-    lit[i] = g.model[i] == static_cast<uint32_t>(ShadingModel::DefaultLit);
+    lit[i] = isLit(ShadingModel(g.model[i]));
     out.lit_pixels += lit[i];
   }
   ReferenceOptions ro;

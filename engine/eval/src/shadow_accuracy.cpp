@@ -187,7 +187,7 @@ FloorPixels floorPixels(const Scene& scene, const ReferenceDiffuse& ref, int n) 
     for (int x = 0; x < n; ++x) {
       const size_t i = size_t(y) * size_t(n) + size_t(x);
       fp.point[i] = floorPoint(inv, n, n, x, y);
-      fp.use[i] = ref.g.model[i] == uint32_t(ShadingModel::DefaultLit) &&
+      fp.use[i] = isLit(ShadingModel(ref.g.model[i])) &&
                   ref.g.base_color[i].x > 0.5f * (kFloorAlbedo + kOccluderAlbedo) &&
                   sum3(ref.unshadowed.px[i]) > 0.0f;
     }

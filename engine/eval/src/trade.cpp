@@ -75,7 +75,7 @@ ComparedPixels comparedPixels(const GBufferReadback& gb, const ImageRGBf& ref,
   ComparedPixels c;
   c.mask.assign(gb.model.size(), false);
   for (size_t i = 0; i < gb.model.size(); ++i) {
-    if (gb.model[i] != uint32_t(ShadingModel::DefaultLit)) continue;
+    if (!isLit(ShadingModel(gb.model[i]))) continue;
     const double sum = double(ref.px[i].x) + double(ref.px[i].y) + double(ref.px[i].z);
     const double se = double(ref_se.px[i].x) + double(ref_se.px[i].y) + double(ref_se.px[i].z);
     if (!(se <= kMaxReferenceRelError * sum) && se > 0.0) {

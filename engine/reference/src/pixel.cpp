@@ -45,6 +45,11 @@ struct ShadingPoint {
   glsl::Surface s;
   glm::vec3 P, V, N, O;
   glm::vec3 T{0.0f}, B{0.0f}, Vs{0.0f}, ambient_spec_scale{0.0f};
+  // The clear coat (clear_coat.glsl): weight (0: none), its lobe as a Surface, the base's scale
+  // under it, and its own frame, lifted view and ambient factors, as the base's.
+  float coat = 0.0f, base_scale = 1.0f;
+  glsl::Surface cs{};
+  glm::vec3 Tc{0.0f}, Bc{0.0f}, Vsc{0.0f}, coat_ambient_scale{0.0f};
   uint64_t rays = 0;
   bool visibility() const { return ctx.vis != nullptr; }
   bool occluded(const glm::vec3& L, float tfar) {
@@ -52,6 +57,48 @@ struct ShadingPoint {
     return ctx.vis->occluded(O, L, tfar);
   }
 };
+
+// f(v, l) times its cosine for direction L, in the parts the AOVs and the ambient factors need:
+// the base's diffuse and specular (each times N.L, scaled by the coat's base_scale) and the coat's
+// lobe times its weight and Nc.L (clear_coat.glsl: f_base (1 - c F_c) + c f_coat). Without a coat,
+// brdfLobes times N.L.
+struct CosLobes {
+  glm::vec3 diffuse{0.0f}, specular{0.0f}, coat{0.0f};
+  bool zero() const {
+    return diffuse == glm::vec3(0.0f) && specular == glm::vec3(0.0f) && coat == glm::vec3(0.0f);
+  }
+};
+CosLobes cosLobes(const ShadingPoint& p, const glm::vec3& L, bool analytic) {
+  const Lobes f = brdfLobes(p.ctx.brdf, p.s, p.V, L, analytic);
+  const float k = glsl::saturate(glm::dot(p.N, L)) * p.base_scale;
+  CosLobes r{f.diffuse * k, f.specular * k, glm::vec3(0.0f)};
+  if (p.coat > 0.0f) {
+    const float c = glsl::saturate(glm::dot(p.cs.N, L)) * p.coat;
+    if (c > 0.0f) r.coat = brdfLobes(p.ctx.brdf, p.cs, p.V, L, analytic).specular * c;
+  }
+  return r;
+}
+// Whether direction L is above the horizon of a lobe of the pixel (the base's or the coat's).
+bool aboveSomeHorizon(const ShadingPoint& p, const glm::vec3& L) {
+  return glm::dot(p.N, L) > 0.0f || (p.coat > 0.0f && glm::dot(p.cs.N, L) > 0.0f);
+}
+// The GGX-VNDF pdf of direction L (world) for the lobe of frame (T, B, N), lifted view Vs.
+float vndfPdf(const glm::vec3& T, const glm::vec3& B, const glm::vec3& N, const glm::vec3& Vs,
+              float alpha, const glm::vec3& L) {
+  const glm::vec3 lt(glm::dot(L, T), glm::dot(L, B), glm::dot(L, N));
+  if (lt.z <= 0.0f) return 0.0f;
+  const glm::vec3 h = glsl::safeNormalize(Vs + lt);
+  const float VoH = glm::dot(Vs, h);
+  return VoH > 0.0f ? glsl::pdfGGXVNDF(Vs, h, alpha) / (4.0f * VoH) : 0.0f;
+}
+// A GGX-VNDF direction (world) for the lobe of frame (T, B, N); false below its horizon.
+bool vndfSample(const glm::vec3& T, const glm::vec3& B, const glm::vec3& N, const glm::vec3& Vs,
+                float alpha, glm::vec2 u, glm::vec3& L) {
+  const glm::vec3 Ht = glsl::sampleGGXVNDF(Vs, alpha, u);
+  const glm::vec3 lt = glm::reflect(-Vs, Ht);
+  L = T * lt.x + B * lt.y + N * lt.z;
+  return lt.z > 0.0f;
+}
 
 // Point lights and single-direction directional lights: exact, as the light pass (cavity on all
 // direct light).
@@ -65,23 +112,22 @@ void pointLights(ShadingPoint& p, PixelOut& out) {
     if (l->type == LightType::Directional) {
       // A single direction (angular diameter 0): its illuminance E, no falloff, a ray to infinity.
       L = -glm::normalize(l->direction);
-      scale = glsl::saturate(glm::dot(p.N, L)) * s.cavity;
+      scale = s.cavity;
       tfar = std::numeric_limits<float>::infinity();
     } else {
       glm::vec3 Lc = l->position - p.P;
       float d2 = glm::dot(Lc, Lc);
       L = glsl::safeNormalize(Lc);
-      float NoL = glsl::saturate(glm::dot(p.N, L));
-      scale = falloff(settings, d2, 0.0f, l->range) * NoL * s.cavity *
+      scale = falloff(settings, d2, 0.0f, l->range) * s.cavity *
               glsl::spotAttenuation(L, p.ctx.point_cones[i]);
       tfar = glm::length(l->position - p.O);
     }
+    const CosLobes f = cosLobes(p, L, true);
     // One ray to the light's position: a point light's shadow is hard.
-    if (p.visibility() && scale > 0.0f && p.occluded(L, tfar)) continue;
-    Lobes f = brdfLobes(p.ctx.brdf, s, p.V, L, true);
+    if (p.visibility() && scale > 0.0f && !f.zero() && p.occluded(L, tfar)) continue;
     glm::vec3 radiant = l->color * l->intensity;
     out.aov[kDD] += glm::dvec3(radiant * f.diffuse * scale);
-    out.aov[kDS] += glm::dvec3(radiant * f.specular * scale);
+    out.aov[kDS] += glm::dvec3(radiant * (f.specular + f.coat) * scale);
   }
 }
 
@@ -92,34 +138,33 @@ void pointLights(ShadingPoint& p, PixelOut& out) {
 void areaLightSample(ShadingPoint& p, Rng& rng, glm::dvec3* xs) {
   const RenderSettings& settings = p.ctx.scene->settings;
   const glsl::Surface& s = p.s;
-  const glm::vec3 &T = p.T, &B = p.B, &N = p.N, &Vs = p.Vs;
-  glm::vec3 Lv(0.0f);
-  bool vndf_ok = false;
-  {
-    glm::vec3 Ht = glsl::sampleGGXVNDF(Vs, s.alpha, glm::vec2(rng.uniform(), rng.uniform()));
-    glm::vec3 lt = glm::reflect(-Vs, Ht);
-    vndf_ok = lt.z > 0.0f;
-    Lv = T * lt.x + B * lt.y + N * lt.z;
+  // The BRDF strategies: the base's VNDF and, with a coat, the coat's (its sharp highlight is
+  // what the base's lobe and the emitter's sampler rarely find).
+  glm::vec3 Lv[2] = {glm::vec3(0.0f), glm::vec3(0.0f)};
+  bool lv_ok[2] = {false, false};
+  const int strategies = p.coat > 0.0f ? 2 : 1;
+  lv_ok[0] =
+      vndfSample(p.T, p.B, p.N, p.Vs, s.alpha, glm::vec2(rng.uniform(), rng.uniform()), Lv[0]);
+  if (strategies == 2) {
+    lv_ok[1] = vndfSample(p.Tc, p.Bc, p.cs.N, p.Vsc, p.cs.alpha,
+                          glm::vec2(rng.uniform(), rng.uniform()), Lv[1]);
   }
-  auto pdfVndf = [&](const glm::vec3& L) {
-    glm::vec3 lt(glm::dot(L, T), glm::dot(L, B), glm::dot(L, N));
-    if (lt.z <= 0.0f) return 0.0f;
-    glm::vec3 h = glsl::safeNormalize(Vs + lt);
-    float VoH = glm::dot(Vs, h);
-    return VoH > 0.0f ? glsl::pdfGGXVNDF(Vs, h, s.alpha) / (4.0f * VoH) : 0.0f;
+  auto pdfBrdf = [&](const glm::vec3& L) {
+    float pdf = vndfPdf(p.T, p.B, p.N, p.Vs, s.alpha, L);
+    if (strategies == 2) pdf += vndfPdf(p.Tc, p.Bc, p.cs.N, p.Vsc, p.cs.alpha, L);
+    return pdf;
   };
   float cone = 1.0f;  // the light's spot attenuation at P, set per light below
-  auto add = [&](const LightSample& ls, float p_vndf) {
-    float NoL = glsl::saturate(glm::dot(N, ls.L));
-    float pdf = ls.pdf + p_vndf;
-    if (NoL <= 0.0f || !(pdf > 0.0f) || !std::isfinite(pdf)) return;  // below the horizon
+  auto add = [&](const LightSample& ls, float p_brdf) {
+    float pdf = ls.pdf + p_brdf;
+    if (!aboveSomeHorizon(p, ls.L) || !(pdf > 0.0f) || !std::isfinite(pdf)) return;
     // The ray stops at the sampled emitter point: what lies behind the light does not shadow it
     // (and emitters are not triangles: the light itself never occludes).
     if (p.visibility() && p.occluded(ls.L, ls.distance)) return;
-    Lobes f = brdfLobes(p.ctx.brdf, s, p.V, ls.L, true);
-    glm::vec3 w = ls.radiance * (NoL * s.cavity * cone / pdf);
+    const CosLobes f = cosLobes(p, ls.L, true);
+    glm::vec3 w = ls.radiance * (s.cavity * cone / pdf);
     xs[kDD] += glm::dvec3(f.diffuse * w);
-    xs[kDS] += glm::dvec3(f.specular * w);
+    xs[kDS] += glm::dvec3((f.specular + f.coat) * w);
   };
   for (size_t i = 0; i < p.ctx.area_lights.size(); ++i) {
     const Light* l = p.ctx.area_lights[i];
@@ -128,10 +173,11 @@ void areaLightSample(ShadingPoint& p, Rng& rng, glm::dvec3* xs) {
     // Beyond the range window the light contributes exactly 0.
     if (windowDistance2(*l, p.P) >= l->range * l->range) continue;
     LightSample ls = sampleLight(*l, settings, p.P, u);
-    if (ls.pdf > 0.0f) add(ls, pdfVndf(ls.L));
-    if (vndf_ok) {
-      LightSample lv = evalLight(*l, settings, p.P, Lv);
-      if (lv.pdf > 0.0f) add(lv, pdfVndf(Lv));
+    if (ls.pdf > 0.0f) add(ls, pdfBrdf(ls.L));
+    for (int k = 0; k < strategies; ++k) {
+      if (!lv_ok[k]) continue;
+      LightSample lv = evalLight(*l, settings, p.P, Lv[k]);
+      if (lv.pdf > 0.0f) add(lv, pdfBrdf(Lv[k]));
     }
   }
 }
@@ -142,16 +188,14 @@ void areaLightSample(ShadingPoint& p, Rng& rng, glm::dvec3* xs) {
 void environmentSample(ShadingPoint& p, Rng& rng, glm::dvec3* xs) {
   const Context& ctx = p.ctx;
   const glsl::Surface& s = p.s;
-  const glm::vec3 &T = p.T, &B = p.B, &N = p.N, &Vs = p.Vs;
+  const glm::vec3 &T = p.T, &B = p.B, &N = p.N;
   glm::vec2 u1(rng.uniform(), rng.uniform());
   glm::vec2 u2(rng.uniform(), rng.uniform());
-  glm::vec3 Lw[4];
+  glm::vec3 Lw[5];
   int count = 2;
   glm::vec3 lt0 = glsl::sampleCosineHemisphere(u1);
   Lw[0] = T * lt0.x + B * lt0.y + N * lt0.z;
-  glm::vec3 Ht = glsl::sampleGGXVNDF(Vs, s.alpha, u2);
-  glm::vec3 lt1 = glm::reflect(-Vs, Ht);
-  Lw[1] = T * lt1.x + B * lt1.y + N * lt1.z;
+  vndfSample(T, B, N, p.Vs, s.alpha, u2, Lw[1]);
   if (ctx.env_dist) {
     float unused_pdf = 0.0f;
     Lw[count++] = ctx.env_dist->sample(glm::vec2(rng.uniform(), rng.uniform()), unused_pdf);
@@ -164,23 +208,29 @@ void environmentSample(ShadingPoint& p, Rng& rng, glm::dvec3* xs) {
     glsl::tangentFrame(ctx.sun_dir, sT, sB);
     Lw[count++] = sT * (st * std::cos(phi)) + sB * (st * std::sin(phi)) + ctx.sun_dir * ct;
   }
+  // The coat's VNDF (clear coat): its own strategy, drawn after the others so that a pixel
+  // without a coat draws the same numbers as before.
+  const bool coated = p.coat > 0.0f;
+  if (coated) {
+    vndfSample(p.Tc, p.Bc, p.cs.N, p.Vsc, p.cs.alpha, glm::vec2(rng.uniform(), rng.uniform()),
+               Lw[count++]);
+  }
   for (int k = 0; k < count; ++k) {
     const glm::vec3 L = glm::normalize(Lw[k]);
-    const glm::vec3 lt(glm::dot(L, T), glm::dot(L, B), glm::dot(L, N));
-    if (lt.z <= 0.0f) continue;
-    glm::vec3 h = glsl::safeNormalize(Vs + lt);
-    float VoH = glm::dot(Vs, h);
-    float p_cos = glsl::pdfCosineHemisphere(lt.z);
-    float p_spec = VoH > 0.0f ? glsl::pdfGGXVNDF(Vs, h, s.alpha) / (4.0f * VoH) : 0.0f;
+    if (!aboveSomeHorizon(p, L)) continue;
+    const float NoL = glm::dot(L, N);
+    float p_cos = NoL > 0.0f ? glsl::pdfCosineHemisphere(NoL) : 0.0f;
+    float p_spec = vndfPdf(T, B, N, p.Vs, s.alpha, L);
     float p_env = ctx.env_dist ? ctx.env_dist->pdf(L) : 0.0f;
     float p_sun = ctx.has_sun && glm::dot(L, ctx.sun_dir) >= ctx.sun_cos ? ctx.sun_pdf : 0.0f;
-    float pdf = p_cos + p_spec + p_env + p_sun;
+    float p_coat = coated ? vndfPdf(p.Tc, p.Bc, p.cs.N, p.Vsc, p.cs.alpha, L) : 0.0f;
+    float pdf = p_cos + p_spec + p_env + p_sun + p_coat;
     if (!(pdf > 0.0f) || !std::isfinite(pdf)) continue;
     if (p.visibility() && p.occluded(L, std::numeric_limits<float>::infinity())) continue;
-    Lobes f = brdfLobes(ctx.brdf, s, p.V, L, false);
-    glm::vec3 w = ctx.env.radiance(L) * (lt.z / pdf);
+    const CosLobes f = cosLobes(p, L, false);
+    glm::vec3 w = ctx.env.radiance(L) * (1.0f / pdf);
     xs[kAD] += glm::dvec3(f.diffuse * w * s.cavity);
-    xs[kAS] += glm::dvec3(f.specular * w * p.ambient_spec_scale);
+    xs[kAS] += glm::dvec3((f.specular * p.ambient_spec_scale + f.coat * p.coat_ambient_scale) * w);
   }
 }
 
@@ -211,6 +261,19 @@ void prepareSampling(ShadingPoint& p) {
   if (settings.energy_compensation) ab = integrateEnvBrdfAt(NoV, s.roughness, 1024, p.ctx.brdf);
   p.ambient_spec_scale = glsl::ambientSpecularScale(s, ab, NoV, settings.energy_compensation,
                                                     settings.specular_occlusion);
+  if (p.coat > 0.0f) {
+    const glm::vec3 Nc = p.cs.N;
+    glsl::tangentFrame(Nc, p.Tc, p.Bc);
+    glm::vec3 Vc(glm::dot(V, p.Tc), glm::dot(V, p.Bc), glm::dot(V, Nc));
+    p.Vsc = glm::normalize(glm::vec3(Vc.x, Vc.y, std::max(Vc.z, 1e-4f)));
+    const float NoVc = glm::clamp(glm::dot(Nc, V), 1e-4f, 1.0f);
+    glm::vec2 abc(0.0f);
+    if (settings.energy_compensation) {
+      abc = integrateEnvBrdfAt(NoVc, p.cs.roughness, 1024, p.ctx.brdf);
+    }
+    p.coat_ambient_scale = glsl::ambientSpecularScale(p.cs, abc, NoVc, settings.energy_compensation,
+                                                      settings.specular_occlusion);
+  }
 }
 
 }  // namespace
@@ -234,6 +297,12 @@ PixelOut shadePixel(const Context& ctx, size_t index, int x, int y) {
                  glm::normalize(ctx.scene->camera.position - P),
                  N,
                  ctx.vis ? rayOrigin(P, N, ctx.scene->camera.position) : P};
+  if (gb.hasCoat() && gb.model[index] == uint32_t(ShadingModel::ClearCoat)) {
+    const glm::vec3 Nc = glm::normalize(gb.coat_normal[index]);
+    p.coat = gb.clearcoat[index];
+    p.cs = glsl::makeCoatSurface(Nc, gb.clearcoat_roughness[index], gb.cavity[index]);
+    p.base_scale = glsl::coatBaseScale(p.coat, Nc, p.V);
+  }
   pointLights(p, out);
 
   // ---- Monte Carlo part: area lights, the environment and (visibility) the ambient occlusion.

@@ -112,7 +112,7 @@ void summarize(const GBufferReadback& gb, const std::vector<int>& samples,
     const auto model = static_cast<ShadingModel>(gb.model[i]);
     if (model == ShadingModel::Background) {
       ++st.background_pixels;
-    } else if (model != ShadingModel::DefaultLit) {
+    } else if (!isLit(model)) {
       ++st.unlit_pixels;
     } else {
       ++st.lit_pixels;
@@ -242,7 +242,7 @@ ReferenceResult renderReference(const Scene& scene, const GBufferReadback& gb,
         if (ctx.has_env) r.image.px[i] = backgroundRadiance(ctx, x, y);
         continue;
       }
-      if (model != ShadingModel::DefaultLit) continue;
+      if (!isLit(model)) continue;
       const PixelOut p = reference_detail::shadePixel(ctx, i, x, y);
       store(p, i, r, rel_error);
       row_rays += p.rays;

@@ -10,7 +10,8 @@ namespace hv::render {
 
 static_assert(uint32_t(ShadingModel::Background) == glsl::HV_MODEL_BACKGROUND &&
                   uint32_t(ShadingModel::Unlit) == glsl::HV_MODEL_UNLIT &&
-                  uint32_t(ShadingModel::DefaultLit) == glsl::HV_MODEL_DEFAULT_LIT,
+                  uint32_t(ShadingModel::DefaultLit) == glsl::HV_MODEL_DEFAULT_LIT &&
+                  uint32_t(ShadingModel::ClearCoat) == glsl::HV_MODEL_CLEAR_COAT,
               "GpuMaterial::shading_model holds hv::ShadingModel (gbuffer.glsl's HV_MODEL_*)");
 
 GpuMaterial packMaterial(const Material& m) {
@@ -27,6 +28,8 @@ GpuMaterial packMaterial(const Material& m) {
                  : m.alpha_mode == AlphaMode::Blend ? HV_ALPHA_BLEND
                                                     : HV_ALPHA_OPAQUE;
   g.shading_model = static_cast<uint32_t>(m.model);
+  g.clearcoat = m.model == ShadingModel::ClearCoat ? m.clearcoat : 0.0f;
+  g.clearcoat_roughness = m.clearcoat_roughness;
   g.texcoord_base_color = static_cast<uint32_t>(m.base_color_tex.texcoord);
   g.texcoord_metal_rough = static_cast<uint32_t>(m.metallic_roughness_tex.texcoord);
   g.texcoord_normal = static_cast<uint32_t>(m.normal_tex.texcoord);

@@ -21,7 +21,9 @@ void runGBufferPass(const PassContext& ctx, const GBufferPassInput& in,
   glBindFramebuffer(GL_FRAMEBUFFER, out.framebuffer);
   glViewport(0, 0, out.width, out.height);
   const float zero[4] = {0, 0, 0, 0};
-  for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(out.framebuffer, GL_COLOR, i, zero);
+  for (int i = 0; i < (out.coat ? 5 : 4); ++i) {
+    glClearNamedFramebufferfv(out.framebuffer, GL_COLOR, i, zero);
+  }
   const float far_depth = 0.0f;  // reversed Z clears to 0 (infinity)
   glClearNamedFramebufferfv(out.framebuffer, GL_DEPTH, 0, &far_depth);
   // Per-term debug views: the HDR target (attachment 3) keeps its clear value, 0, instead of the

@@ -51,8 +51,10 @@ struct FrameUniforms {
 // The four G-buffer targets as the passes after the G-buffer pass read them.
 struct GBufferView {
   GLuint base_cavity = 0, material = 0, normal = 0, depth = 0;
+  GLuint coat = 0;  // the coat target of a scene with clear coat, else 0
 };
-// Binds the G-buffer on units HV_UNIT_BASE_CAVITY .. HV_UNIT_DEPTH with `sampler`.
+// Binds the G-buffer on units HV_UNIT_BASE_CAVITY .. HV_UNIT_DEPTH, and its coat target (if any)
+// on HV_UNIT_COAT, with `sampler`.
 void bindGBuffer(gl::PassBindings& b, const GBufferView& g, GLuint sampler);
 
 // The tile light lists: culling's output, read by the light pass, the lights_per_tile view and
@@ -94,6 +96,7 @@ struct GBufferPassInput {
 struct GBufferPassOutput {
   GLuint framebuffer = 0;  // base+cavity, material, normal, HDR color attachments + depth
   int width = 0, height = 0;
+  bool coat = false;  // a fifth color attachment: the coat target (clear-coat scenes)
 };
 void runGBufferPass(const PassContext& ctx, const GBufferPassInput& in,
                     const GBufferPassOutput& out);

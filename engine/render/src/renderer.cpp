@@ -175,7 +175,8 @@ Manifest Renderer::manifest() const {
 
 void Renderer::ensureTargets(int w, int h) {
   Targets& t = *targets_;
-  if (t.width == w && t.height == h && t.gbuffer) return;
+  const bool coat = key_.clear_coat;
+  if (t.width == w && t.height == h && t.gbuffer && bool(t.coat) == coat) return;
   t = Targets{};
   t.width = w;
   t.height = h;
@@ -185,8 +186,14 @@ void Renderer::ensureTargets(int w, int h) {
   t.depth = gl::createTexture2D("gbuffer depth (reversed Z)", GL_DEPTH_COMPONENT32F, w, h);
   t.hdr = gl::createTexture2D("hdr accumulation", GL_RGBA16F, w, h);
   t.ldr = gl::createTexture2D("tone-mapped output", GL_RGBA8, w, h);
-  t.gbuffer = gl::createFramebuffer(
-      "gbuffer", {{&t.base_cavity}, {&t.material}, {&t.normal}, {&t.hdr}}, &t.depth);
+  if (coat) {
+    t.coat = gl::createTexture2D("gbuffer clear coat", GL_RGBA16_SNORM, w, h);
+    t.gbuffer = gl::createFramebuffer(
+        "gbuffer", {{&t.base_cavity}, {&t.material}, {&t.normal}, {&t.hdr}, {&t.coat}}, &t.depth);
+  } else {
+    t.gbuffer = gl::createFramebuffer(
+        "gbuffer", {{&t.base_cavity}, {&t.material}, {&t.normal}, {&t.hdr}}, &t.depth);
+  }
   t.output = gl::createFramebuffer("output", {{&t.ldr}});
   t.forward = gl::createFramebuffer("forward (hdr + gbuffer depth)", {{&t.hdr}}, &t.depth);
 }
@@ -259,7 +266,7 @@ Renderer::FrameLighting Renderer::lightFrame(const PassContext& ctx, FrameUnifor
   runGBufferPass(ctx,
                  {*scene_, *gpu_, key_, gbuffer_descs_, draw_order_,
                   (frame.block.frame_flags & kFrameNoEmissive) == 0},
-                 {t.gbuffer.id(), t.width, t.height});
+                 {t.gbuffer.id(), t.width, t.height, bool(t.coat)});
   // key_.settings: culling auto resolved (chooseCulling).
   lit.culled = key_.settings.culling == Culling::Tiled || view == DebugView::LightsPerTile;
   if (lit.culled) {
@@ -386,7 +393,7 @@ Renderer::LightWork Renderer::lightWork() const {
     for (int x = 0; x < t.width; ++x) {
       // The byte read back is the stored unorm8 code: as a float, what the shaders decode.
       const uint8_t stored = mat[(size_t(y) * t.width + x) * 4 + 2];
-      if (glsl::decodeShadingModel(stored / 255.0f) != glsl::HV_MODEL_DEFAULT_LIT) continue;
+      if (!glsl::isLitModel(glsl::decodeShadingModel(stored / 255.0f))) continue;
       ++w.lit_pixels;
       const size_t tile = size_t(y / kTileHeight) * tiles_x + x / kTileSize;
       w.light_pixel_evaluations += brute ? gpu_->lightCount() : ranges[tile * 2 + 1];
@@ -430,6 +437,21 @@ GBufferReadback Renderer::readGBuffer() const {
     g.roughness[i] = glsl::decodeRoughness16(glsl::vec2(mat[4 * i + 1], mat[4 * i + 3]));
     g.model[i] = glsl::decodeShadingModel(mat[4 * i + 2]);
     g.normal[i] = glsl::octDecode(glsl::vec2(nrm[2 * i], nrm[2 * i + 1]));
+  }
+  if (t.coat) {
+    std::vector<float> coat(n * 4);
+    glGetTextureImage(t.coat.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(coat.size() * 4), coat.data());
+    flipRows(coat, t.width, t.height, 4);
+    g.clearcoat.resize(n);
+    g.clearcoat_roughness.resize(n);
+    g.coat_normal.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+      const bool coated = g.model[i] == glsl::HV_MODEL_CLEAR_COAT;
+      g.clearcoat[i] = coated ? coat[4 * i + 2] : 0.0f;
+      g.clearcoat_roughness[i] = coated ? coat[4 * i + 3] : 0.0f;
+      g.coat_normal[i] =
+          coated ? glsl::octDecode(glsl::vec2(coat[4 * i], coat[4 * i + 1])) : g.normal[i];
+    }
   }
   return g;
 }

@@ -14,14 +14,15 @@ struct Renderer::Targets {
   gl::Texture material;     // RGBA8: metallic, roughness high byte, model id, roughness low byte
   gl::Texture normal;       // RG16_SNORM octahedral
   gl::Texture depth;        // DEPTH_COMPONENT32F reversed Z
+  gl::Texture coat;         // RGBA16_SNORM coat normal, weight, roughness (clear-coat scenes only)
   gl::Texture hdr;          // RGBA16F accumulation
   gl::Texture ldr;          // RGBA8 output
   gl::Texture floor;        // RGBA16F scratch of the floor pass (created when first needed)
-  gl::Framebuffer gbuffer;  // base, material, normal, hdr + depth
+  gl::Framebuffer gbuffer;  // base, material, normal, hdr (, coat) + depth
   gl::Framebuffer output;   // ldr
   gl::Framebuffer forward;  // hdr + depth: the blended surfaces (depth tested, not written)
   GBufferView gbufferView() const {
-    return {base_cavity.id(), material.id(), normal.id(), depth.id()};
+    return {base_cavity.id(), material.id(), normal.id(), depth.id(), coat ? coat.id() : 0u};
   }
 };
 

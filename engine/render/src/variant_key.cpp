@@ -14,8 +14,8 @@
 
 namespace hv::render {
 
-const std::array<MaterialFeatureField, 11>& materialFeatureFields() {
-  static const std::array<MaterialFeatureField, 11> fields = {{
+const std::array<MaterialFeatureField, 12>& materialFeatureFields() {
+  static const std::array<MaterialFeatureField, 12> fields = {{
       {"HV_MAT_BASE_COLOR_MAP", "base_color_map", &MaterialFeatures::base_color_map},
       {"HV_MAT_METAL_ROUGH_MAP", "metal_rough_map", &MaterialFeatures::metal_rough_map},
       {"HV_MAT_NORMAL_MAP", "normal_map", &MaterialFeatures::normal_map},
@@ -27,6 +27,7 @@ const std::array<MaterialFeatureField, 11>& materialFeatureFields() {
       {"HV_MAT_UV1", "uv1", &MaterialFeatures::uv1},
       {"HV_MAT_VERTEX_COLOR", "vertex_color", &MaterialFeatures::vertex_color},
       {"HV_MAT_TEX_TRANSFORM", "tex_transform", &MaterialFeatures::tex_transform},
+      {"HV_MAT_CLEAR_COAT", "clear_coat", &MaterialFeatures::clear_coat},
   }};
   return fields;
 }
@@ -64,6 +65,7 @@ MaterialFeatures materialFeatures(const Material& m, bool colored_mesh) {
                     (f.normal_map && m.normal_tex.transformed()) ||
                     (f.occlusion_map && m.occlusion_tex.transformed()) ||
                     (f.emissive_map && m.emissive_tex.transformed());
+  f.clear_coat = m.model == ShadingModel::ClearCoat;
   return f;
 }
 
@@ -261,6 +263,7 @@ std::string VariantKey::text() const {
   if (directional_lights) lights += std::string(lights.empty() ? "" : "+") + "directional";
   std::string models;
   if (default_lit) models += "default_lit";
+  if (clear_coat) models += std::string(models.empty() ? "" : "+") + "clear_coat";
   if (unlit) models += std::string(models.empty() ? "" : "+") + "unlit";
   return "lights " + (lights.empty() ? std::string("none") : lights) + "; models " +
          (models.empty() ? std::string("none") : models) + "; environment " +
@@ -301,7 +304,9 @@ VariantKey deriveVariantKey(const Scene& scene) {
     if (!drawn[i]) continue;
     const Material& m = scene.materials[i];
     k.unlit |= m.model == ShadingModel::Unlit;
-    k.default_lit |= m.model == ShadingModel::DefaultLit;
+    // A clear coat is default lit plus its coat: both compile the lit code.
+    k.default_lit |= isLit(m.model);
+    k.clear_coat |= m.model == ShadingModel::ClearCoat;
     k.blend |= m.alpha_mode == AlphaMode::Blend;
     if (k.uber) continue;
     const MaterialFeatures f = materialFeatures(m, colored[i]);
@@ -311,7 +316,7 @@ VariantKey deriveVariantKey(const Scene& scene) {
   }
   if (k.uber) {
     k.point_lights = k.sphere_lights = k.tube_lights = k.spot_lights = k.directional_lights = true;
-    k.unlit = k.default_lit = true;
+    k.unlit = k.default_lit = k.clear_coat = true;
     k.material_variants = {allMaterialFeatures()};
     for (size_t i = 0; i < scene.materials.size(); ++i) k.material_variant[i] = drawn[i] ? 0 : -1;
   }
@@ -518,6 +523,14 @@ std::vector<KeyDefine> gbufferDefines(const VariantKey& k, size_t variant, const
   return out;
 }
 
+// The light and ambient passes' clear-coat branch (HV_HAS_CLEAR_COAT).
+KeyDefine clearCoatDefine(const VariantKey& k) {
+  return {"HV_HAS_CLEAR_COAT", flag(k.clear_coat),
+          k.uber         ? "uber build"
+          : k.clear_coat ? "clear_coat materials present: the coat target and its lobe"
+                         : "no clear_coat material"};
+}
+
 std::vector<KeyDefine> lightDefines(const VariantKey& k, const Scene& scene) {
   const RenderSettings& s = k.settings;
   std::vector<KeyDefine> out = settingKeyDefines(k, scene, SettingPass::Light);
@@ -543,6 +556,7 @@ std::vector<KeyDefine> lightDefines(const VariantKey& k, const Scene& scene) {
     out.push_back({t.define, flag(t.on), w});
   }
   out.push_back({"HV_SHADOWS", flag(k.shadows), shadowsWhy(scene)});
+  out.push_back(clearCoatDefine(k));
   return out;
 }
 
@@ -562,6 +576,7 @@ std::vector<KeyDefine> ambientDefines(const VariantKey& k, const Scene& scene) {
                  k.uber          ? "uber build"
                  : k.default_lit ? "default_lit materials present"
                                  : "no default_lit material: no image-based lighting code"});
+  out.push_back(clearCoatDefine(k));
   for (KeyDefine& d : settingKeyDefines(k, scene, SettingPass::Ambient)) out.push_back(d);
   out.push_back({"HV_AMBIENT_TERMS", std::to_string(int(s.ambient_terms)),
                  s.ambient_terms == 3 ? "diffuse and specular (all terms)"

@@ -37,8 +37,9 @@ Camera parseCamera(const Ctx& ctx, const json& j) {
 
 Material parseMaterial(const Ctx& ctx, const json& j, const std::string& ptr, bool allow_name) {
   std::vector<std::string_view> keys = {
-      "base_color",   "metallic",     "roughness", "cavity",     "emissive",    "shading_model",
-      "double_sided", "vertex_color", "alpha",     "alpha_mode", "alpha_cutoff"};
+      "base_color",    "metallic",     "roughness",          "cavity", "emissive",
+      "shading_model", "double_sided", "vertex_color",       "alpha",  "alpha_mode",
+      "alpha_cutoff",  "clearcoat",    "clearcoat_roughness"};
   if (allow_name) keys.push_back("name");
   Obj o(ctx, j, ptr, keys);
   Material m;
@@ -57,8 +58,24 @@ Material parseMaterial(const Ctx& ctx, const json& j, const std::string& ptr, bo
   if (o.has("shading_model")) {
     m.model = o.enumeration<ShadingModel>("shading_model", m.model);
     if (m.model == ShadingModel::Background) {
-      o.fail("shading_model", "expected \"default_lit\" or \"unlit\", got \"background\"");
+      o.fail("shading_model",
+             "expected \"default_lit\", \"clear_coat\" or \"unlit\", got \"background\"");
     }
+  }
+  // KHR_materials_clearcoat's two factors. A coat makes the material clear_coat; clear_coat
+  // without a weight is a full coat (clearcoat 1), as the viewer's model menu sets it.
+  m.clearcoat_roughness = o.num("clearcoat_roughness", m.clearcoat_roughness, kUnit);
+  if (o.has("clearcoat")) {
+    m.clearcoat = o.num("clearcoat", m.clearcoat, kUnit);
+    if (m.model == ShadingModel::Unlit && m.clearcoat > 0.0f) {
+      o.fail("clearcoat", "an unlit material has no clear coat (shading_model is \"unlit\")");
+    }
+    if (m.clearcoat > 0.0f) m.model = ShadingModel::ClearCoat;
+    if (m.clearcoat == 0.0f && m.model == ShadingModel::ClearCoat) {
+      o.fail("clearcoat", "shading_model \"clear_coat\" needs clearcoat > 0, got 0");
+    }
+  } else if (m.model == ShadingModel::ClearCoat) {
+    m.clearcoat = 1.0f;
   }
   return m;
 }

@@ -414,6 +414,9 @@ void materialEdits(const Scene& loaded, const Scene& edited, Collector& c) {
     c.field(p + "/cavity", a.cavity, b.cavity, b.cavity);
     c.field(p + "/emissive", a.emissive, b.emissive, vec3(b.emissive));
     c.field(p + "/shading_model", a.model, b.model, name(b.model));
+    c.field(p + "/clearcoat", a.clearcoat, b.clearcoat, b.clearcoat);
+    c.field(p + "/clearcoat_roughness", a.clearcoat_roughness, b.clearcoat_roughness,
+            b.clearcoat_roughness);
     c.field(p + "/double_sided", a.double_sided, b.double_sided, b.double_sided);
     c.field(p + "/vertex_color", a.vertex_color, b.vertex_color, b.vertex_color);
     c.field(p + "/alpha", a.base_alpha, b.base_alpha, b.base_alpha);

@@ -15,7 +15,7 @@ namespace hv::eval {
 // (render::DebugView::DirectDiffuse ... AmbientSpecular, render::termView: that one term, no
 // emissive, black background; no emitter geometry whatever the renderer's ViewOptions) and
 // reads back each HDR image; pixels that are not
-// ShadingModel::DefaultLit are set to 0, as in the reference's AOVs. The next plain render()
+// a lit model (isLit) are set to 0, as in the reference's AOVs. The next plain render()
 // renders the normal image again.
 std::array<ImageRGBf, kReferenceAovCount> renderEngineAovs(render::Renderer& renderer, int width,
                                                            int height);

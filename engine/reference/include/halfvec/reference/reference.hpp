@@ -95,7 +95,7 @@ struct ReferenceResult {
 glm::mat4 referenceInvViewProj(const Camera& camera, int width, int height);
 
 // Renders the reference for the G-buffer `gb` of `scene` (gb.width x gb.height). Lit pixels
-// (ShadingModel::DefaultLit): direct + ambient light as described in docs/reference.md.
+// (isLit: default_lit, clear_coat): direct + ambient light as described in docs/reference.md.
 // Background: the full-resolution environment radiance along the view ray. Unlit: black (the
 // engine's emissive is not in GBufferReadback; compare lit and background pixels only).
 // Throws std::invalid_argument if the readback's arrays do not match its size.

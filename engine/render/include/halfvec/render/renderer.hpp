@@ -81,6 +81,12 @@ struct Manifest {
 };
 
 constexpr int kGBufferBytesPerPixel = 16;  // RGBA8 + RGBA8 + RG16 + D32F (docs/gbuffer.md)
+// The coat target (RGBA16 snorm) a scene with a clear_coat material adds.
+constexpr int kGBufferCoatBytesPerPixel = 8;
+// The G-buffer's bytes per pixel for a scene of this key.
+constexpr int gbufferBytesPerPixel(bool clear_coat) {
+  return kGBufferBytesPerPixel + (clear_coat ? kGBufferCoatBytesPerPixel : 0);
+}
 
 // Benchmark instrument (`halfvec bench --breakdown`): what the light pass runs per light.
 //  Shade      the real pass

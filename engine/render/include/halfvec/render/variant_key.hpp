@@ -29,6 +29,7 @@ struct MaterialFeatures {
   bool uv1 = false;              // an enabled map reads TEXCOORD_1 (else only TEXCOORD_0 exists)
   bool vertex_color = false;     // a mesh drawn with it has COLOR_0 and the material uses it
   bool tex_transform = false;    // an enabled map has a KHR_texture_transform
+  bool clear_coat = false;       // shading model clear_coat: writes the G-buffer's coat target
 
   auto operator<=>(const MaterialFeatures&) const = default;
   // Compact text of the enabled features, e.g. "base_color_map+normal_map"; "none" if none.
@@ -41,7 +42,7 @@ struct MaterialFeatureField {
   const char* name;    // normal_map
   bool MaterialFeatures::*member;
 };
-const std::array<MaterialFeatureField, 11>& materialFeatureFields();
+const std::array<MaterialFeatureField, 12>& materialFeatureFields();
 
 // The features a material uses, after the rules above (emissive map only with emissive,
 // occlusion map only with strength != 0, uv1 only if an enabled map reads set 1).
@@ -77,7 +78,10 @@ struct VariantKey {
   bool directional_lights = false;
   // Shading models present among the materials drawn. Background (no geometry) is always
   // possible, so it has no flag: the ambient pass always writes it.
-  bool unlit = false, default_lit = false;
+  // default_lit: a lit material (default_lit or clear_coat); clear_coat: a clear_coat material,
+  // whose coat target the G-buffer then has and whose branch the light and ambient passes
+  // compile (HV_HAS_CLEAR_COAT).
+  bool unlit = false, default_lit = false, clear_coat = false;
   EnvironmentKind environment = EnvironmentKind::None;
   // A light casts shadows (Light::shadows): the light programs contain the shadow lookup
   // (shaders/common/shadows.glsl) and the frame starts with the shadow-map pass.

@@ -23,7 +23,7 @@ namespace hv {
     static constexpr std::array names = std::to_array<std::string_view>({__VA_ARGS__}); \
   }
 
-HV_ENUM_NAMES(ShadingModel, "background", "unlit", "default_lit");
+HV_ENUM_NAMES(ShadingModel, "background", "unlit", "default_lit", "clear_coat");
 HV_ENUM_NAMES(Wrap, "repeat", "clamp_to_edge", "mirrored_repeat");
 HV_ENUM_NAMES(Filter, "nearest", "linear");
 HV_ENUM_NAMES(AlphaMode, "opaque", "mask", "blend");

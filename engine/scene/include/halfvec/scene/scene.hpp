@@ -24,8 +24,14 @@ struct Camera {
 };
 
 // Shading-model IDs as stored in the G-buffer (see docs/gbuffer.md). 0 marks background pixels.
-// Values are spaced so clear coat / cloth etc. fit without a new render target.
-enum class ShadingModel : uint8_t { Background = 0, Unlit = 1, DefaultLit = 2 };
+// ClearCoat is DefaultLit under a clear coat (Material::clearcoat): the light and ambient passes
+// branch on it, and only scenes with such a material compile that branch (docs/brdf.md,
+// "Clear coat").
+enum class ShadingModel : uint8_t { Background = 0, Unlit = 1, DefaultLit = 2, ClearCoat = 3 };
+// The models the light and ambient passes light (everything but background and unlit).
+constexpr bool isLit(ShadingModel m) {
+  return m == ShadingModel::DefaultLit || m == ShadingModel::ClearCoat;
+}
 
 // A decoded image owned by the scene (glTF textures). 8-bit RGBA, row 0 = top.
 struct ImageData {
@@ -76,6 +82,10 @@ struct Material {
   float cavity = 1.0f;       // small-scale occlusion, 1 = none
   glm::vec3 emissive{0.0f};  // linear radiance added as-is
   ShadingModel model = ShadingModel::DefaultLit;
+  // KHR_materials_clearcoat: the coat's layer weight and perceptual roughness. A material with
+  // clearcoat > 0 has model ClearCoat (the loaders set it), 0 is DefaultLit.
+  float clearcoat = 0.0f;
+  float clearcoat_roughness = 0.0f;
   AlphaMode alpha_mode = AlphaMode::Opaque;
   float alpha_cutoff = 0.5f;
   float base_alpha = 1.0f;

@@ -17,6 +17,11 @@ struct GBufferReadback {
   std::vector<float> metallic, roughness, cavity, depth;
   std::vector<glm::vec3> normal;
   std::vector<uint32_t> model;
+  // The clear coat (gbuffer.glsl's coat target), filled where the scene has one (else empty):
+  // layer weight, perceptual roughness and the coat's own normal, 0 and N off clear_coat pixels.
+  std::vector<float> clearcoat, clearcoat_roughness;
+  std::vector<glm::vec3> coat_normal;
+  bool hasCoat() const { return !clearcoat.empty(); }
 };
 
 }  // namespace hv

@@ -65,6 +65,8 @@ static_assert(offsetof(GpuMaterial, texcoord_metal_rough) == 68);
 static_assert(offsetof(GpuMaterial, texcoord_normal) == 72);
 static_assert(offsetof(GpuMaterial, texcoord_occlusion) == 76);
 static_assert(offsetof(GpuMaterial, texcoord_emissive) == 80);
+static_assert(offsetof(GpuMaterial, clearcoat) == 84);
+static_assert(offsetof(GpuMaterial, clearcoat_roughness) == 88);
 static_assert(offsetof(GpuMaterial, uv_linear) == 96);  // arrays: 16-byte aligned, stride 16
 static_assert(offsetof(GpuMaterial, uv_offset) == 96 + 16 * HV_MAT_SLOTS);
 }  // namespace hv::gpu_records

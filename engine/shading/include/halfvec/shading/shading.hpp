@@ -23,6 +23,7 @@ namespace {
 #include "halfvec/shaders/common/ltc_integrals.glsl"
 #include "halfvec/shaders/common/ltc.glsl"
 #include "halfvec/shaders/common/lights.glsl"
+#include "halfvec/shaders/common/clear_coat.glsl"
 #include "halfvec/shaders/common/cull.glsl"
 #include "halfvec/shaders/common/gbuffer.glsl"
 #include "halfvec/shaders/common/probes.glsl"
