@@ -1,5 +1,6 @@
 // glTF features beyond the core: COLOR_0 in each component type, KHR_texture_transform,
-// KHR_materials_emissive_strength, and the warnings for what the loader skips.
+// KHR_materials_emissive_strength, KHR_materials_clearcoat, and the warnings for what the loader
+// skips.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -281,6 +282,36 @@ TEST(GltfEmissiveStrength, ScalesTheEmissiveFactor) {
   j["materials"][0]["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] = -1;
   const std::string e = loadError(j, "emissive_strength_neg.gltf");
   EXPECT_NE(e.find("KHR_materials_emissive_strength.emissiveStrength"), std::string::npos) << e;
+}
+
+// KHR_materials_clearcoat: the two factors make a clear_coat material; the coat's textures are
+// not applied and warn once each, by name; a factor outside [0, 1] is an error naming it.
+TEST(GltfClearCoat, FactorsImportedTexturesWarn) {
+  json j = quad();
+  j["extensionsUsed"] = {"KHR_materials_clearcoat"};
+  j["materials"][0]["extensions"]["KHR_materials_clearcoat"] = {{"clearcoatFactor", 0.9},
+                                                                {"clearcoatRoughnessFactor", 0.2}};
+  const Loaded l = load(j, "clearcoat.gltf");
+  EXPECT_TRUE(l.warnings.empty()) << l.warnings.front();
+  const hv::Material& m = l.scene.materials.at(0);
+  EXPECT_EQ(m.model, hv::ShadingModel::ClearCoat);
+  EXPECT_FLOAT_EQ(m.clearcoat, 0.9f);
+  EXPECT_FLOAT_EQ(m.clearcoat_roughness, 0.2f);
+  j["materials"][0]["extensions"]["KHR_materials_clearcoat"]["clearcoatNormalTexture"] = {
+      {"index", 0}};
+  j["materials"][0]["extensions"]["KHR_materials_clearcoat"]["clearcoatTexture"] = {{"index", 0}};
+  const Loaded t = load(j, "clearcoat_tex.gltf");
+  EXPECT_EQ(t.warnings.size(), 2u);
+  EXPECT_EQ(countContaining(t.warnings, "clearcoatNormalTexture is not supported"), 1u);
+  EXPECT_EQ(countContaining(t.warnings, "clearcoatTexture is not supported"), 1u);
+  j["materials"][0]["extensions"]["KHR_materials_clearcoat"] = {{"clearcoatFactor", 0.0}};
+  EXPECT_EQ(load(j, "clearcoat_zero.gltf").scene.materials.at(0).model,
+            hv::ShadingModel::DefaultLit);
+  j["materials"][0]["extensions"]["KHR_materials_clearcoat"] = {{"clearcoatFactor", 2}};
+  const std::string e = loadError(j, "clearcoat_bad.gltf");
+  EXPECT_NE(e.find("KHR_materials_clearcoat.clearcoatFactor: expected 0..1, got 2"),
+            std::string::npos)
+      << e;
 }
 
 // Every extension the loader does not read warns once, naming it, wherever it is used; the

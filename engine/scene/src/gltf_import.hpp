@@ -122,9 +122,12 @@ class Importer {
   std::vector<Light> lights;  // KHR_lights_punctual instances, in node-visit order
 
  private:
-  static constexpr const char* kHonouredExtensions[] = {
-      "KHR_lights_punctual", "KHR_materials_emissive_strength",
-      "KHR_materials_pbrSpecularGlossiness", "KHR_mesh_quantization", "KHR_texture_transform"};
+  static constexpr const char* kHonouredExtensions[] = {"KHR_lights_punctual",
+                                                        "KHR_materials_clearcoat",
+                                                        "KHR_materials_emissive_strength",
+                                                        "KHR_materials_pbrSpecularGlossiness",
+                                                        "KHR_mesh_quantization",
+                                                        "KHR_texture_transform"};
 
   // ---- gltf_import.cpp: what is not imported, numbers of extension objects ------------------
   void noteExtension(const std::string& ext, const std::string& el);
@@ -162,6 +165,7 @@ class Importer {
   void materialTextures(const tinygltf::Material& g, const std::string& el, Material& m);
   void emission(const tinygltf::Material& g, const std::string& el, Material& m) const;
   void alphaMode(const tinygltf::Material& g, const std::string& el, Material& m) const;
+  void clearCoat(const tinygltf::Material& g, const std::string& el, Material& m);
   void specularGlossiness(const tinygltf::Value& v, const std::string& el, Material& m);
   int defaultMaterial();
 

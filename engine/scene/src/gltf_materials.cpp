@@ -1,5 +1,6 @@
 // Materials: metal/rough factors and textures, emission (KHR_materials_emissive_strength), alpha
-// modes, KHR_materials_pbrSpecularGlossiness approximated, and the glTF default material.
+// modes, clear coat (KHR_materials_clearcoat's factors), KHR_materials_pbrSpecularGlossiness
+// approximated, and the glTF default material.
 #include "gltf_import.hpp"
 
 #include <cmath>
@@ -20,6 +21,7 @@ void Importer::importMaterial(int i) {
   emission(g, el, m);
   m.double_sided = g.doubleSided;
   alphaMode(g, el, m);
+  clearCoat(g, el, m);
   auto sg = g.extensions.find("KHR_materials_pbrSpecularGlossiness");
   if (sg != g.extensions.end() && sg->second.IsObject()) {
     specularGlossiness(sg->second, el, m);
@@ -137,6 +139,32 @@ void Importer::specularGlossiness(const tinygltf::Value& v, const std::string& e
         "dropped)");
     warned_specgloss_ = true;
   }
+}
+
+// KHR_materials_clearcoat: clearcoatFactor and clearcoatRoughnessFactor (each 0..1, default 0); a
+// factor above 0 makes the material clear_coat (clear_coat.glsl). The coat's three textures are
+// not applied: one warning names them, and the coat takes its factors and the vertex normal.
+void Importer::clearCoat(const tinygltf::Material& g, const std::string& el, Material& m) {
+  auto cc = g.extensions.find("KHR_materials_clearcoat");
+  if (cc == g.extensions.end()) return;
+  const std::string xel = el + ".extensions.KHR_materials_clearcoat";
+  if (!cc->second.IsObject()) fail(xel, "expected an object");
+  auto factor = [&](const char* key) {
+    if (!cc->second.Has(key)) return 0.0f;
+    const float f = extNumber(cc->second, key, xel);
+    if (f < 0.0f || f > 1.0f) fail(xel + "." + key, "expected 0..1, got " + fmtFloat(f));
+    return f;
+  };
+  m.clearcoat = factor("clearcoatFactor");
+  m.clearcoat_roughness = factor("clearcoatRoughnessFactor");
+  for (const char* tex :
+       {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"}) {
+    if (!cc->second.Has(tex)) continue;
+    warnOnce(std::string("clearcoat ") + tex,
+             xel + "." + tex + " is not supported; ignored (the coat uses its factors" +
+                 (std::string(tex) == "clearcoatNormalTexture" ? " and the vertex normal)" : ")"));
+  }
+  if (m.clearcoat > 0.0f && m.model == ShadingModel::DefaultLit) m.model = ShadingModel::ClearCoat;
 }
 
 int Importer::defaultMaterial() {
