@@ -114,6 +114,20 @@ bool MaterialPanelModel::setShadingModel(ShadingModel model) {
   if (!m || model == ShadingModel::Background) return false;  // background is not a material
   const Material before = *m;
   m->model = model;
+  // clear_coat is the model of a coat above 0 (the scene loader's rule): a full coat when chosen
+  // without one; no coat once another model is chosen.
+  if (model == ShadingModel::ClearCoat && m->clearcoat == 0.0f) m->clearcoat = 1.0f;
+  if (model != ShadingModel::ClearCoat) m->clearcoat = 0.0f;
+  return apply(before);
+}
+
+bool MaterialPanelModel::setClearCoat(float weight, float roughness) {
+  Material* m = mut();
+  if (!m || m->model == ShadingModel::Unlit) return false;
+  const Material before = *m;
+  m->clearcoat = clamp01(weight);
+  m->clearcoat_roughness = clamp01(roughness);
+  m->model = m->clearcoat > 0.0f ? ShadingModel::ClearCoat : ShadingModel::DefaultLit;
   return apply(before);
 }
 

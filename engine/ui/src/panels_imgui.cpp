@@ -82,6 +82,12 @@ bool drawMaterialContents(MaterialPanelModel& model, bool* save_requested) {
   if (nameCombo("shading model", &model_index, names)) {
     changed |= model.setShadingModel(ShadingModel(model_index + 1));
   }
+  if (m.model != ShadingModel::Unlit) {
+    const bool coat = ImGui::SliderFloat("coat", &m.clearcoat, 0.0f, 1.0f);
+    if (ImGui::SliderFloat("coat rough", &m.clearcoat_roughness, 0.0f, 1.0f) || coat) {
+      changed |= model.setClearCoat(m.clearcoat, m.clearcoat_roughness);
+    }
+  }
   int alpha_mode = int(m.alpha_mode);
   if (nameCombo("alpha mode", &alpha_mode, enumNames<AlphaMode>())) {
     changed |= model.setAlphaMode(AlphaMode(alpha_mode));

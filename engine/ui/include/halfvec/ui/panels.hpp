@@ -45,6 +45,8 @@ class MaterialPanelModel {
   bool setCavity(float v);
   bool setEmissive(glm::vec3 e);
   bool setShadingModel(ShadingModel m);
+  // The clear coat's weight and roughness (0..1; weight 0: default_lit, above: clear_coat).
+  bool setClearCoat(float weight, float roughness);
   bool setAlpha(float v);  // the base colour's alpha: coverage when blended, tested when masked
   bool setAlphaMode(AlphaMode m);
 
