@@ -81,6 +81,7 @@ struct Option {
   std::function<void(RenderSettings&)> apply;
   bool shadows = false;    // the light casts shadows (the spheres shadow each other)
   bool occlusion = false;  // the screen-space AO scene (addOcclusionScene)
+  bool coat = false;       // every sphere under a full clear coat of the spheres' roughness
 };
 
 // What screen-space AO needs to meet its edge cases: an environment to occlude, a floor the
@@ -187,6 +188,25 @@ void addOcclusionOptions(std::vector<Option>& o) {
   }
 }
 
+// Clear coat (clear_coat.glsl): the coat's lobe at the same extremes as the base's, with the
+// representative-point and the LTC methods, and under screen-space AO (the coat's occlusion).
+void addClearCoatOptions(std::vector<Option>& o) {
+  o.push_back({"clear coat", [](RenderSettings&) {}, false, false, true});
+  o.push_back({"clear coat, ltc (all three)",
+               [](RenderSettings& s) {
+                 s.sphere_specular = SphereSpecular::Ltc;
+                 s.tube_specular = TubeSpecular::Ltc;
+                 s.tube_diffuse = TubeDiffuse::Ltc;
+               },
+               false, false, true});
+  o.push_back({"clear coat, ao=gtao, ao_specular=cone",
+               [](RenderSettings& s) {
+                 s.ao = AmbientOcclusion::Gtao;
+                 s.ao_specular = AoSpecular::Cone;
+               },
+               false, true, true});
+}
+
 // CI: the options whose code paths differ most (physical falloff divides by d^2 alone).
 std::vector<Option> ciSubset(const std::vector<Option>& all) {
   std::vector<Option> keep;
@@ -196,7 +216,8 @@ std::vector<Option> ciSubset(const std::vector<Option>& all) {
         x.name == "sphere_diffuse=horizon_correct" ||
         x.name == "tube_specular=smallest_angle_eq18" || x.name == "d=beckmann" ||
         x.name == "diffuse=burley" || x.name == "ltc (all three)" ||
-        x.name == "shadows, shadow_filter=pcss" || x.name == "ao=gtao, ao_specular=cone") {
+        x.name == "shadows, shadow_filter=pcss" || x.name == "ao=gtao, ao_specular=cone" ||
+        x.name == "clear coat, ltc (all three)") {
       keep.push_back(x);
     }
   }
@@ -209,6 +230,7 @@ std::vector<Option> options(bool small) {
   addLightOptions(o);
   addShadowOptions(o);
   addOcclusionOptions(o);
+  addClearCoatOptions(o);
   return small ? ciSubset(o) : o;
 }
 
@@ -226,6 +248,13 @@ std::vector<StabilityRow> runStabilitySweep(
         for (float roughness : {0.0f, 1.0f}) {
           Scene scene = baseScene(roughness);
           if (opt.occlusion) addOcclusionScene(scene);
+          if (opt.coat) {
+            for (Material& m : scene.materials) {
+              m.model = ShadingModel::ClearCoat;
+              m.clearcoat = 1.0f;
+              m.clearcoat_roughness = roughness;
+            }
+          }
           opt.apply(scene.settings);
           Light l;
           l.type = type;
