@@ -38,5 +38,6 @@ std::string scenesMarkdown(const std::vector<eval::SceneAccuracy>& scenes,
                            const std::string& heat_dir);
 // Screen-space ambient and specular occlusion against the reference with visibility.
 std::string occlusionMarkdown(const eval::OcclusionAccuracy& a);
+std::string clearCoatMarkdown(const eval::ClearCoatAccuracy& a);
 
 }  // namespace hv::app

@@ -34,6 +34,8 @@ tables to a markdown file, with heat maps in a folder next to it (<out stem>/*.p
   - tube lights: eq. 19 vs eq. 18, with/without normalization, ltc; karis_eq16 and ltc diffuse,
     over roughness x length x radius x orientation;
   - the ltc modes with another V or D term than the fitted lobe's;
+  - clear coat: a coated sphere under a sphere, tube and directional light and the sky, per
+    coat roughness and method, beside the same sphere without the coat;
   - ambient: split sum (table and EnvBRDFApprox) and SH9 vs the reference over roughness, for a
     uniform environment and each .hdr in $HV_ASSETS_DIR/env; EnvBRDFApprox vs the table;
   - shadows: each shadow filter against the reference with visibility rays, a sphere occluder
@@ -46,15 +48,15 @@ Options:
   --quick           small grids and images, few samples (a smoke test; seconds)
   --threads N       CPU threads (default: all cores)
   --only SECTION    measure and write only that section (minutes, not hours): shadows (the
-                    shadow filters against the traced reference), occlusion (screen-space AO)
-                    or directional (the directional-light sweep)
+                    shadow filters against the traced reference), occlusion (screen-space AO),
+                    directional (the directional-light sweep) or clearcoat (the clear coat)
   -h, --help        this text
 )";
 
 struct Options {
   std::string out;  // empty: docs/accuracy.md, the full report's place (not for --only)
   eval::AccuracyOptions eval;
-  std::string only;  // "shadows" or "occlusion": measure and write that section alone
+  std::string only;  // "shadows", "occlusion", ...: measure and write that section alone
 };
 
 Options parseArgs(const Args& args) {
@@ -70,9 +72,11 @@ Options parseArgs(const Args& args) {
       o.eval.threads = intInRange(a, optionValue(args, i), 0, 4096);
     } else if (a == "--only") {
       o.only = optionValue(args, i);
-      if (o.only != "shadows" && o.only != "occlusion" && o.only != "directional") {
-        throw UsageError{"--only: expected 'shadows', 'occlusion' or 'directional', got '" +
-                         o.only + "'"};
+      if (o.only != "shadows" && o.only != "occlusion" && o.only != "directional" &&
+          o.only != "clearcoat") {
+        throw UsageError{
+            "--only: expected 'shadows', 'occlusion', 'directional' or 'clearcoat', got '" +
+            o.only + "'"};
       }
     } else {
       throw UsageError{"unknown argument '" + a + "'"};
@@ -97,6 +101,7 @@ struct Measured {
   eval::PointLightAccuracy point;
   eval::SphereAccuracy sphere;
   eval::SphereAccuracy directional;
+  eval::ClearCoatAccuracy clear_coat;
   eval::TubeAccuracy tube;
   eval::AmbientAccuracy ambient;
   eval::ShadowAccuracy shadows;
@@ -122,6 +127,11 @@ Measured measure(const eval::AccuracyOptions& o, const std::string& only) {
     m.directional = eval::measureDirectionalLights(o);
     return m;
   }
+  if (only == "clearcoat") {
+    step("clear coat");
+    m.clear_coat = eval::measureClearCoat(o);
+    return m;
+  }
   step("point lights");
   m.point = eval::measurePointLights(o);
   step("sphere lights");
@@ -130,6 +140,8 @@ Measured measure(const eval::AccuracyOptions& o, const std::string& only) {
   m.directional = eval::measureDirectionalLights(o);
   step("tube lights");
   m.tube = eval::measureTubeLights(o);
+  step("clear coat");
+  m.clear_coat = eval::measureClearCoat(o);
   step("ambient");
   m.ambient = eval::measureAmbient(o);
   step("shadows");
@@ -168,11 +180,15 @@ std::string document(const Options& o, const Measured& m, double secs, const std
     md << directionalMarkdown(m.directional);
     return md.str();
   }
+  if (o.only == "clearcoat") {
+    md << clearCoatMarkdown(m.clear_coat);
+    return md.str();
+  }
   md << summaryMarkdown(m.sphere, m.tube, m.point, m.ambient) << pointLightMarkdown(m.point)
      << sphereMarkdown(m.sphere) << directionalMarkdown(m.directional) << tubeMarkdown(m.tube)
-     << otherBrdfMarkdown(m.sphere, m.tube) << ambientMarkdown(m.ambient)
-     << shadowsMarkdown(m.shadows) << scenesMarkdown(m.scenes, fs::path(o.out).stem().string())
-     << occlusionMarkdown(m.occlusion);
+     << otherBrdfMarkdown(m.sphere, m.tube) << clearCoatMarkdown(m.clear_coat)
+     << ambientMarkdown(m.ambient) << shadowsMarkdown(m.shadows)
+     << scenesMarkdown(m.scenes, fs::path(o.out).stem().string()) << occlusionMarkdown(m.occlusion);
   return md.str();
 }
 

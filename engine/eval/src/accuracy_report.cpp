@@ -15,6 +15,7 @@
 #include "halfvec/render/renderer.hpp"
 #include "halfvec/scene/primitives.hpp"
 #include "halfvec/scene/scene_loader.hpp"
+#include "lit_stats.hpp"
 
 namespace hv::eval {
 
@@ -33,6 +34,8 @@ std::string num(double v) {
   std::snprintf(b, sizeof b, "%g", v);
   return b;
 }
+
+}  // namespace
 
 // Images restricted to the pixels where `use` holds, packed into one row (for compareImages).
 ErrorMetrics compareMasked(const ImageRGBf& e, const ImageRGBf& r, const Mask& use) {
@@ -77,8 +80,10 @@ LitStats litStats(const ImageRGBf& e, const ImageRGBf& r, const ImageRGBf& se, c
   return s;
 }
 
+namespace {
+
 Mask litMask(const GBufferReadback& g) {
-  return [&g](size_t i) { return g.model[i] == static_cast<uint32_t>(ShadingModel::DefaultLit); };
+  return [&g](size_t i) { return isLit(ShadingModel(g.model[i])); };
 }
 
 // A row of metallic spheres (f0 = 1: ambient specular alone) above a row of white dielectric
@@ -164,8 +169,8 @@ void measureAmbientEnv(const AccuracyOptions& o, const Environment& env,
   for (float rough : roughness) {
     auto group = [&](bool metal) -> Mask {
       return [&g, metal, rough](size_t i) {
-        return g.model[i] == static_cast<uint32_t>(ShadingModel::DefaultLit) &&
-               (g.metallic[i] > 0.5f) == metal && std::abs(g.roughness[i] - rough) < 0.01f;
+        return isLit(ShadingModel(g.model[i])) && (g.metallic[i] > 0.5f) == metal &&
+               std::abs(g.roughness[i] - rough) < 0.01f;
       };
     };
     AmbientAccuracy::Row row;

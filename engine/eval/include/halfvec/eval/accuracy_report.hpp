@@ -59,6 +59,22 @@ struct TubeAccuracy {
 };
 TubeAccuracy measureTubeLights(const AccuracyOptions& o);
 
+// ---- Clear coat: a coated sphere under each light type and the sky, per coat roughness ----
+// Engine against the reference (both lobes, clear_coat.glsl) over the sphere's pixels, coated
+// (weight 1) and the same pixels of the same sphere without the coat, per specular method.
+struct ClearCoatAccuracy {
+  int width = 0, height = 0, samples = 0;
+  struct Row {
+    std::string light;   // sphere, tube, sun (a directional light of the sun's size), sky
+    std::string method;  // representative point, ltc, split sum
+    float coat_roughness = 0.0f;
+    LitStats coated, bare;
+  };
+  std::vector<Row> rows;
+  double seconds = 0.0;
+};
+ClearCoatAccuracy measureClearCoat(const AccuracyOptions& o);
+
 // ---- Ambient light: metallic and dielectric spheres per roughness, each environment ----
 struct AmbientAccuracy {
   int width = 0, height = 0, samples = 0;
