@@ -60,7 +60,7 @@ TEST(SceneLoader, EverySampleLoads) {
       for (int m : o.meshes) EXPECT_LT(m, int(s.meshes.size()));
     ++n;
   }
-  EXPECT_EQ(n, 11);  // every file in samples/scenes
+  EXPECT_EQ(n, 12);  // every file in samples/scenes
 }
 
 TEST(SceneLoader, DefaultSceneContents) {
