@@ -48,4 +48,20 @@ bool sphereTileRect(vec3 c, float r, vec2 scale, float near, vec2 viewport_px, i
   return true;
 }
 
+// Whether a sphere (center c, radius r) lies entirely outside a spot's lit cone: apex, unit axis,
+// outer half-angle theta <= pi/2 (cos_t, sin_t) capped at distance `range` along the axis
+// (Wronski 2017, "Cull that cone!"). In the plane of the axis and c, c's signed distance to the
+// cone's side line is cos_t |v x axis| - (v . axis) sin_t, v = c - apex; the cone's nearest point
+// to c lies on that line's ray or at the apex, so beyond r from the line is beyond r from the
+// cone. Past the cap plane (v . axis > r + range) or behind the apex (v . axis < -r, a cone of at
+// most a hemisphere lies in front of it) likewise. Conservative: it never culls a sphere that
+// meets the cone.
+bool sphereOutsideCone(vec3 c, float r, vec3 apex, vec3 axis, float cos_t, float range) {
+  vec3 v = c - apex;
+  float along = dot(v, axis);
+  float across = sqrt(max(dot(v, v) - along * along, 0.0f));
+  float sin_t = sqrt(max(1.0f - cos_t * cos_t, 0.0f));
+  return cos_t * across - along * sin_t > r || along > r + range || along < -r;
+}
+
 #endif

@@ -35,10 +35,14 @@
 
 // Per light, written by the binning stage: the view-space bounding sphere (center xyz, culling
 // radius w), the packed tile rectangle (x, y: see above), its light type (z: HV_LIGHT_POINT,
-// SPHERE or TUBE) and one unused word.
+// SPHERE or TUBE) and one unused word; for a spot its cone for the cone-versus-tile test (cull.glsl,
+// sphereOutsideCone): apex (view space) and range, unit axis (view space) and the outer angle's
+// cosine; apex.w = 0 for every other light (no cone test).
 struct CullLight {
   vec4 sphere;
   uvec4 rect;
+  vec4 cone_apex;
+  vec4 cone_axis;
 };
 
 // One dispatch's lights, a batch [first, end), and the per-group mask layout: mask_words words of

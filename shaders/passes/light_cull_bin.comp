@@ -3,7 +3,8 @@
 // band of HV_CULL_BIN_GROUP_ROWS group rows (so that a light covering the screen is binned by
 // several invocations, not by one): the light's bounding sphere (lightCullSphere) in view space and
 // its exact rectangle of tiles (sphereTileRect: tangent planes through the eye; none when the
-// sphere lies entirely nearer than the near plane or off screen); then, for every group of the
+// sphere lies entirely nearer than the near plane or off screen) and, for a spot, its cone (tested
+// against blocks and tiles: light_cull_walk.glsl); then, for every group of the
 // band that the rectangle overlaps and the sphere touches (sphere-box distance to the group's
 // AABB), the light's bit in the group's light mask (atomicOr: the same masks whatever the order).
 #include "light_cull_common.glsl"
@@ -26,6 +27,23 @@ void main() {
   vec4 sphere = vec4(c, r);
   if (gl_GlobalInvocationID.y == 0u) {
     cull_lights[i].sphere = sphere;
+    // A spot's cone (spotCone, spot.glsl: direction * scale, -cos_outer * scale) in view space,
+    // from its center (the apex of the cone lightCone reads), for the cone-versus-tile test.
+    vec4 apex = vec4(0.0), axis = vec4(0.0);
+#if HV_HAS_SPOT_LIGHTS
+    if ((lights[i].type & HV_LIGHT_SPOT_FLAG) != 0u) {
+      vec4 cone = lights[i].axis_length;
+      float scale = length(cone.xyz);
+      vec3 d = mat3(u_view) * (cone.xyz / scale);
+      // The range is widened by the 1e-4 the bounding sphere is (spotBoundingSphere), the cosine
+      // lowered by 1e-4 against its rounding from the scaled cone.
+      apex = vec4((u_view * vec4(lights[i].position_radius.xyz, 1.0)).xyz,
+                  lightCullRadius(lights[i]) * 1.0001);
+      axis = vec4(normalize(d), clamp(-cone.w / scale, 0.0, 1.0) - 1e-4);
+    }
+#endif
+    cull_lights[i].cone_apex = apex;
+    cull_lights[i].cone_axis = axis;
     cull_lights[i].rect = visible ? uvec4(uint(rect.x) | (uint(rect.y) << HV_CULL_RECT_SHIFT),
                                           uint(rect.z) | (uint(rect.w) << HV_CULL_RECT_SHIFT),
                                           type, 0u)

@@ -74,6 +74,18 @@ bool sphereTouchesBox(vec4 sphere, vec3 lo, vec3 hi) {
   vec3 q = clamp(sphere.xyz, lo, hi);
   return dot(q - sphere.xyz, q - sphere.xyz) <= sphere.w * sphere.w;
 }
+// A spot's cone against the box (lo, hi): false when the box's bounding sphere lies outside it
+// (sphereOutsideCone); true for every other light, and no code without spots.
+bool coneTouchesBox(uint i, vec3 lo, vec3 hi) {
+#if !HV_HAS_SPOT_LIGHTS
+  return true;
+#endif
+  vec4 apex = cull_lights[i].cone_apex;
+  vec4 axis = cull_lights[i].cone_axis;
+  vec3 c = 0.5 * (lo + hi);
+  return apex.w == 0.0 ||
+         !sphereOutsideCone(c, 0.5 * length(hi - lo), apex.xyz, axis.xyz, axis.w, apex.w);
+}
 uvec4 unpackRect(uvec2 r) {  // x0, y0, x1, y1
   return uvec4(r.x & HV_CULL_RECT_MASK, r.x >> HV_CULL_RECT_SHIFT, r.y & HV_CULL_RECT_MASK,
                r.y >> HV_CULL_RECT_SHIFT);

@@ -3,7 +3,7 @@
 // mask refined per block (rectangle and sphere-box tests against each block) into shared memory,
 // the group's mask cleared for the next frame or batch; (b) walk, every tile walks its block's mask
 // in light order, tests each light against itself (inside the light's rectangle, sphere-box
-// distance to the tile's AABB) and counts the hits per light type; (c) reserve, the group reserves
+// distance to the tile's AABB, a spot's cone against the AABB's sphere) and counts the hits per light type; (c) reserve, the group reserves
 // its tiles' entries with one atomicAdd on the list's total; (d) walk again, writing each tile's
 // list: points, then spheres, then tubes, each in light order.
 #ifndef HV_LIGHT_CULL_WALK_GLSL
@@ -56,7 +56,8 @@ void refine() {
         vec4 box_lo = s_block_bounds[2 * b];
         bool touch = valid && rect.x <= hi.x && rect.z >= lo.x && rect.y <= hi.y && rect.w >= lo.y &&
                      box_lo.w != 0.0 &&
-                     sphereTouchesBox(sphere, box_lo.xyz, s_block_bounds[2 * b + 1].xyz);
+                     sphereTouchesBox(sphere, box_lo.xyz, s_block_bounds[2 * b + 1].xyz) &&
+                     coneTouchesBox(i, box_lo.xyz, s_block_bounds[2 * b + 1].xyz);
         bits[b] |= touch ? 1u << k : 0u;
       }
     } while (m != 0u);
@@ -90,7 +91,8 @@ void walk(uvec2 tile, bool fill, inout uvec3 n, inout uvec3 cursor) {
         uvec4 rect = unpackRect(cull_lights[i].rect.xy);
         uint type = cull_lights[i].rect.z;
         bool hit = has_surface && tile.x >= rect.x && tile.x <= rect.z && tile.y >= rect.y &&
-                   tile.y <= rect.w && sphereTouchesBox(cull_lights[i].sphere, lo.xyz, hi);
+                   tile.y <= rect.w && sphereTouchesBox(cull_lights[i].sphere, lo.xyz, hi) &&
+                   coneTouchesBox(i, lo.xyz, hi);
         // Per type without indexing a vector by a variable (which a SIMD implementation may turn
         // into per-lane memory accesses): selects.
         uvec3 add = uvec3(type == 0u, type == 1u, type == 2u) * uint(hit);

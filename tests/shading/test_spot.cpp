@@ -5,9 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "halfvec/shading/light_gpu.hpp"
+#include "halfvec/shading/shading.hpp"
 
 namespace g = hv::glsl;
 
@@ -110,4 +112,45 @@ TEST(Spot, CullSphereHoldsTheConesSector) {
     }
     EXPECT_GT(inside_cone, 10000) << outer;
   }
+}
+
+// The cone-versus-tile test (cull.glsl, sphereOutsideCone) never culls a sphere that meets the
+// cone: for random cones (outer angle up to pi/2) and spheres, a sphere with a sampled point in
+// the capped cone is never reported outside; and it culls most spheres that are outside (the
+// conservative test keeps some near the apex and the cap's rim, whose fraction is bounded).
+TEST(Spot, ConeTestNeverCullsASphereThatMeetsTheCone) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  auto inCone = [](glm::vec3 p, glm::vec3 apex, glm::vec3 axis, float cos_t, float range) {
+    const glm::vec3 v = p - apex;
+    const float d = glm::length(v);
+    return d <= range && (d == 0.0f || glm::dot(v, axis) >= cos_t * d);
+  };
+  int met = 0, outside = 0, culled_outside = 0;
+  for (int c = 0; c < 10000; ++c) {
+    const glm::vec3 apex(4.0f * u(rng) - 2.0f, 4.0f * u(rng) - 2.0f, 4.0f * u(rng) - 2.0f);
+    const glm::vec3 axis = glm::normalize(glm::vec3(u(rng) - 0.5f, u(rng) - 0.5f, u(rng) - 0.5f));
+    const float theta = 1.5707963f * u(rng), cos_t = std::cos(theta), range = 0.5f + 3.0f * u(rng);
+    const glm::vec3 center(6.0f * u(rng) - 3.0f, 6.0f * u(rng) - 3.0f, 6.0f * u(rng) - 3.0f);
+    const float r = 0.05f + 0.6f * u(rng);
+    bool meets = inCone(center, apex, axis, cos_t, range);
+    for (int k = 0; k < 400 && !meets; ++k) {
+      glm::vec3 d(u(rng) - 0.5f, u(rng) - 0.5f, u(rng) - 0.5f);
+      if (glm::length(d) < 1e-3f) continue;
+      meets =
+          inCone(center + glm::normalize(d) * (r * std::cbrt(u(rng))), apex, axis, cos_t, range);
+    }
+    const bool culled = g::sphereOutsideCone(center, r, apex, axis, cos_t, range);
+    if (meets) {
+      ++met;
+      ASSERT_FALSE(culled) << "case " << c;
+    } else {
+      ++outside;
+      culled_outside += culled;
+    }
+  }
+  std::printf("cone test: %d spheres meet a cone, %d do not, of which %d culled\n", met, outside,
+              culled_outside);
+  EXPECT_GT(met, 400);
+  EXPECT_GT(culled_outside, outside * 8 / 10);
 }

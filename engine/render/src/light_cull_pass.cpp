@@ -11,7 +11,7 @@
 
 namespace hv::render {
 
-static_assert(sizeof(glsl::CullLight) == 32, "CullLight: vec4 + uvec4, std430");
+static_assert(sizeof(glsl::CullLight) == 64, "CullLight: vec4 + uvec4 + 2 vec4, std430");
 static_assert(sizeof(glsl::CullBatch) == 16, "CullBatch: 4 uints, std140");
 
 namespace {
