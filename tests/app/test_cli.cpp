@@ -64,6 +64,17 @@ TEST(Cli, BadSceneFailsAndWritesNothing) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+// A scene with a clear_coat material reports the G-buffer's coat target: 24 bytes per pixel.
+TEST(Cli, ClearCoatSceneReportsItsGBufferBytes) {
+  const fs::path png = tmp("coat.png"), stats = tmp("coat.json");
+  ASSERT_EQ(hv::app::runCli({"render", samples() + "/clear_coat.json", "--size", "96x54", "--out",
+                             png.string(), "--stats", stats.string()}),
+            0);
+  nlohmann::json j;
+  std::ifstream(stats) >> j;
+  EXPECT_EQ(j["gbuffer_bytes_per_pixel"].get<int>(), 24);
+}
+
 TEST(Cli, RendersDefaultSceneFiniteAndNotUniform) {
   const fs::path png = tmp("default.png"), pfm = tmp("default.pfm"), stats = tmp("default.json");
   ASSERT_EQ(hv::app::runCli({"render", samples() + "/default.json", "--size", "160x90", "--out",

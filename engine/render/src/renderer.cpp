@@ -167,6 +167,7 @@ Manifest Renderer::manifest() const {
   m.binary_cache = programs_.binaryCacheStatus();
   m.binary_hits = programs_.binaryHits();
   m.binary_misses = programs_.binaryMisses();
+  m.gbuffer_bytes_per_pixel = gbufferBytesPerPixel(key_.clear_coat);
   for (const auto& v : programs_.variants()) {
     if (v.last_frame == programs_.frame()) m.programs.push_back(v);
   }

@@ -350,10 +350,11 @@ void drawStatsContents(const StatsModel& stats, size_t light_count, size_t light
                        const std::string& gpu_name, const render::Manifest* manifest) {
   const auto& last = stats.last();
   if (!gpu_name.empty()) ImGui::TextWrapped("%s", gpu_name.c_str());
-  const double gbuffer_mib =
-      double(last.width) * last.height * render::kGBufferBytesPerPixel / (1024.0 * 1024.0);
-  ImGui::TextWrapped("%dx%d, G-buffer %d B/px = %.2f MiB", last.width, last.height,
-                     render::kGBufferBytesPerPixel, gbuffer_mib);
+  const int gbuffer_bytes =
+      manifest ? manifest->gbuffer_bytes_per_pixel : render::kGBufferBytesPerPixel;
+  const double gbuffer_mib = double(last.width) * last.height * gbuffer_bytes / (1024.0 * 1024.0);
+  ImGui::TextWrapped("%dx%d, G-buffer %d B/px = %.2f MiB", last.width, last.height, gbuffer_bytes,
+                     gbuffer_mib);
   const size_t tiles = size_t((last.width + render::kTileSize - 1) / render::kTileSize) *
                        size_t((last.height + render::kTileHeight - 1) / render::kTileHeight);
   ImGui::Text("lights %zu, in view %zu", light_count, lights_in_view);

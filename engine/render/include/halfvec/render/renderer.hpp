@@ -78,6 +78,7 @@ struct Manifest {
   std::string binary_cache;  // ProgramCache::binaryCacheStatus()
   size_t binary_hits = 0, binary_misses = 0;
   std::vector<gl::VariantInfo> programs;  // the programs the last frame used, in compile order
+  int gbuffer_bytes_per_pixel = 16;       // gbufferBytesPerPixel of the scene's key
 };
 
 constexpr int kGBufferBytesPerPixel = 16;  // RGBA8 + RGBA8 + RG16 + D32F (docs/gbuffer.md)
