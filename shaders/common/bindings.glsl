@@ -67,10 +67,14 @@
 #define HV_UNIT_COAT 15
 // Tone map: the HDR target.
 #define HV_UNIT_HDR 0
-// G-buffer pass: a material's textures on units HV_UNIT_MATERIAL_TEXTURES + 0..4 (base color,
-// metal-rough, normal, occlusion, emissive).
+// G-buffer pass: a material's textures on units HV_UNIT_MATERIAL_TEXTURES + 0..7 (base color,
+// metal-rough, normal, occlusion, emissive, then the clear coat's weight, roughness and normal:
+// the slots HV_MAT_SLOT_*). The forward pass binds the first HV_FORWARD_MATERIAL_TEXTURES of
+// them: its other units (LTC, shadows, environment) leave no room for the coat's, so a blended
+// coat takes its factors alone.
 #define HV_UNIT_MATERIAL_TEXTURES 0
-#define HV_MATERIAL_TEXTURE_COUNT 5
+#define HV_MATERIAL_TEXTURE_COUNT 8
+#define HV_FORWARD_MATERIAL_TEXTURES 5
 
 // ---- Image units -------------------------------------------------------------------------------
 #define HV_IMAGE_HDR 0    // the RGBA16F accumulation target the compute passes add into

@@ -72,6 +72,9 @@ struct GpuSunShadow {
 #define HV_MAT_EMISSIVE_TEX 16u
 #define HV_MAT_VERTEX_COLOR_BIT 32u   // multiply base colour and alpha by the vertex colour
 #define HV_MAT_TEX_TRANSFORM_BIT 64u  // some texture has a KHR_texture_transform
+#define HV_MAT_CLEARCOAT_TEX 128u            // KHR_materials_clearcoat's textures
+#define HV_MAT_CLEARCOAT_ROUGHNESS_TEX 256u
+#define HV_MAT_CLEARCOAT_NORMAL_TEX 512u
 // GpuMaterial::alpha_mode
 #define HV_ALPHA_OPAQUE 0u
 #define HV_ALPHA_MASK 1u
@@ -83,10 +86,13 @@ struct GpuSunShadow {
 #define HV_MAT_SLOT_NORMAL 2u
 #define HV_MAT_SLOT_OCCLUSION 3u
 #define HV_MAT_SLOT_EMISSIVE 4u
-#define HV_MAT_SLOTS 5
+#define HV_MAT_SLOT_CLEARCOAT 5u
+#define HV_MAT_SLOT_CLEARCOAT_ROUGHNESS 6u
+#define HV_MAT_SLOT_CLEARCOAT_NORMAL 7u
+#define HV_MAT_SLOTS 8
 
 // One material as the G-buffer pass reads it: std140 uniform block HV_UBO_MATERIAL
-// (material.glsl), 256 bytes; GpuScene keeps every material in one buffer, one per
+// (material.glsl), 368 bytes; GpuScene keeps every material in one buffer, one per
 // GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT stride. Offsets in bytes on the right.
 struct GpuMaterial {
   vec4 base_color;             //   0 linear rgb, alpha
@@ -107,11 +113,15 @@ struct GpuMaterial {
   uint texcoord_emissive;      //  80
   float clearcoat;             //  84 KHR_materials_clearcoat layer weight (shading_model 3)
   float clearcoat_roughness;   //  88 the coat's perceptual roughness
-  uint unused2;                //  92
+  uint texcoord_coat;          //  92 bit k: slot HV_MAT_SLOT_CLEARCOAT + k reads UV set 1
   // KHR_texture_transform per slot (HV_MAT_SLOT_*): uv_linear[i] = textureTransformLinear
   // (texture_transform.glsl), uv_offset[i].xy the offset.
   vec4 uv_linear[HV_MAT_SLOTS];  //  96
-  vec4 uv_offset[HV_MAT_SLOTS];  // 176
+  vec4 uv_offset[HV_MAT_SLOTS];  // 224
+  float clearcoat_normal_scale;  // 352 clearcoatNormalTexture.scale
+  float unused3;                 // 356
+  float unused4;                 // 360
+  float unused5;                 // 364
 };
 
 #endif

@@ -50,5 +50,8 @@
 #ifndef HV_MAT_CLEAR_COAT
 #define HV_MAT_CLEAR_COAT 1
 #endif
+#ifndef HV_MAT_CLEAR_COAT_MAPS
+#define HV_MAT_CLEAR_COAT_MAPS 1
+#endif
 
 #endif

@@ -15,7 +15,7 @@ layout(location = HV_LOC_MODEL) uniform mat4 u_model;
 layout(location = HV_LOC_NORMAL_MATRIX) uniform mat4 u_normal_matrix;  // inverse transpose of u_model
 
 layout(location = 0) out vec3 v_normal;
-#if HV_MAT_NORMAL_MAP
+#if HV_MAT_NORMAL_MAP || HV_MAT_CLEAR_COAT_MAPS
 layout(location = 1) out vec4 v_tangent;
 #endif
 layout(location = 2) out vec2 v_uv0;
@@ -29,7 +29,7 @@ layout(location = 4) out vec4 v_color;
 void main() {
   vec4 world = u_model * vec4(a_position, 1.0);
   v_normal = mat3(u_normal_matrix) * a_normal;
-#if HV_MAT_NORMAL_MAP
+#if HV_MAT_NORMAL_MAP || HV_MAT_CLEAR_COAT_MAPS
   v_tangent = vec4(mat3(u_model) * a_tangent.xyz, a_tangent.w);
 #endif
   v_uv0 = a_uv0;

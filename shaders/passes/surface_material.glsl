@@ -16,9 +16,14 @@ layout(binding = HV_UNIT_MATERIAL_TEXTURES + 1) uniform sampler2D t_metal_rough;
 layout(binding = HV_UNIT_MATERIAL_TEXTURES + 2) uniform sampler2D t_normal;
 layout(binding = HV_UNIT_MATERIAL_TEXTURES + 3) uniform sampler2D t_occlusion;
 layout(binding = HV_UNIT_MATERIAL_TEXTURES + 4) uniform sampler2D t_emissive;
+#if HV_MAT_CLEAR_COAT_MAPS
+layout(binding = HV_UNIT_MATERIAL_TEXTURES + 5) uniform sampler2D t_clearcoat;
+layout(binding = HV_UNIT_MATERIAL_TEXTURES + 6) uniform sampler2D t_clearcoat_roughness;
+layout(binding = HV_UNIT_MATERIAL_TEXTURES + 7) uniform sampler2D t_clearcoat_normal;
+#endif
 
 layout(location = 0) in vec3 v_normal;
-#if HV_MAT_NORMAL_MAP
+#if HV_MAT_NORMAL_MAP || HV_MAT_CLEAR_COAT_MAPS
 layout(location = 1) in vec4 v_tangent;
 #endif
 layout(location = 2) in vec2 v_uv0;
@@ -57,6 +62,26 @@ vec2 texUv(uint slot, uint set) {
 #endif
   return uv;
 }
+
+#if HV_MAT_NORMAL_MAP || HV_MAT_CLEAR_COAT_MAPS
+// A tangent-space normal map's normal (glTF 2.0 normalTexture: tn = 2 texel - 1, its xy times
+// `scale`) about the interpolated normal n and the vertex tangent; n where the frame or the
+// result degenerates.
+vec3 mappedNormal(vec3 n, vec3 texel, float scale) {
+  vec3 t = v_tangent.xyz - n * dot(n, v_tangent.xyz);
+  float tl = length(t);
+  if (tl > 1e-8) {
+    t /= tl;
+    vec3 b = cross(n, t) * (v_tangent.w < 0.0 ? -1.0 : 1.0);
+    vec3 tn = texel * 2.0 - 1.0;
+    tn.xy *= scale;
+    vec3 mapped = t * tn.x + b * tn.y + n * tn.z;
+    float ml = length(mapped);
+    if (ml > 1e-8) n = mapped / ml;
+  }
+  return n;
+}
+#endif
 
 struct SurfaceMaterial {
   vec4 base;  // linear base colour, alpha (coverage)
@@ -121,23 +146,30 @@ SurfaceMaterial surfaceMaterial() {
 #if HV_MAT_CLEAR_COAT
   sm.coat = m.shading_model == HV_MODEL_CLEAR_COAT ? m.clearcoat : 0.0;
   sm.coat_roughness = m.clearcoat_roughness;
+#if HV_MAT_CLEAR_COAT_MAPS
+  // KHR_materials_clearcoat's textures, each tested at run time even when specialized (one
+  // feature covers the three: a missing normal map must not be read as white).
+  uint coat_sets = m.texcoord_coat;
+  if ((m.texture_bits & HV_MAT_CLEARCOAT_TEX) != 0u) {
+    sm.coat *= texture(t_clearcoat, texUv(HV_MAT_SLOT_CLEARCOAT, coat_sets & 1u)).r;
+  }
+  if ((m.texture_bits & HV_MAT_CLEARCOAT_ROUGHNESS_TEX) != 0u) {
+    sm.coat_roughness *=
+        texture(t_clearcoat_roughness, texUv(HV_MAT_SLOT_CLEARCOAT_ROUGHNESS, (coat_sets >> 1u) & 1u)).g;
+  }
+  if ((m.texture_bits & HV_MAT_CLEARCOAT_NORMAL_TEX) != 0u) {
+    vec3 texel = texture(t_clearcoat_normal, texUv(HV_MAT_SLOT_CLEARCOAT_NORMAL, (coat_sets >> 2u) & 1u)).xyz;
+    sm.coat_n = mappedNormal(sm.coat_n, texel, m.clearcoat_normal_scale);
+  }
+#endif
 #else
   sm.coat = 0.0;
   sm.coat_roughness = 0.0;
 #endif
 #if HV_MAT_NORMAL_MAP
   if (HV_MAT_USES(HV_MAT_NORMAL_TEX)) {
-    vec3 t = v_tangent.xyz - n * dot(n, v_tangent.xyz);
-    float tl = length(t);
-    if (tl > 1e-8) {
-      t /= tl;
-      vec3 b = cross(n, t) * (v_tangent.w < 0.0 ? -1.0 : 1.0);
-      vec3 tn = texture(t_normal, texUv(HV_MAT_SLOT_NORMAL, m.texcoord_normal)).xyz * 2.0 - 1.0;
-      tn.xy *= m.normal_scale;  // glTF normalTexture.scale
-      vec3 mapped = t * tn.x + b * tn.y + n * tn.z;
-      float ml = length(mapped);
-      if (ml > 1e-8) n = mapped / ml;
-    }
+    n = mappedNormal(n, texture(t_normal, texUv(HV_MAT_SLOT_NORMAL, m.texcoord_normal)).xyz,
+                     m.normal_scale);  // glTF normalTexture.scale
   }
 #endif
   sm.n = n;

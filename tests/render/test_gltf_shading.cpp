@@ -132,3 +132,54 @@ TEST(GltfShading, TextureTransformMovesTheLookup) {
     }
   }
 }
+
+// KHR_materials_clearcoat's textures in the G-buffer's coat target: the weight texture's R and the
+// roughness texture's G multiply the factors (a 2-texel image: the two halves of the plane); the
+// coat's normal map tilts the coat's normal and leaves the base's alone; a coat without a normal
+// map keeps the vertex normal. Specialized and uber builds.
+TEST(GltfShading, ClearCoatTexturesReachTheCoatTarget) {
+  testContext();
+  auto coatPlane = [](bool uber, bool normal_map) {
+    Material m;
+    m.model = ShadingModel::ClearCoat;
+    m.clearcoat = 0.8f;
+    m.clearcoat_roughness = 0.5f;
+    Scene s = planeScene(m, 2.0f);
+    // Image 0: R 255 | 64 (weight), G 128 | 255 (roughness); image 1: a normal tilted along +x.
+    s.images.push_back({"coat", 2, 1, {255, 128, 0, 255, 64, 255, 0, 255}});
+    s.images.push_back({"tilt", 1, 1, {200, 128, 200, 255}});
+    Material& pm = s.materials.back();
+    for (TextureRef* t : {&pm.clearcoat_tex, &pm.clearcoat_roughness_tex}) {
+      t->image = 0;
+      t->sampler.min = t->sampler.mag = Filter::Nearest;
+      t->sampler.mipmaps = false;
+    }
+    if (normal_map) {
+      pm.clearcoat_normal_tex.image = 1;
+      pm.clearcoat_normal_tex.sampler.mipmaps = false;
+    }
+    s.settings.uber = uber;
+    return renderGBuffer(s);
+  };
+  for (bool uber : {false, true}) {
+    SCOPED_TRACE(uber ? "uber" : "specialized");
+    const GBufferReadback g = coatPlane(uber, true);
+    ASSERT_TRUE(g.hasCoat());
+    const size_t left = size_t(kSize / 2) * kSize + kSize / 4,
+                 right = size_t(kSize / 2) * kSize + 3 * kSize / 4;
+    const float w[2] = {g.clearcoat[left], g.clearcoat[right]};
+    const float r[2] = {g.clearcoat_roughness[left], g.clearcoat_roughness[right]};
+    // Which texel lands on which half depends on the plane's UVs: either order.
+    const bool swapped = w[0] < w[1];
+    EXPECT_NEAR(w[swapped ? 1 : 0], 0.8f, 2e-3f);
+    EXPECT_NEAR(w[swapped ? 0 : 1], 0.8f * 64.0f / 255.0f, 2e-3f);
+    EXPECT_NEAR(r[swapped ? 1 : 0], 0.5f * 128.0f / 255.0f, 2e-3f);
+    EXPECT_NEAR(r[swapped ? 0 : 1], 0.5f, 2e-3f);
+    // The coat's normal is tilted by its map; the base's is the plane's.
+    const float tilt = glm::dot(g.coat_normal[kCenter], g.normal[kCenter]);
+    EXPECT_LT(tilt, 0.95f);
+    EXPECT_GT(tilt, 0.5f);
+    const GBufferReadback flat = coatPlane(uber, false);
+    EXPECT_GT(glm::dot(flat.coat_normal[kCenter], flat.normal[kCenter]), 0.9999f);
+  }
+}

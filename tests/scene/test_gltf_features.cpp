@@ -284,31 +284,44 @@ TEST(GltfEmissiveStrength, ScalesTheEmissiveFactor) {
   EXPECT_NE(e.find("KHR_materials_emissive_strength.emissiveStrength"), std::string::npos) << e;
 }
 
-// KHR_materials_clearcoat: the two factors make a clear_coat material; the coat's textures are
-// not applied and warn once each, by name; a factor outside [0, 1] is an error naming it.
-TEST(GltfClearCoat, FactorsImportedTexturesWarn) {
-  json j = quad();
+// KHR_materials_clearcoat: the two factors make a clear_coat material; its three textures are
+// read with their texCoord and the normal map's scale; on a blended material they warn (the
+// forward pass applies the factors alone); a factor outside [0, 1] and a textureInfo without an
+// index are errors naming the field.
+TEST(GltfClearCoat, FactorsAndTexturesImported) {
+  json j = texturedQuad();
   j["extensionsUsed"] = {"KHR_materials_clearcoat"};
-  j["materials"][0]["extensions"]["KHR_materials_clearcoat"] = {{"clearcoatFactor", 0.9},
-                                                                {"clearcoatRoughnessFactor", 0.2}};
-  const Loaded l = load(j, "clearcoat.gltf");
+  auto& cc = j["materials"][0]["extensions"]["KHR_materials_clearcoat"];
+  cc = {{"clearcoatFactor", 0.9}, {"clearcoatRoughnessFactor", 0.2}};
+  Loaded l = load(j, "clearcoat.gltf");
   EXPECT_TRUE(l.warnings.empty()) << l.warnings.front();
   const hv::Material& m = l.scene.materials.at(0);
   EXPECT_EQ(m.model, hv::ShadingModel::ClearCoat);
   EXPECT_FLOAT_EQ(m.clearcoat, 0.9f);
   EXPECT_FLOAT_EQ(m.clearcoat_roughness, 0.2f);
-  j["materials"][0]["extensions"]["KHR_materials_clearcoat"]["clearcoatNormalTexture"] = {
-      {"index", 0}};
-  j["materials"][0]["extensions"]["KHR_materials_clearcoat"]["clearcoatTexture"] = {{"index", 0}};
-  const Loaded t = load(j, "clearcoat_tex.gltf");
-  EXPECT_EQ(t.warnings.size(), 2u);
-  EXPECT_EQ(countContaining(t.warnings, "clearcoatNormalTexture is not supported"), 1u);
-  EXPECT_EQ(countContaining(t.warnings, "clearcoatTexture is not supported"), 1u);
-  j["materials"][0]["extensions"]["KHR_materials_clearcoat"] = {{"clearcoatFactor", 0.0}};
+  EXPECT_FALSE(m.clearcoat_tex.valid());
+  cc["clearcoatTexture"] = {{"index", 0}};
+  cc["clearcoatRoughnessTexture"] = {{"index", 0}, {"texCoord", 1}};
+  cc["clearcoatNormalTexture"] = {{"index", 0}, {"scale", 0.5}};
+  l = load(j, "clearcoat_tex.gltf");
+  EXPECT_TRUE(l.warnings.empty()) << l.warnings.front();
+  const hv::Material& t = l.scene.materials.at(0);
+  EXPECT_TRUE(t.clearcoat_tex.valid());
+  EXPECT_EQ(t.clearcoat_roughness_tex.texcoord, 1);
+  EXPECT_FLOAT_EQ(t.clearcoat_normal_tex.scale, 0.5f);
+  j["materials"][0]["alphaMode"] = "BLEND";
+  l = load(j, "clearcoat_blend.gltf");
+  EXPECT_EQ(countContaining(l.warnings, "the coat's textures are not applied on a blended"), 1u);
+  j["materials"][0].erase("alphaMode");
+  cc["clearcoatNormalTexture"] = {{"scale", 0.5}};
+  std::string e = loadError(j, "clearcoat_noindex.gltf");
+  EXPECT_NE(e.find("clearcoatNormalTexture.index: expected a texture index"), std::string::npos)
+      << e;
+  cc = {{"clearcoatFactor", 0.0}};
   EXPECT_EQ(load(j, "clearcoat_zero.gltf").scene.materials.at(0).model,
             hv::ShadingModel::DefaultLit);
-  j["materials"][0]["extensions"]["KHR_materials_clearcoat"] = {{"clearcoatFactor", 2}};
-  const std::string e = loadError(j, "clearcoat_bad.gltf");
+  cc = {{"clearcoatFactor", 2}};
+  e = loadError(j, "clearcoat_bad.gltf");
   EXPECT_NE(e.find("KHR_materials_clearcoat.clearcoatFactor: expected 0..1, got 2"),
             std::string::npos)
       << e;

@@ -97,7 +97,9 @@ void ForwardPass::run(const PassContext& ctx, const Input& in, const Output& out
   const std::function<void(size_t)> set_lights = [&](size_t di) {
     glUniform2ui(HV_LOC_FORWARD_LIGHTS, ranges[di].x, ranges[di].y);
   };
-  drawScene(ctx, b, {in.scene, in.gpu, in.key, in.programs, order, &set_lights});
+  drawScene(
+      ctx, b,
+      {in.scene, in.gpu, in.key, in.programs, order, &set_lights, HV_FORWARD_MATERIAL_TEXTURES});
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   applyState(PipelineState{});
 }

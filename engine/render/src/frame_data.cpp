@@ -36,12 +36,19 @@ GpuMaterial packMaterial(const Material& m) {
   g.texcoord_occlusion = static_cast<uint32_t>(m.occlusion_tex.texcoord);
   g.texcoord_emissive = static_cast<uint32_t>(m.emissive_tex.texcoord);
   // In the order of the slots, HV_MAT_SLOT_*.
-  const TextureRef* refs[HV_MAT_SLOTS] = {&m.base_color_tex, &m.metallic_roughness_tex,
-                                          &m.normal_tex, &m.occlusion_tex, &m.emissive_tex};
-  const uint32_t tex_bits[HV_MAT_SLOTS] = {HV_MAT_BASE_COLOR_TEX, HV_MAT_METAL_ROUGH_TEX,
-                                           HV_MAT_NORMAL_TEX, HV_MAT_OCCLUSION_TEX,
-                                           HV_MAT_EMISSIVE_TEX};
+  const TextureRef* refs[HV_MAT_SLOTS] = {
+      &m.base_color_tex,          &m.metallic_roughness_tex, &m.normal_tex,
+      &m.occlusion_tex,           &m.emissive_tex,           &m.clearcoat_tex,
+      &m.clearcoat_roughness_tex, &m.clearcoat_normal_tex};
+  const uint32_t tex_bits[HV_MAT_SLOTS] = {
+      HV_MAT_BASE_COLOR_TEX,          HV_MAT_METAL_ROUGH_TEX,     HV_MAT_NORMAL_TEX,
+      HV_MAT_OCCLUSION_TEX,           HV_MAT_EMISSIVE_TEX,        HV_MAT_CLEARCOAT_TEX,
+      HV_MAT_CLEARCOAT_ROUGHNESS_TEX, HV_MAT_CLEARCOAT_NORMAL_TEX};
   uint32_t bits = m.vertex_color ? HV_MAT_VERTEX_COLOR_BIT : 0u;
+  for (uint32_t k = 0; k < 3; ++k) {
+    if (refs[HV_MAT_SLOT_CLEARCOAT + k]->texcoord == 1) g.texcoord_coat |= 1u << k;
+  }
+  g.clearcoat_normal_scale = m.clearcoat_normal_tex.scale;
   for (int i = 0; i < HV_MAT_SLOTS; ++i) {
     if (refs[i]->valid()) bits |= tex_bits[i];
     g.uv_linear[i] = glsl::textureTransformLinear(refs[i]->uv_scale, refs[i]->uv_rotation);

@@ -84,11 +84,15 @@ GpuScene::GpuScene(const Scene& scene) : scene_(&scene) {
 
   for (size_t i = 0; i < scene.materials.size(); ++i) {
     const Material& m = scene.materials[i];
-    std::array<BoundTexture, 5> t;
-    const TextureRef* refs[5] = {&m.base_color_tex, &m.metallic_roughness_tex, &m.normal_tex,
-                                 &m.occlusion_tex, &m.emissive_tex};
-    const bool srgb[5] = {true, false, false, false, true};
-    for (int s = 0; s < 5; ++s) {
+    std::array<BoundTexture, HV_MATERIAL_TEXTURE_COUNT> t;
+    // In the order of the slots (HV_MAT_SLOT_*, gpu_records.glsl).
+    const TextureRef* refs[HV_MATERIAL_TEXTURE_COUNT] = {
+        &m.base_color_tex,          &m.metallic_roughness_tex, &m.normal_tex,
+        &m.occlusion_tex,           &m.emissive_tex,           &m.clearcoat_tex,
+        &m.clearcoat_roughness_tex, &m.clearcoat_normal_tex};
+    const bool srgb[HV_MATERIAL_TEXTURE_COUNT] = {true, false, false, false,
+                                                  true, false, false, false};
+    for (int s = 0; s < HV_MATERIAL_TEXTURE_COUNT; ++s) {
       if (refs[s]->valid()) {
         t[s] = {textureFor(refs[s]->image, srgb[s]), samplerFor(refs[s]->sampler)};
       } else {
@@ -132,7 +136,7 @@ void GpuScene::updateLights(const Scene& scene) {
   }
 }
 
-std::array<BoundTexture, 5> GpuScene::materialTextures(int material) const {
+std::array<BoundTexture, HV_MATERIAL_TEXTURE_COUNT> GpuScene::materialTextures(int material) const {
   return material_textures_.at(material);
 }
 

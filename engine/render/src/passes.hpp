@@ -80,6 +80,9 @@ struct SceneDraws {
   const std::vector<size_t>& order;
   // Called before each draw with its index into gpu.draws(), after its program is bound.
   const std::function<void(size_t)>* before_draw = nullptr;
+  // The material textures bound per draw: all slots, or the forward pass's first
+  // HV_FORWARD_MATERIAL_TEXTURES (bindings.glsl).
+  GLuint material_textures = HV_MATERIAL_TEXTURE_COUNT;
 };
 void drawScene(const PassContext& ctx, gl::PassBindings& b, const SceneDraws& in);
 

@@ -1,5 +1,7 @@
 // The draw loop of the passes that draw the scene's geometry with its materials (the G-buffer
 // pass and the forward pass of blended surfaces).
+#include <algorithm>
+
 #include <glm/gtc/type_ptr.hpp>
 
 #include "passes.hpp"
@@ -39,7 +41,7 @@ void drawScene(const PassContext& ctx, gl::PassBindings& b, const SceneDraws& in
                      GLsizeiptr(sizeof(GpuMaterial)));
       const auto tex = in.gpu.materialTextures(d.material);
       static_assert(std::tuple_size_v<decltype(tex)> == HV_MATERIAL_TEXTURE_COUNT);
-      for (GLuint u = 0; u < tex.size(); ++u) {
+      for (GLuint u = 0; u < std::min<GLuint>(in.material_textures, GLuint(tex.size())); ++u) {
         b.texture(HV_UNIT_MATERIAL_TEXTURES + u, tex[u].texture, tex[u].sampler);
       }
     }

@@ -14,8 +14,8 @@
 
 namespace hv::render {
 
-const std::array<MaterialFeatureField, 12>& materialFeatureFields() {
-  static const std::array<MaterialFeatureField, 12> fields = {{
+const std::array<MaterialFeatureField, 13>& materialFeatureFields() {
+  static const std::array<MaterialFeatureField, 13> fields = {{
       {"HV_MAT_BASE_COLOR_MAP", "base_color_map", &MaterialFeatures::base_color_map},
       {"HV_MAT_METAL_ROUGH_MAP", "metal_rough_map", &MaterialFeatures::metal_rough_map},
       {"HV_MAT_NORMAL_MAP", "normal_map", &MaterialFeatures::normal_map},
@@ -28,6 +28,7 @@ const std::array<MaterialFeatureField, 12>& materialFeatureFields() {
       {"HV_MAT_VERTEX_COLOR", "vertex_color", &MaterialFeatures::vertex_color},
       {"HV_MAT_TEX_TRANSFORM", "tex_transform", &MaterialFeatures::tex_transform},
       {"HV_MAT_CLEAR_COAT", "clear_coat", &MaterialFeatures::clear_coat},
+      {"HV_MAT_CLEAR_COAT_MAPS", "clear_coat_maps", &MaterialFeatures::clear_coat_maps},
   }};
   return fields;
 }
@@ -66,6 +67,15 @@ MaterialFeatures materialFeatures(const Material& m, bool colored_mesh) {
                     (f.occlusion_map && m.occlusion_tex.transformed()) ||
                     (f.emissive_map && m.emissive_tex.transformed());
   f.clear_coat = m.model == ShadingModel::ClearCoat;
+  // The coat's textures count only on a coat (the G-buffer pass reads them there alone).
+  const TextureRef* coat_maps[3] = {&m.clearcoat_tex, &m.clearcoat_roughness_tex,
+                                    &m.clearcoat_normal_tex};
+  for (const TextureRef* t : coat_maps) {
+    if (!f.clear_coat || !t->valid()) continue;
+    f.clear_coat_maps = true;
+    f.uv1 |= t->texcoord == 1;
+    f.tex_transform |= t->transformed();
+  }
   return f;
 }
 
@@ -359,7 +369,7 @@ std::vector<std::string> validateKey(const VariantKey& k) {
     const std::string where = "material variant " + std::to_string(i) + ": ";
     if (f.emissive_map && !f.emissive) bad.push_back(where + "emissive map without emissive");
     if (f.uv1 && !(f.base_color_map || f.metal_rough_map || f.normal_map || f.occlusion_map ||
-                   f.emissive_map)) {
+                   f.emissive_map || f.clear_coat_maps)) {
       bad.push_back(where + "second UV set without any map");
     }
     if (std::count(k.material_variants.begin(), k.material_variants.end(), f) > 1) {
@@ -587,6 +597,14 @@ std::vector<KeyDefine> ambientDefines(const VariantKey& k, const Scene& scene) {
 
 std::vector<KeyDefine> forwardDefines(const VariantKey& k, size_t variant, const Scene& scene) {
   std::vector<KeyDefine> out = gbufferDefines(k, variant, scene);
+  // The forward pass has no texture units for the coat's maps (bindings.glsl,
+  // HV_FORWARD_MATERIAL_TEXTURES): a blended coat takes its factors alone.
+  for (KeyDefine& d : out) {
+    if (d.name == "HV_MAT_CLEAR_COAT_MAPS" && d.value != "0") {
+      d.value = "0";
+      d.why = "the forward pass binds no coat textures: a blended coat takes its factors";
+    }
+  }
   for (auto* defs : {lightDefines, ambientDefines}) {
     for (KeyDefine& d : defs(k, scene)) {
       const bool seen =

@@ -141,28 +141,51 @@ void Importer::specularGlossiness(const tinygltf::Value& v, const std::string& e
   }
 }
 
-// KHR_materials_clearcoat: clearcoatFactor and clearcoatRoughnessFactor (each 0..1, default 0); a
-// factor above 0 makes the material clear_coat (clear_coat.glsl). The coat's three textures are
-// not applied: one warning names them, and the coat takes its factors and the vertex normal.
+// KHR_materials_clearcoat: clearcoatFactor and clearcoatRoughnessFactor (each 0..1, default 0),
+// clearcoatTexture (R multiplies the weight), clearcoatRoughnessTexture (G multiplies the
+// roughness) and clearcoatNormalTexture (the coat's normal map, with its scale); a factor above 0
+// makes the material clear_coat (clear_coat.glsl). A blended material takes the factors alone.
 void Importer::clearCoat(const tinygltf::Material& g, const std::string& el, Material& m) {
   auto cc = g.extensions.find("KHR_materials_clearcoat");
   if (cc == g.extensions.end()) return;
+  const tinygltf::Value& v = cc->second;
   const std::string xel = el + ".extensions.KHR_materials_clearcoat";
-  if (!cc->second.IsObject()) fail(xel, "expected an object");
+  if (!v.IsObject()) fail(xel, "expected an object");
   auto factor = [&](const char* key) {
-    if (!cc->second.Has(key)) return 0.0f;
-    const float f = extNumber(cc->second, key, xel);
+    if (!v.Has(key)) return 0.0f;
+    const float f = extNumber(v, key, xel);
     if (f < 0.0f || f > 1.0f) fail(xel + "." + key, "expected 0..1, got " + fmtFloat(f));
     return f;
   };
   m.clearcoat = factor("clearcoatFactor");
   m.clearcoat_roughness = factor("clearcoatRoughnessFactor");
-  for (const char* tex :
-       {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"}) {
-    if (!cc->second.Has(tex)) continue;
-    warnOnce(std::string("clearcoat ") + tex,
-             xel + "." + tex + " is not supported; ignored (the coat uses its factors" +
-                 (std::string(tex) == "clearcoatNormalTexture" ? " and the vertex normal)" : ")"));
+  auto textureInfo = [&](const char* key) {
+    if (!v.Has(key)) return TextureRef{};
+    const tinygltf::Value& t = v.Get(key);
+    const std::string tel = xel + "." + key;
+    if (!t.IsObject()) fail(tel, "expected a textureInfo object");
+    const int index =
+        t.Has("index") && t.Get("index").IsInt() ? t.Get("index").GetNumberAsInt() : -1;
+    if (index < 0) fail(tel + ".index", "expected a texture index");
+    const int tc = t.Has("texCoord") ? t.Get("texCoord").GetNumberAsInt() : 0;
+    tinygltf::ExtensionMap exts;
+    if (t.Has("extensions") && t.Get("extensions").IsObject()) {
+      const tinygltf::Value& e = t.Get("extensions");
+      for (const std::string& k : e.Keys()) exts[k] = e.Get(k);
+    }
+    TextureRef r = texture(index, tc, exts, tel);
+    if (t.Has("scale")) r.scale = extNumber(t, "scale", tel);
+    return r;
+  };
+  m.clearcoat_tex = textureInfo("clearcoatTexture");
+  m.clearcoat_roughness_tex = textureInfo("clearcoatRoughnessTexture");
+  m.clearcoat_normal_tex = textureInfo("clearcoatNormalTexture");
+  const bool maps = m.clearcoat_tex.valid() || m.clearcoat_roughness_tex.valid() ||
+                    m.clearcoat_normal_tex.valid();
+  if (maps && g.alphaMode == "BLEND") {
+    warnOnce("clearcoat blend", xel +
+                                    ": the coat's textures are not applied on a blended "
+                                    "surface (alphaMode BLEND); its factors are");
   }
   if (m.clearcoat > 0.0f && m.model == ShadingModel::DefaultLit) m.model = ShadingModel::ClearCoat;
 }

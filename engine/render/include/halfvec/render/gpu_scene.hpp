@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "halfvec/gl/objects.hpp"
+#include "halfvec/shaders/common/bindings.glsl"
 #include "halfvec/scene/scene.hpp"
 
 namespace hv::render {
@@ -56,7 +57,7 @@ class GpuScene {
   size_t triangleCount() const { return triangles_; }
   const std::vector<DrawItem>& draws() const { return draws_; }
   // Texture units 0..4 for a material: base color, metal-rough, normal, occlusion, emissive.
-  std::array<BoundTexture, 5> materialTextures(int material) const;
+  std::array<BoundTexture, HV_MATERIAL_TEXTURE_COUNT> materialTextures(int material) const;
 
  private:
   GLuint textureFor(int image, bool srgb);
@@ -74,7 +75,7 @@ class GpuScene {
   size_t triangles_ = 0;
   std::map<std::pair<int, bool>, gl::Texture> textures_;
   std::map<uint32_t, gl::Sampler> samplers_;
-  std::vector<std::array<BoundTexture, 5>> material_textures_;
+  std::vector<std::array<BoundTexture, HV_MATERIAL_TEXTURE_COUNT>> material_textures_;
   gl::Texture white_;
   gl::Sampler default_sampler_;
 };

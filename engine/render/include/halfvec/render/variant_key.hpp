@@ -30,6 +30,8 @@ struct MaterialFeatures {
   bool vertex_color = false;     // a mesh drawn with it has COLOR_0 and the material uses it
   bool tex_transform = false;    // an enabled map has a KHR_texture_transform
   bool clear_coat = false;       // shading model clear_coat: writes the G-buffer's coat target
+  bool clear_coat_maps = false;  // a clear_coat material with a coat texture (weight, roughness,
+                                 // normal); read by the G-buffer pass only
 
   auto operator<=>(const MaterialFeatures&) const = default;
   // Compact text of the enabled features, e.g. "base_color_map+normal_map"; "none" if none.
@@ -42,7 +44,7 @@ struct MaterialFeatureField {
   const char* name;    // normal_map
   bool MaterialFeatures::*member;
 };
-const std::array<MaterialFeatureField, 12>& materialFeatureFields();
+const std::array<MaterialFeatureField, 13>& materialFeatureFields();
 
 // The features a material uses, after the rules above (emissive map only with emissive,
 // occlusion map only with strength != 0, uv1 only if an enabled map reads set 1).

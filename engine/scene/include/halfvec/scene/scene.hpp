@@ -98,6 +98,13 @@ struct Material {
   TextureRef normal_tex;
   TextureRef occlusion_tex;  // R -> Cavity
   TextureRef emissive_tex;   // sRGB
+  // KHR_materials_clearcoat's textures (clear_coat materials only): R multiplies the coat's
+  // weight, G its roughness; the coat's normal map (scale: its normalTexture.scale), in place
+  // of the vertex normal. The G-buffer pass applies them; the forward pass of blended surfaces
+  // has no texture units left for them and takes the factors alone (the loader warns).
+  TextureRef clearcoat_tex;
+  TextureRef clearcoat_roughness_tex;
+  TextureRef clearcoat_normal_tex;
 };
 
 struct Vertex {

@@ -48,7 +48,7 @@ static_assert(offsetof(GpuLight, shadow_cube) == 60);
 static_assert(sizeof(GpuLight::type) == 4 && sizeof(GpuLight::shadow_cube) == 4);
 
 // std140, the offsets written in gpu_records.glsl.
-static_assert(sizeof(GpuMaterial) == 256);
+static_assert(sizeof(GpuMaterial) == 368);
 static_assert(offsetof(GpuMaterial, base_color) == 0);
 static_assert(offsetof(GpuMaterial, metallic) == 16);
 static_assert(offsetof(GpuMaterial, roughness) == 20);
@@ -69,4 +69,6 @@ static_assert(offsetof(GpuMaterial, clearcoat) == 84);
 static_assert(offsetof(GpuMaterial, clearcoat_roughness) == 88);
 static_assert(offsetof(GpuMaterial, uv_linear) == 96);  // arrays: 16-byte aligned, stride 16
 static_assert(offsetof(GpuMaterial, uv_offset) == 96 + 16 * HV_MAT_SLOTS);
+static_assert(offsetof(GpuMaterial, texcoord_coat) == 92);
+static_assert(offsetof(GpuMaterial, clearcoat_normal_scale) == 96 + 32 * HV_MAT_SLOTS);
 }  // namespace hv::gpu_records
