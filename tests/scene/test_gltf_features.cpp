@@ -317,6 +317,12 @@ TEST(GltfClearCoat, FactorsAndTexturesImported) {
   std::string e = loadError(j, "clearcoat_noindex.gltf");
   EXPECT_NE(e.find("clearcoatNormalTexture.index: expected a texture index"), std::string::npos)
       << e;
+  cc["clearcoatNormalTexture"] = {{"index", 7}};
+  e = loadError(j, "clearcoat_range.gltf");
+  EXPECT_NE(e.find("clearcoatNormalTexture: texture index out of range"), std::string::npos) << e;
+  cc["clearcoatNormalTexture"] = {{"index", 0}, {"texCoord", "one"}};
+  e = loadError(j, "clearcoat_tc.gltf");
+  EXPECT_NE(e.find("clearcoatNormalTexture.texCoord: expected an integer"), std::string::npos) << e;
   cc = {{"clearcoatFactor", 0.0}};
   EXPECT_EQ(load(j, "clearcoat_zero.gltf").scene.materials.at(0).model,
             hv::ShadingModel::DefaultLit);

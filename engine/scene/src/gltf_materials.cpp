@@ -167,6 +167,9 @@ void Importer::clearCoat(const tinygltf::Material& g, const std::string& el, Mat
     const int index =
         t.Has("index") && t.Get("index").IsInt() ? t.Get("index").GetNumberAsInt() : -1;
     if (index < 0) fail(tel + ".index", "expected a texture index");
+    if (t.Has("texCoord") && !t.Get("texCoord").IsInt()) {
+      fail(tel + ".texCoord", "expected an integer");
+    }
     const int tc = t.Has("texCoord") ? t.Get("texCoord").GetNumberAsInt() : 0;
     tinygltf::ExtensionMap exts;
     if (t.Has("extensions") && t.Get("extensions").IsObject()) {
