@@ -242,6 +242,15 @@ double aoSample(ShadingPoint& p, Rng& ao_rng) {
   return p.occluded(L, p.ctx.opt->ao_distance) ? 0.0 : 1.0;
 }
 
+// The clear coat of G-buffer pixel `index` (clear_coat.glsl), where its model has one.
+void setCoat(ShadingPoint& p, const GBufferReadback& gb, size_t index) {
+  if (!gb.hasCoat() || gb.model[index] != uint32_t(ShadingModel::ClearCoat)) return;
+  const glm::vec3 Nc = glm::normalize(gb.coat_normal[index]);
+  p.coat = gb.clearcoat[index];
+  p.cs = glsl::makeCoatSurface(Nc, gb.clearcoat_roughness[index], gb.cavity[index]);
+  p.base_scale = glsl::coatBaseScale(p.coat, Nc, p.V);
+}
+
 // The tangent frame, the lifted view and the ambient specular's factors of p.
 void prepareSampling(ShadingPoint& p) {
   const RenderSettings& settings = p.ctx.scene->settings;
@@ -297,12 +306,7 @@ PixelOut shadePixel(const Context& ctx, size_t index, int x, int y) {
                  glm::normalize(ctx.scene->camera.position - P),
                  N,
                  ctx.vis ? rayOrigin(P, N, ctx.scene->camera.position) : P};
-  if (gb.hasCoat() && gb.model[index] == uint32_t(ShadingModel::ClearCoat)) {
-    const glm::vec3 Nc = glm::normalize(gb.coat_normal[index]);
-    p.coat = gb.clearcoat[index];
-    p.cs = glsl::makeCoatSurface(Nc, gb.clearcoat_roughness[index], gb.cavity[index]);
-    p.base_scale = glsl::coatBaseScale(p.coat, Nc, p.V);
-  }
+  setCoat(p, gb, index);
   pointLights(p, out);
 
   // ---- Monte Carlo part: area lights, the environment and (visibility) the ambient occlusion.
