@@ -8,7 +8,8 @@ namespace hv::app {
 std::string clearCoatMarkdown(const eval::ClearCoatAccuracy& a) {
   std::ostringstream md;
   md << "## Clear coat\n\n"
-     << "A red dielectric sphere (roughness 0.6) under a full clear coat (weight 1, F0 0.04; "
+     << "A dielectric sphere (base color (0.6, 0.5, 0.4), roughness 0.6) under a full clear coat "
+        "(weight 1, F0 0.04; "
         "shaders/common/clear_coat.glsl, docs/brdf.md \"Clear coat\") on a grey floor, lit by one "
         "light: a "
         "sphere light (radius 0.15 m), a tube (0.8 m by 0.05 m), the sun (a directional light of "

@@ -3,6 +3,7 @@
 // (clear_coat.glsl), beside the same sphere without its coat.
 #include <chrono>
 #include <cstdio>
+#include <stdexcept>
 
 #include "halfvec/eval/accuracy_report.hpp"
 #include "halfvec/reference/reference.hpp"
@@ -12,11 +13,7 @@
 
 namespace hv::eval {
 
-namespace {
-
-// A red dielectric sphere (roughness 0.6) on a grey floor, seen from the front, lit by one light
-// of `light` ("sphere", "tube", "sun") or by the sky ("sky"); coated with weight `coat`.
-Scene coatScene(const std::string& light, float coat, float coat_roughness) {
+Scene clearCoatScene(const std::string& light, float coat, float coat_roughness) {
   Scene s;
   s.camera.position = {0.0f, 1.6f, 3.2f};
   s.camera.target = {0.0f, 0.55f, 0.0f};
@@ -25,13 +22,14 @@ Scene coatScene(const std::string& light, float coat, float coat_roughness) {
   floor.roughness = 0.7f;
   addMeshObject(s, makePlane(6.0f, 6.0f), floor, glm::vec3(0.0f));
   Material paint;
-  paint.base_color = {0.7f, 0.08f, 0.05f};
+  paint.base_color = {0.6f, 0.5f, 0.4f};
   paint.roughness = 0.6f;
   paint.clearcoat = coat;
   paint.clearcoat_roughness = coat_roughness;
   paint.model = coat > 0.0f ? ShadingModel::ClearCoat : ShadingModel::DefaultLit;
   addMeshObject(s, makeSphere(0.55f, 64, 32), paint, {0.0f, 0.55f, 0.0f});
   s.environment.kind = light == "sky" ? EnvironmentKind::Sky : EnvironmentKind::None;
+  s.settings.falloff_plus_one = false;
   if (light == "sky") return s;
   Light l;
   l.position = {1.2f, 2.2f, 2.0f};
@@ -45,15 +43,18 @@ Scene coatScene(const std::string& light, float coat, float coat_roughness) {
     l.radius = 0.05f;
     l.length = 0.8f;
     l.axis = glm::normalize(glm::vec3(1.0f, 0.0f, -0.5f));
-  } else {
+  } else if (light == "sun") {
     l.type = LightType::Directional;
     l.direction = glm::normalize(glm::vec3(-0.4f, -1.0f, -0.7f));
     l.intensity = 3.0f;
+  } else if (light != "point") {
+    throw std::invalid_argument("clearCoatScene: unknown light '" + light + "'");
   }
   s.lights.push_back(l);
-  s.settings.falloff_plus_one = false;
   return s;
 }
+
+namespace {
 
 struct Method {
   const char* name;
@@ -109,10 +110,11 @@ ClearCoatAccuracy measureClearCoat(const AccuracyOptions& o) {
   for (const auto& l : lights) {
     // Without the coat: the base alone, per method, over the pixels the coat covers below.
     std::vector<Shot> bare;
-    for (const Method& m : l.methods) bare.push_back(shoot(coatScene(l.light, 0.0f, 0.0f), m));
-    const ReferenceResult bare_ref = renderReference(coatScene(l.light, 0.0f, 0.0f), bare[0].g, ro);
+    for (const Method& m : l.methods) bare.push_back(shoot(clearCoatScene(l.light, 0.0f, 0.0f), m));
+    const ReferenceResult bare_ref =
+        renderReference(clearCoatScene(l.light, 0.0f, 0.0f), bare[0].g, ro);
     for (float cr : roughness) {
-      const Scene s = coatScene(l.light, 1.0f, cr);
+      const Scene s = clearCoatScene(l.light, 1.0f, cr);
       ReferenceResult ref;
       for (size_t k = 0; k < l.methods.size(); ++k) {
         const Shot e = shoot(s, l.methods[k]);

@@ -8,6 +8,7 @@
 
 #include "halfvec/eval/light_accuracy.hpp"
 #include "halfvec/image/image.hpp"
+#include "halfvec/scene/scene.hpp"
 
 namespace hv::eval {
 
@@ -74,6 +75,12 @@ struct ClearCoatAccuracy {
   double seconds = 0.0;
 };
 ClearCoatAccuracy measureClearCoat(const AccuracyOptions& o);
+// The scene it measures (also the tests'): a sphere of base (0.6, 0.5, 0.4), roughness 0.6, under
+// a coat of weight `coat` on a grey floor, seen from the front, lit by one light over the camera's
+// right shoulder, `light` one of "point", "sphere" (radius 0.15 m), "tube" (0.8 m by 0.05 m),
+// "sun" (a directional light of the sun's angular diameter), or "sky" (the sky alone); physical
+// falloff.
+Scene clearCoatScene(const std::string& light, float coat, float coat_roughness);
 
 // ---- Ambient light: metallic and dielectric spheres per roughness, each environment ----
 struct AmbientAccuracy {

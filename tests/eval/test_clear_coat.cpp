@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "halfvec/eval/accuracy_report.hpp"
 #include "halfvec/ibl/ibl_math.hpp"
 #include "halfvec/platform/context.hpp"
 #include "halfvec/reference/reference.hpp"
@@ -26,40 +27,15 @@ Context& context() {
   return *ctx;
 }
 
-// A rough dielectric sphere under a glossy coat on a grey floor, seen from the front; one light of
-// the given type over the camera's right shoulder; physical falloff. No environment unless asked.
-// The base color is EngineVsReference's: where a channel is dark (below 0.1) the GPU's sRGB
-// decode of the G-buffer and the reference's exact curve differ by more than the point light's
-// tolerance (0.65% at 0.08, measured), which is the G-buffer's, not the coat's.
+// The accuracy report's scene (eval::clearCoatScene): a sphere of base (0.6, 0.5, 0.4) under a
+// coat on a grey floor, one light. Where a channel is dark (below 0.1) the GPU's sRGB decode of
+// the G-buffer and the reference's exact curve differ by more than the point light's tolerance
+// (0.65% at 0.08, measured), which is the G-buffer's, not the coat's: hence that base.
 Scene coatScene(LightType type, float coat = 1.0f, float coat_roughness = 0.1f) {
-  Scene s;
-  s.camera.position = {0.0f, 1.6f, 3.2f};
-  s.camera.target = {0.0f, 0.55f, 0.0f};
-  Material floor;
-  floor.base_color = {0.5f, 0.5f, 0.5f};
-  floor.roughness = 0.7f;
-  addMeshObject(s, makePlane(6.0f, 6.0f), floor, glm::vec3(0.0f));
-  Material paint;
-  paint.base_color = {0.6f, 0.5f, 0.4f};
-  paint.roughness = 0.6f;
-  paint.clearcoat = coat;
-  paint.clearcoat_roughness = coat_roughness;
-  paint.model = coat > 0.0f ? ShadingModel::ClearCoat : ShadingModel::DefaultLit;
-  addMeshObject(s, makeSphere(0.55f, 64, 32), paint, {0.0f, 0.55f, 0.0f});
-  Light l;
-  l.type = type;
-  l.position = {1.2f, 2.2f, 2.0f};
-  l.intensity = 8.0f;
-  l.range = 20.0f;
-  if (type == LightType::Sphere) l.radius = 0.15f;
-  if (type == LightType::Directional) {
-    l.direction = glm::normalize(glm::vec3(-0.4f, -1.0f, -0.7f));
-    l.intensity = 3.0f;
-  }
-  s.lights.push_back(l);
-  s.environment.kind = EnvironmentKind::None;
-  s.settings.falloff_plus_one = false;  // the physical mode of the accuracy comparisons
-  return s;
+  const char* name = type == LightType::Sphere        ? "sphere"
+                     : type == LightType::Directional ? "sun"
+                                                      : "point";
+  return eval::clearCoatScene(name, coat, coat_roughness);
 }
 
 struct Frame {
