@@ -6,6 +6,9 @@
 # compared here. Only --set options are used, so any build of halfvec renders the same scene
 # (a build before `--look gltf` included).
 #
+# Also prints the gain-fitted relative RMSE and the chromaticity distance (sample_image_rmse.py),
+# which an overall difference of brightness does not move.
+#
 # Usage: tools/gltf_sample_compare.sh HALFVEC OUTDIR MODEL.gltf...
 set -euo pipefail
 exe=$1 out=$2

@@ -5,7 +5,13 @@ Usage: sample_image_rmse.py RENDER.png EXPECTED.png X0 Y0 X1 Y1
 
 Both images must have the same size. Channels are 8-bit values / 255 (RGB; alpha ignored). The
 box [X0, X1) x [Y0, Y1) is where the model covers both images. Prints
-`rel_rmse=<RMSE / mean expected value> rmse=<RMSE> mean_abs=<mean |difference|>`.
+`rel_rmse=<RMSE / mean expected value> rmse=<RMSE> mean_abs=<mean |difference|>
+gain=<k> gain_rel_rmse=<rel. RMSE of k x render> chroma=<mean chromaticity distance>`: k is the
+least-squares gain of the render onto the expected image (sum R E / sum R^2), which takes out a
+difference of overall brightness (another environment's intensity, another exposure) and keeps
+the pattern: colors, coverage, what shows through; chroma is the mean over pixels of the
+distance between the two (r, g) chromaticities (r / (r + g + b), g / (r + g + b)), pixels with
+both sums above 0.05, which no brightness changes.
 Python's standard library only (zlib): decodes 8-bit RGB/RGBA, non-interlaced PNGs.
 """
 import struct
@@ -74,7 +80,27 @@ def main():
                 ref += q
                 n += 1
     rmse = (se / n) ** 0.5
-    print(f"rel_rmse={rmse / (ref / n):.4f} rmse={rmse:.4f} mean_abs={ae / n:.4f}")
+    re = rr = 0.0
+    chroma, nc = 0.0, 0
+    for y in range(y0, y1):
+        for x in range(x0, x1):
+            p = [a[y][x * c1 + k] / 255.0 for k in range(3)]
+            q = [b[y][x * c2 + k] / 255.0 for k in range(3)]
+            re += sum(pi * qi for pi, qi in zip(p, q))
+            rr += sum(pi * pi for pi in p)
+            sp, sq = sum(p), sum(q)
+            if sp > 0.05 and sq > 0.05:
+                chroma += ((p[0] / sp - q[0] / sq) ** 2 + (p[1] / sp - q[1] / sq) ** 2) ** 0.5
+                nc += 1
+    gain = re / rr if rr > 0.0 else 0.0
+    gse = 0.0
+    for y in range(y0, y1):
+        for x in range(x0, x1):
+            for k in range(3):
+                gse += (gain * a[y][x * c1 + k] / 255.0 - b[y][x * c2 + k] / 255.0) ** 2
+    grel = (gse / n) ** 0.5 / (ref / n)
+    print(f"rel_rmse={rmse / (ref / n):.4f} rmse={rmse:.4f} mean_abs={ae / n:.4f} "
+          f"gain={gain:.3f} gain_rel_rmse={grel:.4f} chroma={chroma / max(nc, 1):.4f}")
 
 
 if __name__ == "__main__":
