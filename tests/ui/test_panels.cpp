@@ -91,11 +91,24 @@ TEST(MaterialPanel, SettersClampToTheSceneFormatRanges) {
   EXPECT_EQ(model.current().base_alpha, 0.0f);
   EXPECT_TRUE(model.setAlphaMode(hv::AlphaMode::Blend));
   EXPECT_FALSE(model.setAlphaMode(hv::AlphaMode::Blend));
+  // The coat: an unlit material has none; a weight above 0 makes it clear_coat, 0 default_lit;
+  // choosing clear_coat in the menu gives a full coat; values are clamped to [0, 1].
+  EXPECT_FALSE(model.setClearCoat(0.5f, 0.1f));  // still unlit
+  EXPECT_TRUE(model.setShadingModel(hv::ShadingModel::DefaultLit));
+  EXPECT_TRUE(model.setClearCoat(0.5f, 2.0f));
+  EXPECT_EQ(model.current().model, hv::ShadingModel::ClearCoat);
+  EXPECT_EQ(model.current().clearcoat, 0.5f);
+  EXPECT_EQ(model.current().clearcoat_roughness, 1.0f);
+  EXPECT_TRUE(model.setClearCoat(0.0f, 0.1f));
+  EXPECT_EQ(model.current().model, hv::ShadingModel::DefaultLit);
+  EXPECT_TRUE(model.setShadingModel(hv::ShadingModel::ClearCoat));
+  EXPECT_EQ(model.current().clearcoat, 1.0f);
   EXPECT_TRUE(model.resetAll());
   EXPECT_EQ(model.current().alpha_mode, hv::AlphaMode::Opaque);
   EXPECT_EQ(model.current().base_alpha, 1.0f);
   EXPECT_EQ(model.current().roughness, 0.5f);
   EXPECT_EQ(model.current().model, hv::ShadingModel::DefaultLit);
+  EXPECT_EQ(model.current().clearcoat, 0.0f);
 }
 
 TEST(MaterialPanel, SaveMaterialsRoundTrip) {
