@@ -80,6 +80,7 @@
 #define HV_IMAGE_HDR 0    // the RGBA16F accumulation target the compute passes add into
 #define HV_IMAGE_FLOOR 1  // the floor pass's scratch target (DebugOptions::floor_pass)
 #define HV_IMAGE_AO 2     // the AO pass's targets: raw (gtao.comp), then denoised (ao_denoise.comp)
+#define HV_IMAGE_READBACK 1  // Renderer::readGBuffer's decoded base color (gbuffer_decode.comp)
 
 // ---- Uniform locations (explicit, so the C++ never looks a name up) ------------------------------
 #define HV_LOC_MODEL 0          // gbuffer.vert: object to world

@@ -28,9 +28,7 @@ Context& context() {
 }
 
 // The accuracy report's scene (eval::clearCoatScene): a sphere of base (0.6, 0.5, 0.4) under a
-// coat on a grey floor, one light. Where a channel is dark (below 0.1) the GPU's sRGB decode of
-// the G-buffer and the reference's exact curve differ by more than the point light's tolerance
-// (0.65% at 0.08, measured), which is the G-buffer's, not the coat's: hence that base.
+// coat on a grey floor, one light.
 Scene coatScene(LightType type, float coat = 1.0f, float coat_roughness = 0.1f) {
   const char* name = type == LightType::Sphere        ? "sphere"
                      : type == LightType::Directional ? "sun"

@@ -12,13 +12,17 @@
 
 using namespace hv;
 
-TEST(EngineVsReference, PointLightAgreesWithinPrecision) {
+namespace {
+
+// A sphere over a floor of base color `base` under one point light (physical falloff), rendered
+// at 64x48; every lit pixel of the engine within 4e-3 relative (+1e-5) of the reference.
+void expectPointLightAgrees(glm::vec3 base) {
   auto ctx = createHeadlessContext();
   Scene s;
   s.camera.position = {0.0f, 2.0f, 3.0f};
   s.camera.target = {0.0f, 0.0f, 0.0f};
   Material m;
-  m.base_color = {0.6f, 0.5f, 0.4f};
+  m.base_color = base;
   m.roughness = 0.35f;
   m.metallic = 0.2f;
   addMeshObject(s, makeSphere(0.8f, 48, 24), m, {0.0f, 0.8f, 0.0f});
@@ -48,4 +52,18 @@ TEST(EngineVsReference, PointLightAgreesWithinPrecision) {
     }
   }
   EXPECT_GT(lit, 1000);
+}
+
+}  // namespace
+
+TEST(EngineVsReference, PointLightAgreesWithinPrecision) {
+  expectPointLightAgrees({0.6f, 0.5f, 0.4f});
+}
+
+// Dark channels (0.08, 0.05): the reference reads the base color as the passes fetch it
+// (Renderer::readGBuffer, gbuffer_decode.comp). Decoded with the exact sRGB curve instead, the
+// engine was 0.65% brighter than the reference there on llvmpipe, whose decode differs from the
+// curve by that much, beyond the point light's tolerance.
+TEST(EngineVsReference, DarkBaseColorAgreesWithinPrecision) {
+  expectPointLightAgrees({0.7f, 0.08f, 0.05f});
 }

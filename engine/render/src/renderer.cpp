@@ -349,11 +349,6 @@ void flipRows(std::vector<T>& v, int w, int h, int comps) {
                      v.begin() + size_t(h - 1 - y) * w * comps);
   }
 }
-// IEC 61966-2-1 decoding of an 8-bit sRGB value.
-float srgbDecode(uint8_t v) {
-  const float s = v / 255.0f;
-  return s <= 0.04045f ? s / 12.92f : std::pow((s + 0.055f) / 1.055f, 2.4f);
-}
 }  // namespace
 
 ImageRGBf Renderer::readHdr() const {
@@ -409,12 +404,23 @@ GBufferReadback Renderer::readGBuffer() const {
   GBufferReadback g;
   g.width = t.width;
   g.height = t.height;
-  std::vector<float> mat(n * 4), nrm(n * 2), depth(n);
-  std::vector<uint8_t> base(n * 4);
-  // glGetTextureImage returns the stored sRGB bytes undecoded (decoding happens only on
-  // sampling), so decode them here with the exact sRGB curve.
-  glGetTextureImage(t.base_cavity.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(base.size()),
-                    base.data());
+  std::vector<float> mat(n * 4), nrm(n * 2), depth(n), base(n * 4);
+  // The base color as the light and ambient passes fetch it: the SRGB8 target's own decode
+  // (gbuffer_decode.comp), which the GL lets differ from the exact curve; the reference then
+  // shades the values the engine shaded.
+  {
+    const gl::Texture decoded =
+        gl::createTexture2D("gbuffer base color, decoded", GL_RGBA32F, t.width, t.height);
+    gl::PassBindings b(kPassSlots, "gbuffer readback");
+    b.use(
+        programs_.get({"gbuffer_decode", {{GL_COMPUTE_SHADER, "passes/gbuffer_decode.comp"}}, {}}));
+    b.texture(HV_UNIT_BASE_CAVITY, t.base_cavity.id(), nearest_.id());
+    b.image(HV_IMAGE_READBACK, decoded.id(), GL_WRITE_ONLY, GL_RGBA32F);
+    glDispatchCompute(GLuint(t.width + kTileSize - 1) / kTileSize,
+                      GLuint(t.height + kTileSize - 1) / kTileSize, 1);
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+    glGetTextureImage(decoded.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(base.size() * 4), base.data());
+  }
   glGetTextureImage(t.material.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(mat.size() * 4), mat.data());
   glGetTextureImage(t.normal.id(), 0, GL_RG, GL_FLOAT, GLsizei(nrm.size() * 4), nrm.data());
   glGetTextureImage(t.depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth.size() * 4),
@@ -431,9 +437,8 @@ GBufferReadback Renderer::readGBuffer() const {
   g.model.resize(n);
   g.depth = depth;
   for (size_t i = 0; i < n; ++i) {
-    g.base_color[i] = {srgbDecode(base[4 * i]), srgbDecode(base[4 * i + 1]),
-                       srgbDecode(base[4 * i + 2])};
-    g.cavity[i] = base[4 * i + 3] / 255.0f;  // alpha of an sRGB format is linear
+    g.base_color[i] = {base[4 * i], base[4 * i + 1], base[4 * i + 2]};
+    g.cavity[i] = base[4 * i + 3];  // alpha of an sRGB format is linear
     g.metallic[i] = mat[4 * i];
     g.roughness[i] = glsl::decodeRoughness16(glsl::vec2(mat[4 * i + 1], mat[4 * i + 3]));
     g.model[i] = glsl::decodeShadingModel(mat[4 * i + 2]);

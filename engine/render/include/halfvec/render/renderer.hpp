@@ -156,6 +156,8 @@ class Renderer {
   ImageRGBf readHdr() const;
   // The 8-bit output of the last frame, after the highlight and post-AA when they ran.
   ImageRGBA8 readLdr() const;
+  // The G-buffer decoded: base color and cavity as the passes fetch them (through the sRGB
+  // target's own decode, gbuffer_decode.comp), the other targets by the spec's conversions.
   GBufferReadback readGBuffer() const;
 
   struct LightWork {
@@ -220,7 +222,8 @@ class Renderer {
   std::unique_ptr<GpuScene> gpu_;
   std::unique_ptr<Targets> targets_;
   std::unique_ptr<Passes> passes_;
-  gl::ProgramCache programs_;
+  // A cache: readGBuffer (const) compiles its decode program through it on first use.
+  mutable gl::ProgramCache programs_;
   gl::PassTimer timer_;
   gl::Buffer frame_ubo_;
   gl::VertexArray empty_vao_;
