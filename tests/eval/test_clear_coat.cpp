@@ -10,22 +10,17 @@
 
 #include "halfvec/eval/accuracy_report.hpp"
 #include "halfvec/ibl/ibl_math.hpp"
-#include "halfvec/platform/context.hpp"
 #include "halfvec/reference/reference.hpp"
 #include "halfvec/render/renderer.hpp"
 #include "halfvec/scene/enums.hpp"
 #include "halfvec/scene/primitives.hpp"
 #include "halfvec/shading/brdf.hpp"
 #include "halfvec/shading/shading.hpp"
+#include "render/render_fixture.hpp"
 
 using namespace hv;
 
 namespace {
-
-Context& context() {
-  static auto ctx = createHeadlessContext();
-  return *ctx;
-}
 
 // The accuracy report's scene (eval::clearCoatScene): a sphere of base (0.6, 0.5, 0.4) under a
 // coat on a grey floor, one light.
@@ -36,19 +31,6 @@ Scene coatScene(LightType type, float coat = 1.0f, float coat_roughness = 0.1f) 
   return eval::clearCoatScene(name, coat, coat_roughness);
 }
 
-struct Frame {
-  ImageRGBf hdr;
-  GBufferReadback g;
-  render::VariantKey key;
-};
-Frame renderScene(const Scene& s, int w, int h) {
-  context();
-  render::Renderer r;
-  r.setScene(s);
-  r.render(w, h);
-  return {r.readHdr(), r.readGBuffer(), r.variantKey()};
-}
-
 bool coatPixel(const GBufferReadback& g, size_t i) {
   return g.model[i] == uint32_t(ShadingModel::ClearCoat);
 }
@@ -56,7 +38,7 @@ bool coatPixel(const GBufferReadback& g, size_t i) {
 // Relative RMSE of the engine against the reference (visibility off, 64 samples) over the
 // sphere's pixels (those whose depth differs from the floor-only render's), all three channels.
 double sphereError(Scene s, int w, int h) {
-  const Frame e = renderScene(s, w, h);
+  const RenderedFrame e = renderFrame(s, w, h);
   ReferenceOptions o;
   o.samples = 64;
   o.visibility = false;
@@ -64,7 +46,7 @@ double sphereError(Scene s, int w, int h) {
   // The sphere's pixels: its depth differs from the floor-only render's.
   Scene floor_only = s;
   floor_only.objects.pop_back();
-  const Frame f = renderScene(floor_only, w, h);
+  const RenderedFrame f = renderFrame(floor_only, w, h);
   double se = 0.0, sum = 0.0;
   size_t n = 0;
   for (size_t i = 0; i < e.hdr.px.size(); ++i) {
@@ -85,7 +67,7 @@ double sphereError(Scene s, int w, int h) {
 // without); it holds the coat's weight and roughness at their 15-bit snorm steps and, with no
 // normal map, the base's normal; other pixels read back weight 0.
 TEST(ClearCoat, GBufferHoldsTheCoat) {
-  const Frame f = renderScene(coatScene(LightType::Point, 0.8f, 0.15f), 64, 48);
+  const RenderedFrame f = renderFrame(coatScene(LightType::Point, 0.8f, 0.15f), 64, 48);
   EXPECT_TRUE(f.key.clear_coat);
   EXPECT_EQ(render::gbufferBytesPerPixel(f.key.clear_coat), 24);
   ASSERT_TRUE(f.g.hasCoat());
@@ -101,7 +83,7 @@ TEST(ClearCoat, GBufferHoldsTheCoat) {
     EXPECT_GT(glm::dot(f.g.coat_normal[i], f.g.normal[i]), 0.9999f) << "pixel " << i;
   }
   EXPECT_GT(coated, 250u);
-  const Frame plain = renderScene(coatScene(LightType::Point, 0.0f), 64, 48);
+  const RenderedFrame plain = renderFrame(coatScene(LightType::Point, 0.0f), 64, 48);
   EXPECT_FALSE(plain.key.clear_coat);
   EXPECT_FALSE(plain.g.hasCoat());
   EXPECT_EQ(render::gbufferBytesPerPixel(plain.key.clear_coat), 16);
@@ -116,7 +98,7 @@ TEST(ClearCoat, PointAndDirectionalLightsAreExact) {
   for (LightType type : {LightType::Point, LightType::Directional}) {
     Scene s = coatScene(type);
     if (type == LightType::Directional) s.lights[0].angular_diameter = 0.0f;
-    const Frame e = renderScene(s, w, h);
+    const RenderedFrame e = renderFrame(s, w, h);
     ReferenceOptions o;
     o.samples = 4;
     o.visibility = false;
@@ -140,8 +122,8 @@ TEST(ClearCoat, PointAndDirectionalLightsAreExact) {
 // F_c >= 0.04).
 TEST(ClearCoat, CoatAddsAHighlightAndDimsTheBase) {
   const int w = 96, h = 72;
-  const Frame coated = renderScene(coatScene(LightType::Point), w, h);
-  const Frame bare = renderScene(coatScene(LightType::Point, 0.0f), w, h);
+  const RenderedFrame coated = renderFrame(coatScene(LightType::Point), w, h);
+  const RenderedFrame bare = renderFrame(coatScene(LightType::Point, 0.0f), w, h);
   float peak_ratio = 0.0f;
   size_t dimmer = 0, compared = 0;
   for (size_t i = 0; i < coated.hdr.px.size(); ++i) {
@@ -271,9 +253,9 @@ TEST(ClearCoat, ReferenceWhiteFurnace) {
 TEST(ClearCoat, UberBuildWithoutCoatEqualsDefaultLit) {
   const int w = 64, h = 48;
   Scene s = coatScene(LightType::Sphere, 0.0f);
-  const Frame plain = renderScene(s, w, h);
+  const RenderedFrame plain = renderFrame(s, w, h);
   s.settings.uber = true;
-  const Frame uber = renderScene(s, w, h);
+  const RenderedFrame uber = renderFrame(s, w, h);
   EXPECT_TRUE(uber.key.clear_coat);
   for (size_t i = 0; i < plain.hdr.px.size(); ++i) {
     for (int k = 0; k < 3; ++k) {
@@ -293,11 +275,11 @@ TEST(ClearCoat, ForwardPassShadesTheCoat) {
   opaque.environment.kind = EnvironmentKind::Sky;
   Scene blended = opaque;
   blended.materials.back().alpha_mode = AlphaMode::Blend;
-  const Frame a = renderScene(opaque, w, h), b = renderScene(blended, w, h);
+  const RenderedFrame a = renderFrame(opaque, w, h), b = renderFrame(blended, w, h);
   Scene bare = blended;
   bare.materials.back().model = ShadingModel::DefaultLit;
   bare.materials.back().clearcoat = 0.0f;
-  const Frame c = renderScene(bare, w, h);
+  const RenderedFrame c = renderFrame(bare, w, h);
   size_t pixels = 0, differs = 0;
   for (size_t i = 0; i < a.hdr.px.size(); ++i) {
     if (!coatPixel(a.g, i)) continue;

@@ -8,20 +8,15 @@
 #include <cmath>
 #include <cstdio>
 
-#include "halfvec/platform/context.hpp"
 #include "halfvec/reference/reference.hpp"
 #include "halfvec/render/renderer.hpp"
 #include "halfvec/scene/primitives.hpp"
 #include "halfvec/shading/shading.hpp"
+#include "render/render_fixture.hpp"
 
 using namespace hv;
 
 namespace {
-
-Context& context() {
-  static auto ctx = createHeadlessContext();
-  return *ctx;
-}
 
 // A floor and a sphere seen from above, a sun from behind on the right (elevation about 55
 // degrees): lit floor, the sphere's lit and dark sides. No environment: the light alone.
@@ -44,18 +39,6 @@ Scene sunScene(float angular_diameter, float roughness = 0.4f, float metallic = 
   s.lights.push_back(l);
   s.environment.kind = EnvironmentKind::None;
   return s;
-}
-
-struct Frame {
-  ImageRGBf hdr;
-  GBufferReadback g;
-};
-Frame renderScene(const Scene& s, int w, int h) {
-  context();
-  render::Renderer r;
-  r.setScene(s);
-  r.render(w, h);
-  return {r.readHdr(), r.readGBuffer()};
 }
 
 bool litPixel(const GBufferReadback& g, size_t i) {
@@ -99,7 +82,7 @@ double bias(const ImageRGBf& a, const ImageRGBf& b, const GBufferReadback& g) {
 TEST(DirectionalLights, SingleDirectionIsExact) {
   const int w = 96, h = 72;
   const Scene s = sunScene(0.0f);
-  const Frame e = renderScene(s, w, h);
+  const RenderedFrame e = renderFrame(s, w, h);
   ReferenceOptions o;
   o.samples = 4;  // exact: no noise
   o.visibility = false;
@@ -146,7 +129,7 @@ TEST(DirectionalLights, SunDiskMatchesTheReference) {
     Scene s = sunScene(kSunAngularDiameter, c.roughness, c.roughness < 0.5f ? 1.0f : 0.0f);
     s.settings.sphere_specular = c.method;
     s.settings.sphere_normalization = c.normalization;
-    const Frame e = renderScene(s, w, h);
+    const RenderedFrame e = renderFrame(s, w, h);
     ReferenceOptions o;
     o.samples = 64;
     o.visibility = false;
@@ -175,7 +158,7 @@ TEST(DirectionalLights, WideDiskAcrossTheHorizonHorizonCorrect) {
   double err[2] = {0, 0};
   for (SphereDiffuse d : {SphereDiffuse::HorizonCorrect, SphereDiffuse::KarisPoint}) {
     s.settings.sphere_diffuse = d;
-    const Frame e = renderScene(s, w, h);
+    const RenderedFrame e = renderFrame(s, w, h);
     ReferenceOptions o;
     o.samples = 256;
     o.visibility = false;
@@ -195,7 +178,7 @@ TEST(DirectionalLights, SmallDiskIsTheSingleDirectionsLimit) {
   for (SphereSpecular method : {SphereSpecular::RepresentativePoint, SphereSpecular::Ltc}) {
     Scene delta = sunScene(0.0f, 0.3f, 1.0f), disk = sunScene(1e-4f, 0.3f, 1.0f);
     delta.settings.sphere_specular = disk.settings.sphere_specular = method;
-    const Frame a = renderScene(delta, w, h), b = renderScene(disk, w, h);
+    const RenderedFrame a = renderFrame(delta, w, h), b = renderFrame(disk, w, h);
     EXPECT_LT(relRmse(b.hdr, a.hdr, a.g), 1e-3) << int(method);
     ReferenceOptions o;
     o.samples = 16;
@@ -219,9 +202,9 @@ TEST(DirectionalLights, ReachEveryPixelInEveryPath) {
     s.lights.push_back(p);
   }
   s.settings.culling = Culling::Tiled;
-  const Frame tiled = renderScene(s, w, h);
+  const RenderedFrame tiled = renderFrame(s, w, h);
   s.settings.culling = Culling::BruteForce;
-  const Frame brute = renderScene(s, w, h);
+  const RenderedFrame brute = renderFrame(s, w, h);
   size_t lit = 0;
   for (size_t i = 0; i < tiled.hdr.px.size(); ++i) {
     for (int k = 0; k < 3; ++k) {
@@ -245,8 +228,8 @@ TEST(DirectionalLights, ReachEveryPixelInEveryPath) {
   quad.base_alpha = 0.5f;
   quad.alpha_mode = AlphaMode::Blend;
   addMeshObject(blended, makePlane(1.0f, 1.0f), quad, {0.5f, 0.3f, 0.5f});
-  const Frame f = renderScene(floor_only, w, h), q = renderScene(opaque, w, h),
-              m = renderScene(blended, w, h);
+  const RenderedFrame f = renderFrame(floor_only, w, h), q = renderFrame(opaque, w, h),
+                      m = renderFrame(blended, w, h);
   size_t quad_pixels = 0;
   for (size_t i = 0; i < f.hdr.px.size(); ++i) {
     if (q.g.depth[i] == f.g.depth[i]) continue;  // not the quad
@@ -270,7 +253,7 @@ TEST(DirectionalLights, ShadowsMatchTheTracedReference) {
   const int w = 96, h = 72;
   Scene s = sunScene(kSunAngularDiameter);
   s.lights[0].shadows = true;
-  const Frame plain = renderScene(
+  const RenderedFrame plain = renderFrame(
       [&] {
         Scene u = s;
         u.lights[0].shadows = false;
@@ -296,7 +279,7 @@ TEST(DirectionalLights, ShadowsMatchTheTracedReference) {
   for (const auto& f : filters) {
     Scene sf = s;
     sf.settings.shadow_filter = f.filter;
-    const Frame e = renderScene(sf, w, h);
+    const RenderedFrame e = renderFrame(sf, w, h);
     size_t shadowed = 0, both = 0;
     for (size_t i = 0; i < e.hdr.px.size(); ++i) {
       if (!litPixel(e.g, i) || ref_plain.image.px[i][1] <= 0.0f) continue;
@@ -322,11 +305,11 @@ TEST(DirectionalLights, ShadowsLeaveAnUnoccludedFloorLit) {
   s.objects.pop_back();  // the floor alone
   const float el = 15.0f * 3.14159265f / 180.0f;
   s.lights[0].direction = -glm::vec3(std::cos(el), std::sin(el), 0.0f);
-  const Frame plain = renderScene(s, w, h);
+  const RenderedFrame plain = renderFrame(s, w, h);
   s.lights[0].shadows = true;
   for (ShadowFilter f : {ShadowFilter::Hard, ShadowFilter::Pcf, ShadowFilter::Pcss}) {
     s.settings.shadow_filter = f;
-    const Frame e = renderScene(s, w, h);
+    const RenderedFrame e = renderFrame(s, w, h);
     for (size_t i = 0; i < e.hdr.px.size(); ++i) {
       for (int k = 0; k < 3; ++k) {
         ASSERT_EQ(e.hdr.px[i][k], plain.hdr.px[i][k]) << "filter " << int(f) << " pixel " << i;
@@ -343,7 +326,7 @@ TEST(DirectionalLights, ShadowsLeaveAnUnoccludedFloorLit) {
 TEST(DirectionalLights, WideDiskPcssPenumbraBeatsTheHardEdge) {
   const int w = 96, h = 72;
   Scene s = sunScene(0.15f);
-  const Frame plain = renderScene(s, w, h);
+  const RenderedFrame plain = renderFrame(s, w, h);
   ReferenceOptions o;
   o.samples = 256;
   o.visibility = false;
@@ -354,7 +337,7 @@ TEST(DirectionalLights, WideDiskPcssPenumbraBeatsTheHardEdge) {
   double err[2] = {0, 0};
   for (ShadowFilter f : {ShadowFilter::Hard, ShadowFilter::Pcss}) {
     s.settings.shadow_filter = f;
-    const Frame e = renderScene(s, w, h);
+    const RenderedFrame e = renderFrame(s, w, h);
     double sum = 0.0;
     size_t n = 0;
     for (size_t i = 0; i < e.hdr.px.size(); ++i) {

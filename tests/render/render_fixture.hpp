@@ -15,6 +15,21 @@ inline hv::Context& testContext() {
   return *ctx;
 }
 
+// One frame of scene `s` at w x h in a renderer of its own (in the binary's context): its HDR
+// image, its G-buffer read back and the variant key it was drawn with.
+struct RenderedFrame {
+  hv::ImageRGBf hdr;
+  hv::GBufferReadback g;
+  hv::render::VariantKey key;
+};
+inline RenderedFrame renderFrame(const hv::Scene& s, int w, int h) {
+  testContext();
+  hv::render::Renderer r;
+  r.setScene(s);
+  r.render(w, h);
+  return {r.readHdr(), r.readGBuffer(), r.variantKey()};
+}
+
 // A plane at y = 0 seen straight from above (camera at height 2 looking down -y), one material.
 inline hv::Scene planeScene(const hv::Material& m, float size = 10.0f) {
   hv::Scene s;

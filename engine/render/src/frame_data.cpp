@@ -14,6 +14,12 @@ static_assert(uint32_t(ShadingModel::Background) == glsl::HV_MODEL_BACKGROUND &&
                   uint32_t(ShadingModel::ClearCoat) == glsl::HV_MODEL_CLEAR_COAT,
               "GpuMaterial::shading_model holds hv::ShadingModel (gbuffer.glsl's HV_MODEL_*)");
 
+std::array<const TextureRef*, HV_MAT_SLOTS> materialTextureSlots(const Material& m) {
+  return {&m.base_color_tex,          &m.metallic_roughness_tex, &m.normal_tex,
+          &m.occlusion_tex,           &m.emissive_tex,           &m.clearcoat_tex,
+          &m.clearcoat_roughness_tex, &m.clearcoat_normal_tex};
+}
+
 GpuMaterial packMaterial(const Material& m) {
   GpuMaterial g{};
   g.base_color = glm::vec4(m.base_color, m.base_alpha);
@@ -35,11 +41,7 @@ GpuMaterial packMaterial(const Material& m) {
   g.texcoord_normal = static_cast<uint32_t>(m.normal_tex.texcoord);
   g.texcoord_occlusion = static_cast<uint32_t>(m.occlusion_tex.texcoord);
   g.texcoord_emissive = static_cast<uint32_t>(m.emissive_tex.texcoord);
-  // In the order of the slots, HV_MAT_SLOT_*.
-  const TextureRef* refs[HV_MAT_SLOTS] = {
-      &m.base_color_tex,          &m.metallic_roughness_tex, &m.normal_tex,
-      &m.occlusion_tex,           &m.emissive_tex,           &m.clearcoat_tex,
-      &m.clearcoat_roughness_tex, &m.clearcoat_normal_tex};
+  const auto refs = materialTextureSlots(m);
   const uint32_t tex_bits[HV_MAT_SLOTS] = {
       HV_MAT_BASE_COLOR_TEX,          HV_MAT_METAL_ROUGH_TEX,     HV_MAT_NORMAL_TEX,
       HV_MAT_OCCLUSION_TEX,           HV_MAT_EMISSIVE_TEX,        HV_MAT_CLEARCOAT_TEX,

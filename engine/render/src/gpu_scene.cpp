@@ -85,11 +85,8 @@ GpuScene::GpuScene(const Scene& scene) : scene_(&scene) {
   for (size_t i = 0; i < scene.materials.size(); ++i) {
     const Material& m = scene.materials[i];
     std::array<BoundTexture, HV_MATERIAL_TEXTURE_COUNT> t;
-    // In the order of the slots (HV_MAT_SLOT_*, gpu_records.glsl).
-    const TextureRef* refs[HV_MATERIAL_TEXTURE_COUNT] = {
-        &m.base_color_tex,          &m.metallic_roughness_tex, &m.normal_tex,
-        &m.occlusion_tex,           &m.emissive_tex,           &m.clearcoat_tex,
-        &m.clearcoat_roughness_tex, &m.clearcoat_normal_tex};
+    static_assert(HV_MATERIAL_TEXTURE_COUNT == HV_MAT_SLOTS, "one texture unit per slot");
+    const auto refs = materialTextureSlots(m);
     const bool srgb[HV_MATERIAL_TEXTURE_COUNT] = {true, false, false, false,
                                                   true, false, false, false};
     for (int s = 0; s < HV_MATERIAL_TEXTURE_COUNT; ++s) {

@@ -157,6 +157,7 @@ class Importer {
                         const std::string& el);
   TextureRef texture(int tex_index, int texcoord, const tinygltf::ExtensionMap& exts,
                      const std::string& el);
+  TextureRef textureInfo(const tinygltf::Value& t, const std::string& el);
   Sampler samplerOf(const tinygltf::Sampler& s, const std::string& el) const;
 
   // ---- gltf_materials.cpp ---------------------------------------------------------------------

@@ -123,15 +123,7 @@ void Importer::specularGlossiness(const tinygltf::Value& v, const std::string& e
                   ? finite(v.Get("glossinessFactor").GetNumberAsDouble(), el + ".glossinessFactor")
                   : 1.0f);
   if (v.Has("diffuseTexture")) {
-    const auto& t = v.Get("diffuseTexture");
-    const int index = t.Has("index") ? t.Get("index").GetNumberAsInt() : -1;
-    int tc = t.Has("texCoord") ? t.Get("texCoord").GetNumberAsInt() : 0;
-    tinygltf::ExtensionMap exts;
-    if (t.Has("extensions") && t.Get("extensions").IsObject()) {
-      const tinygltf::Value& e = t.Get("extensions");
-      for (const std::string& key : e.Keys()) exts[key] = e.Get(key);
-    }
-    m.base_color_tex = texture(index, tc, exts, el + ".diffuseTexture");
+    m.base_color_tex = textureInfo(v.Get("diffuseTexture"), el + ".diffuseTexture");
   }
   if (!warned_specgloss_) {
     warn(
@@ -159,30 +151,12 @@ void Importer::clearCoat(const tinygltf::Material& g, const std::string& el, Mat
   };
   m.clearcoat = factor("clearcoatFactor");
   m.clearcoat_roughness = factor("clearcoatRoughnessFactor");
-  auto textureInfo = [&](const char* key) {
-    if (!v.Has(key)) return TextureRef{};
-    const tinygltf::Value& t = v.Get(key);
-    const std::string tel = xel + "." + key;
-    if (!t.IsObject()) fail(tel, "expected a textureInfo object");
-    const int index =
-        t.Has("index") && t.Get("index").IsInt() ? t.Get("index").GetNumberAsInt() : -1;
-    if (index < 0) fail(tel + ".index", "expected a texture index");
-    if (t.Has("texCoord") && !t.Get("texCoord").IsInt()) {
-      fail(tel + ".texCoord", "expected an integer");
-    }
-    const int tc = t.Has("texCoord") ? t.Get("texCoord").GetNumberAsInt() : 0;
-    tinygltf::ExtensionMap exts;
-    if (t.Has("extensions") && t.Get("extensions").IsObject()) {
-      const tinygltf::Value& e = t.Get("extensions");
-      for (const std::string& k : e.Keys()) exts[k] = e.Get(k);
-    }
-    TextureRef r = texture(index, tc, exts, tel);
-    if (t.Has("scale")) r.scale = extNumber(t, "scale", tel);
-    return r;
+  auto info = [&](const char* key) {
+    return v.Has(key) ? textureInfo(v.Get(key), xel + "." + key) : TextureRef{};
   };
-  m.clearcoat_tex = textureInfo("clearcoatTexture");
-  m.clearcoat_roughness_tex = textureInfo("clearcoatRoughnessTexture");
-  m.clearcoat_normal_tex = textureInfo("clearcoatNormalTexture");
+  m.clearcoat_tex = info("clearcoatTexture");
+  m.clearcoat_roughness_tex = info("clearcoatRoughnessTexture");
+  m.clearcoat_normal_tex = info("clearcoatNormalTexture");
   const bool maps = m.clearcoat_tex.valid() || m.clearcoat_roughness_tex.valid() ||
                     m.clearcoat_normal_tex.valid();
   if (maps && g.alphaMode == "BLEND") {

@@ -64,6 +64,26 @@ TextureRef Importer::texture(int tex_index, int texcoord, const tinygltf::Extens
   return r;
 }
 
+// A textureInfo inside an extension's object (tinygltf parses only the core's): index (required),
+// texCoord, its extensions (KHR_texture_transform) and, for a normal map, scale.
+TextureRef Importer::textureInfo(const tinygltf::Value& t, const std::string& el) {
+  if (!t.IsObject()) fail(el, "expected a textureInfo object");
+  if (!t.Has("index") || !t.Get("index").IsInt() || t.Get("index").GetNumberAsInt() < 0) {
+    fail(el + ".index", "expected a texture index");
+  }
+  if (t.Has("texCoord") && !t.Get("texCoord").IsInt())
+    fail(el + ".texCoord", "expected an integer");
+  const int tc = t.Has("texCoord") ? t.Get("texCoord").GetNumberAsInt() : 0;
+  tinygltf::ExtensionMap exts;
+  if (t.Has("extensions") && t.Get("extensions").IsObject()) {
+    const tinygltf::Value& e = t.Get("extensions");
+    for (const std::string& k : e.Keys()) exts[k] = e.Get(k);
+  }
+  TextureRef r = texture(t.Get("index").GetNumberAsInt(), tc, exts, el);
+  if (t.Has("scale")) r.scale = extNumber(t, "scale", el);
+  return r;
+}
+
 // A glTF sampler's wrap modes and filters; `el` is the textureInfo that uses it, for messages.
 Sampler Importer::samplerOf(const tinygltf::Sampler& s, const std::string& el) const {
   Sampler out;

@@ -3,6 +3,7 @@
 // (shaders/common/gpu_records.glsl).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -44,6 +45,9 @@ static_assert(kMaxDirectionalLights == glm::uvec4::length(),
 // The material record: hv::GpuMaterial, declared once for C++ and GLSL (gpu_records.glsl, its
 // layout checked in halfvec/shading/gpu_records.hpp). Filled from the scene's material here.
 GpuMaterial packMaterial(const Material& m);
+// A material's textures in the order of the slots (HV_MAT_SLOT_*, gpu_records.glsl), which are
+// also its texture units after HV_UNIT_MATERIAL_TEXTURES (GpuScene binds them so).
+std::array<const TextureRef*, HV_MAT_SLOTS> materialTextureSlots(const Material& m);
 
 // Reversed-Z infinite perspective: depth = near / view distance; 1 at the near plane, 0 at
 // infinity. Paired with glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE) and GL_GREATER.
