@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "halfvec/platform/context.hpp"
 #include "halfvec/render/renderer.hpp"
 #include "halfvec/render/variant_key.hpp"
+#include "halfvec/scene/model_scene.hpp"
 #include "halfvec/scene/render_settings.hpp"
 #include "halfvec/scene/scene_loader.hpp"
 
@@ -245,8 +247,27 @@ int benchFrame(const FrameBenchOptions& o) {
   if (!o.shader_dirs.empty() && scenes.size() != 1) {
     throw UsageError{"--frame --shaders needs --scene FILE"};
   }
+  if (!o.settings_sets.empty() && (scenes.size() != 1 || !o.shader_dirs.empty())) {
+    throw UsageError{"--frame --settings needs --scene FILE and takes no --shaders"};
+  }
   std::vector<Scene> loaded;
   for (const std::string& s : scenes) loaded.push_back(loadScene(s));  // fail before rendering
+  // The scene as it is, then once per settings set (the overrides as --set gives them).
+  std::vector<Scene> variants;
+  std::vector<std::string> variant_names;
+  if (!o.settings_sets.empty()) {
+    variants.push_back(loaded[0]);
+    variant_names.push_back("scene's own settings");
+    for (const std::string& set : o.settings_sets) {
+      SceneOpenOptions open;
+      std::stringstream list(set);
+      for (std::string kv; std::getline(list, kv, ',');) {
+        if (!kv.empty()) open.overrides.push_back("settings." + kv);
+      }
+      variants.push_back(openScene(scenes[0], open));
+      variant_names.push_back(set);
+    }
+  }
   auto ctx = createHeadlessContext();
   std::printf(
       "renderer: %s, %dx%d; x floor = median over frames of (pass ms / floor pass ms of "
@@ -266,6 +287,12 @@ int benchFrame(const FrameBenchOptions& o) {
     if (o.shadow_sweep) {
       std::printf("%s (%dx%d)\n", name.c_str(), o.width, o.height);
       printShadowSweep(loaded[i], o.width, o.height, o.frames);
+    } else if (!variants.empty()) {
+      for (const auto& c :
+           eval::measureFrameCostScenes(variants, variant_names, o.width, o.height, o.frames)) {
+        costs.push_back(c);
+        printCost(c);
+      }
     } else if (o.shader_dirs.empty()) {
       costs.push_back(
           eval::measureFrameCost(loaded[i], name, o.width, o.height, o.frames, o.cull_stages));

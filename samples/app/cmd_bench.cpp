@@ -75,6 +75,10 @@ ratios.
                frames interleaved, as the median ratio with its 95% interval, with each
                scene's lights, their coverage (lights per tile) and what culling auto picks;
                --cull-stages: the culling pass timed per stage (bounds, bin, tiles);
+               --settings K=V,K=V (repeatable, with --scene): instead of --shaders, the scene
+               as it is and once per set of settings overrides (keys under "settings", JSON
+               values, e.g. --settings max_error=0.05 --settings sphere_specular=ltc), frames
+               interleaved, each set's passes against its own floor;
                --shadow-sweep: instead, the light pass's and frame's extra cost over shadows
                off per filter and number of shadowed lights (the scene's first 1, 2, ...),
                frames interleaved, and the maps rendered meanwhile (0: cached)
@@ -151,6 +155,7 @@ struct BenchArgs {
   std::string report;
   int types = -1;  // --types: -1 mixed, else a hv::LightType
   std::vector<std::string> shader_dirs;
+  std::vector<std::string> settings_sets;  // --settings: one set of --set overrides each
   std::string scene_path;
   bool help = false;
 };
@@ -193,6 +198,8 @@ BenchArgs parseBenchArgs(const Args& args) {
       for (std::string d; std::getline(list, d, ',');) {
         if (!d.empty()) b.shader_dirs.push_back(d);
       }
+    } else if (a == "--settings") {
+      b.settings_sets.push_back(value());
     } else if (a == "--variants") {
       b.variants = true;
     } else if (a == "--breakdown") {
@@ -363,6 +370,7 @@ int cmdBench(const Args& args) {
     if (b.frames_given) o.frames = b.frames;
     o.scene = b.scene_path;
     o.shader_dirs = b.shader_dirs;
+    o.settings_sets = b.settings_sets;
     o.report = b.report;
     o.vs_brute = b.vs_brute;
     o.cull_stages = b.cull_stages;

@@ -30,7 +30,9 @@ struct FrameBenchOptions {
   int width = 1280, height = 720, frames = 9;
   std::string scene;                     // empty: every sample scene
   std::vector<std::string> shader_dirs;  // A/B shader trees (needs `scene`)
-  std::string report;                    // markdown table to write (empty: none)
+  // Settings overrides compared with the scene as it is (needs `scene`): "K=V,K=V" per set.
+  std::vector<std::string> settings_sets;
+  std::string report;         // markdown table to write (empty: none)
   bool vs_brute = false;      // instead: whole frame, tiled culling vs brute force (interleaved)
   bool cull_stages = false;   // the culling timed per stage (DebugOptions::cull_stage_timers)
   bool shadow_sweep = false;  // instead: shadow cost per filter and shadowed-light count
@@ -41,6 +43,7 @@ std::vector<std::string> sampleScenePaths();
 int cmdAccuracy(const Args& args);
 int cmdTrade(const Args& args);
 int cmdLtcFit(const Args& args);
+int cmdErrorFit(const Args& args);
 
 // Parses a --size value "WxH" (1..16384 each); throws UsageError naming the bad value.
 void parseSize(const std::string& value, int& width, int& height);

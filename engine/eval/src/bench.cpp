@@ -147,6 +147,21 @@ std::vector<FrameCost> measureFrameCostTrees(const Scene& scene,
   return out;
 }
 
+std::vector<FrameCost> measureFrameCostScenes(const std::vector<Scene>& scenes,
+                                              const std::vector<std::string>& names, int width,
+                                              int height, int frames) {
+  std::vector<std::unique_ptr<FrameRunner>> runs;
+  for (const Scene& s : scenes) {
+    runs.push_back(std::make_unique<FrameRunner>(s, width, height, withFloor()));
+  }
+  runInterleaved(runs, frames);
+  std::vector<FrameCost> out;
+  for (size_t i = 0; i < runs.size(); ++i) {
+    out.push_back(frameCostOf(runs[i]->series(), names.at(i), width, height));
+  }
+  return out;
+}
+
 TiledVsBrute measureTiledVsBruteForce(const Scene& scene, const std::string& name, int width,
                                       int height, int frames) {
   Scene tiled = scene, brute = scene;  // the renderers keep pointers: both outlive them

@@ -80,6 +80,11 @@ FrameCost measureFrameCost(const Scene& scene, const std::string& name, int widt
 std::vector<FrameCost> measureFrameCostTrees(const Scene& scene,
                                              const std::vector<std::string>& dirs, int width,
                                              int height, int frames, bool cull_stages = false);
+// Several scenes (one scene with different settings), one renderer each, frames interleaved: one
+// FrameCost per scene, named by `names`.
+std::vector<FrameCost> measureFrameCostScenes(const std::vector<Scene>& scenes,
+                                              const std::vector<std::string>& names, int width,
+                                              int height, int frames);
 // ---- bench --frame --vs-brute
 // The scene's whole frame with tiled culling against the same scene with Culling::BruteForce
 // (no culling pass; the light pass loops over every light at every pixel: a minimal brute-force
