@@ -28,6 +28,8 @@ std::string pointLightMarkdown(const eval::PointLightAccuracy& a);
 std::string sphereMarkdown(const eval::SphereAccuracy& a);
 std::string tubeMarkdown(const eval::TubeAccuracy& a);
 std::string directionalMarkdown(const eval::SphereAccuracy& a);
+// The error budget: the table's prediction and the budget's choices over the sphere sweep.
+std::string budgetMarkdown(const eval::BudgetAccuracy& a);
 // The LTC modes when the scene's V or D differs from the fitted lobe.
 std::string otherBrdfMarkdown(const eval::SphereAccuracy& sphere, const eval::TubeAccuracy& tube);
 std::string ambientMarkdown(const eval::AmbientAccuracy& a);

@@ -45,6 +45,8 @@ Commands:
   accuracy              sweep of every approximation vs the reference -> docs/accuracy.md
   trade SCENE.json      speed/accuracy trade report: ms per pass and error per option, presets
   ltc-fit               fit the LTC table of the ltc light modes -> engine/shading/src/ltc_table.cpp
+  error-fit             measure the error budget's table (max_error)
+                        -> engine/shading/src/error_table.cpp
 
 Run `halfvec <command> --help` for the options of each command.
 Any command also takes --verbose: debug messages (e.g. program binary cache entries the driver
@@ -55,9 +57,10 @@ struct Command {
   int (*run)(const Args&);
 };
 constexpr Command kCommands[] = {
-    {"render", cmdRender},     {"compare", cmdCompare},     {"stability", cmdStability},
-    {"bench", cmdBench},       {"reference", cmdReference}, {"view", cmdView},
-    {"accuracy", cmdAccuracy}, {"trade", cmdTrade},         {"ltc-fit", cmdLtcFit},
+    {"render", cmdRender},      {"compare", cmdCompare},     {"stability", cmdStability},
+    {"bench", cmdBench},        {"reference", cmdReference}, {"view", cmdView},
+    {"accuracy", cmdAccuracy},  {"trade", cmdTrade},         {"ltc-fit", cmdLtcFit},
+    {"error-fit", cmdErrorFit},
 };
 
 // The options a command's --help lists (lines starting with "  -" or "  --"), read from its

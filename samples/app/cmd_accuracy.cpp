@@ -73,9 +73,10 @@ Options parseArgs(const Args& args) {
     } else if (a == "--only") {
       o.only = optionValue(args, i);
       if (o.only != "shadows" && o.only != "occlusion" && o.only != "directional" &&
-          o.only != "clearcoat") {
+          o.only != "clearcoat" && o.only != "budget") {
         throw UsageError{
-            "--only: expected 'shadows', 'occlusion', 'directional' or 'clearcoat', got '" +
+            "--only: expected 'shadows', 'occlusion', 'directional', 'clearcoat' or 'budget', got "
+            "'" +
             o.only + "'"};
       }
     } else {
@@ -101,6 +102,7 @@ struct Measured {
   eval::PointLightAccuracy point;
   eval::SphereAccuracy sphere;
   eval::SphereAccuracy directional;
+  eval::BudgetAccuracy budget;
   eval::ClearCoatAccuracy clear_coat;
   eval::TubeAccuracy tube;
   eval::AmbientAccuracy ambient;
@@ -132,12 +134,19 @@ Measured measure(const eval::AccuracyOptions& o, const std::string& only) {
     m.clear_coat = eval::measureClearCoat(o);
     return m;
   }
+  if (only == "budget") {
+    step("error budget");
+    m.budget = eval::measureBudget(o);
+    return m;
+  }
   step("point lights");
   m.point = eval::measurePointLights(o);
   step("sphere lights");
   m.sphere = eval::measureSphereLights(o);
   step("directional lights");
   m.directional = eval::measureDirectionalLights(o);
+  step("error budget");
+  m.budget = eval::measureBudget(o);
   step("tube lights");
   m.tube = eval::measureTubeLights(o);
   step("clear coat");
@@ -184,10 +193,14 @@ std::string document(const Options& o, const Measured& m, double secs, const std
     md << clearCoatMarkdown(m.clear_coat);
     return md.str();
   }
+  if (o.only == "budget") {
+    md << budgetMarkdown(m.budget);
+    return md.str();
+  }
   md << summaryMarkdown(m.sphere, m.tube, m.point, m.ambient) << pointLightMarkdown(m.point)
-     << sphereMarkdown(m.sphere) << directionalMarkdown(m.directional) << tubeMarkdown(m.tube)
-     << otherBrdfMarkdown(m.sphere, m.tube) << clearCoatMarkdown(m.clear_coat)
-     << ambientMarkdown(m.ambient) << shadowsMarkdown(m.shadows)
+     << sphereMarkdown(m.sphere) << budgetMarkdown(m.budget) << directionalMarkdown(m.directional)
+     << tubeMarkdown(m.tube) << otherBrdfMarkdown(m.sphere, m.tube)
+     << clearCoatMarkdown(m.clear_coat) << ambientMarkdown(m.ambient) << shadowsMarkdown(m.shadows)
      << scenesMarkdown(m.scenes, fs::path(o.out).stem().string()) << occlusionMarkdown(m.occlusion);
   return md.str();
 }

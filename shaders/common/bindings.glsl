@@ -65,6 +65,10 @@
 // Light, ambient and debug-view passes of a scene with clear coat: the G-buffer's coat target
 // (gbuffer.glsl, encodeCoat), bound by bindGBuffer with the other four.
 #define HV_UNIT_COAT 15
+// Light pass with an error budget (settings.max_error): its table (error_budget.glsl), on a unit
+// the light pass leaves free; the forward pass reads it on unit 5, which it leaves free.
+#define HV_UNIT_ERROR_TABLE 10
+#define HV_UNIT_FORWARD_ERROR_TABLE 5
 // Tone map: the HDR target.
 #define HV_UNIT_HDR 0
 // G-buffer pass: a material's textures on units HV_UNIT_MATERIAL_TEXTURES + 0..7 (base color,

@@ -31,6 +31,9 @@
 //  HV_DIRECT_TERMS 3|1|2|0      bit 1 diffuse, bit 2 specular: the terms shadeLight returns (the
 //                               others are 0); for per-term images (`halfvec render --aov`)
 //  HV_SHADOWS, HV_SHADOW_FILTER, HV_SHADOW_MAP_SIZE: shadows.glsl (lightShadow below)
+//  HV_ERROR_BUDGET 0|1          settings.max_error > 0: a sphere or directional light shaded with
+//                               the representative point takes the LTC where the point's
+//                               predicted error exceeds the budget HV_MAX_ERROR (error_budget.glsl)
 #ifndef HV_LIGHTS_GLSL
 #define HV_LIGHTS_GLSL
 
@@ -41,6 +44,7 @@
 #include "setting_values.glsl"
 #include "shadows.glsl"
 #include "spot.glsl"
+#include "error_budget.glsl"
 
 #ifndef HV_FALLOFF_PLUS_ONE
 #define HV_FALLOFF_PLUS_ONE 1
@@ -87,11 +91,19 @@
 #ifndef HV_DIRECT_TERMS
 #define HV_DIRECT_TERMS 3
 #endif
+// The budget's sphere and sun specular: the representative point, or the LTC where the budget
+// asks for it (sphereNeedsLtc).
+#define HV_SPHERE_BUDGET                                                                    \
+  (HV_ERROR_BUDGET && (HV_HAS_SPHERE_LIGHTS || HV_HAS_DIRECTIONAL_LIGHTS) &&                \
+   HV_SPHERE_SPECULAR == HV_SPHERE_SPECULAR_REPRESENTATIVE_POINT)
+#if HV_ERROR_BUDGET && !defined(HV_MAX_ERROR)
+#define HV_MAX_ERROR u_frame_params.y  // frame_block.glsl
+#endif
 // The LTC table is read, once per pixel, when a compiled light type shades its specular with it.
 #define HV_LTC_TABLE                                                                        \
   (((HV_HAS_SPHERE_LIGHTS || HV_HAS_DIRECTIONAL_LIGHTS) &&                                  \
     HV_SPHERE_SPECULAR == HV_SPHERE_SPECULAR_LTC) ||                                        \
-   (HV_HAS_TUBE_LIGHTS && HV_TUBE_SPECULAR == HV_TUBE_SPECULAR_LTC))
+   (HV_HAS_TUBE_LIGHTS && HV_TUBE_SPECULAR == HV_TUBE_SPECULAR_LTC) || HV_SPHERE_BUDGET)
 
 // The light's type code (HV_LIGHT_*, gpu_records.glsl): a spot's is its shape's.
 int lightType(GpuLight light) {
@@ -275,41 +287,89 @@ vec3 sphereSpecularRepresentativePoint(Surface s, ShadingPoint sp, vec3 Lc, floa
 
 #if HV_HAS_SPHERE_LIGHTS
 
-// Sphere light: diffuse from the center (Karis point approximation) or the horizon-correct sphere
-// irradiance (Lagarde & de Rousiers 2014 section 4.7.2); specular from the representative point
-// (sphereSpecularRepresentativePoint) or, with HV_SPHERE_SPECULAR_LTC, the pixel's LTC over the
-// sphere's cone (ltcSphereSpecular, ltc_lights.glsl).
-vec3 evaluateSphereLightAt(GpuLight light, Surface s, ShadingPoint sp) {
-  float radius = light.position_radius.w;
-  vec3 Lc = vec3(light.position_radius) - sp.P;
-  float d2 = dot(Lc, Lc);
-  vec3 L = Lc * inversesqrt(max(d2, 1e-30f));
-  float falloff = distanceFalloff(d2, radius, light.color_inv_range.w);
+// What a sphere light's methods share at one shading point: the direction to its center, the
+// falloff (with a spot's cone) and the diffuse term.
+struct SphereTerms {
+  vec3 Lc;        // the center, relative to the shading point
+  vec3 L;         // unit, toward the center
+  float d2;       // |Lc|^2
+  float radius;
+  float falloff;  // distanceFalloff times the spot cone
+  vec3 diffuse;   // the diffuse term (diffuseTerm), before combineTerms
+};
+
+// Sphere light diffuse: from the center (Karis point approximation) or the horizon-correct
+// sphere irradiance (Lagarde & de Rousiers 2014 section 4.7.2).
+SphereTerms sphereTerms(GpuLight light, Surface s, ShadingPoint sp) {
+  SphereTerms t;
+  t.radius = light.position_radius.w;
+  t.Lc = vec3(light.position_radius) - sp.P;
+  t.d2 = dot(t.Lc, t.Lc);
+  t.L = t.Lc * inversesqrt(max(t.d2, 1e-30f));
+  t.falloff = distanceFalloff(t.d2, t.radius, light.color_inv_range.w);
 #if HV_HAS_SPOT_LIGHTS
   // A sphere spot: the cone of the direction to the center scales the sphere's whole emission
   // seen from this point (docs/lights.md, "Spot lights"), diffuse and specular, in every method.
-  falloff *= lightCone(light, L);
+  t.falloff *= lightCone(light, t.L);
 #endif
 #if HV_SPHERE_DIFFUSE == HV_SPHERE_DIFFUSE_HORIZON
   // sin^2(sigma) = r^2 / d^2, with d^2 >= HV_MIN_LIGHT_DIST2 (the factor clamps it to <= 1).
   float cos_factor =
-      sphereHorizonFactor(dot(s.N, L), radius * radius / max(d2, HV_MIN_LIGHT_DIST2));
+      sphereHorizonFactor(dot(s.N, t.L), t.radius * t.radius / max(t.d2, HV_MIN_LIGHT_DIST2));
 #else
-  float cos_factor = saturate(dot(s.N, L));
+  float cos_factor = saturate(dot(s.N, t.L));
 #endif
   // Inside the sphere the whole hemisphere emits L_e = I / (pi r^2): the irradiance pi L_e is
   // I / r^2, the falloff (whose d^2 is clamped to r^2) times 1, from the hemisphere's mean
   // direction N, whichever side of the surface the center is on (the reference's emitter and the
   // `ltc` specular alike; neither method's horizon applies there). A select.
-  bool inside = d2 <= radius * radius;
+  bool inside = t.d2 <= t.radius * t.radius;
   cos_factor = mix(cos_factor, 1.0f, inside);
-  vec3 diffuse = diffuseTerm(s, sp, mix(L, s.N, bvec3(inside)), falloff * cos_factor);
-#if HV_SPHERE_SPECULAR == HV_SPHERE_SPECULAR_LTC
-  vec3 specular = ltcSphereSpecular(s, sp, Lc, L, d2, radius, falloff);
-#else
-  vec3 specular = sphereSpecularRepresentativePoint(s, sp, Lc, d2, radius, falloff);
+  t.diffuse = diffuseTerm(s, sp, mix(t.L, s.N, bvec3(inside)), t.falloff * cos_factor);
+  return t;
+}
+
+#if HV_SPHERE_BUDGET
+// The budget's parts (error_budget.glsl): the light's radiance with the representative point's
+// specular and whether the budget takes the LTC for it; and what the LTC changes in that
+// radiance, for the pairs that take it. The tiled light pass shades every pair with the first and
+// the pairs that need it with the second, in a loop of their own (light_shade.comp).
+float sphereSinSigma(SphereTerms t) {
+  // sin(sigma) = r / d (above 1 inside the sphere, where the budget takes the LTC).
+  return t.radius * inversesqrt(max(t.d2, HV_MIN_LIGHT_DIST2));
+}
+vec3 evaluateSphereLightRpAt(GpuLight light, Surface s, ShadingPoint sp, HV_OUT(bool) need) {
+  SphereTerms t = sphereTerms(light, s, sp);
+  vec3 rp = sphereSpecularRepresentativePoint(s, sp, t.Lc, t.d2, t.radius, t.falloff);
+  need = sphereNeedsLtc(s, sp.R, sp.NoV, t.L, sphereSinSigma(t), t.diffuse, rp, HV_MAX_ERROR);
+  return combineTerms(s, vec3(light.color_inv_range), t.diffuse, rp);
+}
+vec3 sphereLightLtcCorrection(GpuLight light, Surface s, ShadingPoint sp) {
+  SphereTerms t = sphereTerms(light, s, sp);
+  vec3 rp = sphereSpecularRepresentativePoint(s, sp, t.Lc, t.d2, t.radius, t.falloff);
+  vec3 ltc = ltcSphereSpecular(s, sp, t.Lc, t.L, t.d2, t.radius, t.falloff);
+  return combineTerms(s, vec3(light.color_inv_range), vec3(0.0f), ltc - rp);
+}
 #endif
-  return combineTerms(s, vec3(light.color_inv_range), diffuse, specular);
+
+// Sphere light: the diffuse of sphereTerms; specular from the representative point
+// (sphereSpecularRepresentativePoint) or, with HV_SPHERE_SPECULAR_LTC, the pixel's LTC over the
+// sphere's cone (ltcSphereSpecular, ltc_lights.glsl), or with a budget the LTC where it asks for
+// it (sphereNeedsLtc).
+vec3 evaluateSphereLightAt(GpuLight light, Surface s, ShadingPoint sp) {
+  SphereTerms t = sphereTerms(light, s, sp);
+#if HV_SPHERE_SPECULAR == HV_SPHERE_SPECULAR_LTC
+  vec3 specular = ltcSphereSpecular(s, sp, t.Lc, t.L, t.d2, t.radius, t.falloff);
+#else
+  vec3 specular = sphereSpecularRepresentativePoint(s, sp, t.Lc, t.d2, t.radius, t.falloff);
+#if HV_SPHERE_BUDGET
+  if (sphereNeedsLtc(s, sp.R, sp.NoV, t.L, sphereSinSigma(t), t.diffuse, specular,
+                     HV_MAX_ERROR)) {
+    specular = ltcSphereSpecular(s, sp, t.Lc, t.L, t.d2, t.radius, t.falloff);
+  }
+#endif
+#endif
+  return combineTerms(s, vec3(light.color_inv_range), t.diffuse, specular);
 }
 vec3 evaluateSphereLight(GpuLight light, Surface s, vec3 P, vec3 V) {
   return evaluateSphereLightAt(light, s, makeShadingPoint(s, P, V));
@@ -430,6 +490,11 @@ vec3 evaluateDirectionalLightAt(GpuLight light, Surface s, ShadingPoint sp) {
   vec3 specular = ltcSphereSpecular(s, sp, L, L, 1.0f, sin_sigma, 1.0f);
 #else
   vec3 specular = sphereSpecularRepresentativePoint(s, sp, L, 1.0f, sin_sigma, 1.0f);
+#if HV_SPHERE_BUDGET
+  if (sphereNeedsLtc(s, sp.R, sp.NoV, L, sin_sigma, diffuse, specular, HV_MAX_ERROR)) {
+    specular = ltcSphereSpecular(s, sp, L, L, 1.0f, sin_sigma, 1.0f);
+  }
+#endif
 #endif
   return combineTerms(s, vec3(light.color_inv_range), diffuse, specular);
 }

@@ -103,7 +103,7 @@ vec4 aoAt(ivec2 px) {
 #endif
   }
   // Inverse view distances (1 / m), as the AO target holds them (gtao.comp).
-  float inv_dist = texelFetch(t_depth, px, 0).r / u_near_params.x;
+  float inv_dist = texelFetch(t_depth, px, 0).r / u_frame_params.x;
   // Texel q holds pixel 2q (gtao.comp), at q + 0.25 in texel units: pixel px sits at px / 2.
   vec2 f = vec2(px) * 0.5;
   vec2 b = floor(f);

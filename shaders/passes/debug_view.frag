@@ -33,7 +33,7 @@ void main() {
                                               : octDecode(texelFetch(t_normal, px, 0).xy) * 0.5 + 0.5; break;
     case 6u: {
       float d = texelFetch(t_depth, px, 0).r;  // reversed Z: show view distance on a log scale
-      c = d > 0.0 ? vec3(clamp(1.0 - log2(u_near_params.x / d + 1.0) / 10.0, 0.0, 1.0)) : vec3(0.0);
+      c = d > 0.0 ? vec3(clamp(1.0 - log2(u_frame_params.x / d + 1.0) / 10.0, 0.0, 1.0)) : vec3(0.0);
       break;
     }
     case 7u: c = model == HV_MODEL_BACKGROUND ? vec3(0.0)

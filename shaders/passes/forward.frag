@@ -8,6 +8,8 @@
 // select the same approximations (docs/gltf.md, "Alpha blending").
 #include "../common/frame.glsl"
 #include "../common/gbuffer.glsl"
+// The error budget's table: unit 10 holds the environment here (bindings.glsl).
+#define HV_ERROR_TABLE_UNIT HV_UNIT_FORWARD_ERROR_TABLE
 #include "../common/lights.glsl"
 #include "../common/ibl.glsl"
 #include "../common/clear_coat.glsl"

@@ -38,7 +38,7 @@ layout(location = HV_LOC_AO_PARAMS) uniform vec4 u_ao;
 // projection gives the distance along the view axis as near / d (frame_data.cpp).
 vec3 viewPosition(vec2 px, float d) {
   vec2 ndc = (px + 0.5) / vec2(u_viewport.xy) * 2.0 - 1.0;
-  float z = u_near_params.x / d;
+  float z = u_frame_params.x / d;
   return vec3(ndc.x * z / u_proj[0][0], ndc.y * z / u_proj[1][1], -z);
 }
 
@@ -60,8 +60,8 @@ float horizonCos(vec2 px, vec2 dir, float radius_px, float offset, vec3 P, vec3 
   // near ray(s) - d P, has the same cosine to V and turns the radius test into l2 < r2 d^2: no
   // division per sample.
   vec2 proj = vec2(u_proj[0][0], u_proj[1][1]);
-  vec3 ray0 = u_near_params.x * vec3(((px + 0.5) * inv_size * 2.0 - 1.0) / proj, -1.0);
-  vec3 ray_dir = u_near_params.x * vec3(dir * 2.0 * inv_size / proj, 0.0);
+  vec3 ray0 = u_frame_params.x * vec3(((px + 0.5) * inv_size * 2.0 - 1.0) / proj, -1.0);
+  vec3 ray_dir = u_frame_params.x * vec3(dir * 2.0 * inv_size / proj, 0.0);
   for (int k = 0; k < steps; ++k) {
     // At least one pixel out, so that the first step never reads the pixel itself.
     float t = max((float(k) + offset) / float(steps) * radius_px, float(k + 1));
@@ -146,9 +146,9 @@ void main() {
   vec3 Bv = safeNormalize(N + bent / max(open_sum, 1e-6));
   vec3 B = dot(Bv, Bv) > 0.5 ? transpose(mat3(u_view)) * Bv
                              : octDecode(texelFetch(t_normal, px, 0).xy);
-  imageStore(i_ao, q, vec4(visibility, d / u_near_params.x, octEncode(B)));
+  imageStore(i_ao, q, vec4(visibility, d / u_frame_params.x, octEncode(B)));
 #else
   // The view-space normal for the denoise's plane test, which then needs no G-buffer fetch.
-  imageStore(i_ao, q, vec4(visibility, d / u_near_params.x, octEncode(N)));
+  imageStore(i_ao, q, vec4(visibility, d / u_frame_params.x, octEncode(N)));
 #endif
 }

@@ -21,7 +21,7 @@ void main() {
   uint type = uint(lightType(lights[i]));  // HV_LIGHT_POINT/SPHERE/TUBE = 0/1/2
   ivec4 rect;
   bool visible = type <= 2u && sphereTileRect(c, r, vec2(u_proj[0][0], u_proj[1][1]),
-                                              u_near_params.x, vec2(u_viewport.xy),
+                                              u_frame_params.x, vec2(u_viewport.xy),
                                               ivec2(u_viewport.zw),
                                               vec2(HV_TILE_SIZE, HV_TILE_HEIGHT), rect);
   vec4 sphere = vec4(c, r);

@@ -25,7 +25,7 @@ float fromOrderedBits(uint u) {
 // (nx, ny) is (nx z / P00, ny z / P11, -z) (centered projection, frame_data.cpp). Branch-free (a
 // SIMD implementation runs both sides of a branch).
 void addPoint(float d, float ndc_x, float ndc_y, vec2 inv_scale, inout vec3 lo, inout vec3 hi) {
-  float z = u_near_params.x / d;  // reversed-Z infinite: view distance (frame_data.hpp)
+  float z = u_frame_params.x / d;  // reversed-Z infinite: view distance (frame_data.hpp)
   vec3 p = vec3(ndc_x * inv_scale.x * z, ndc_y * inv_scale.y * z, -z);
   bool surface = d > 0.0;
   lo = surface ? min(lo, p) : lo;

@@ -137,6 +137,13 @@ vec3 probeLight(GpuLight l) { return l.color_inv_range.rgb * step(0.0, l.positio
 #ifndef HV_SHADOW_OF
 #define HV_SHADOW_OF(l)
 #endif
+#if HV_SHADOWS && HV_LIGHT_PROBE == 0
+#define HV_VIS(j) vis[j]
+#else
+#define HV_VIS(j) 1.0
+#endif
+// The budget's deferred LTC loop (the sphere loop below) in the tiled pass when it shades.
+#define HV_BUDGET_LOOPS (HV_SPHERE_BUDGET && HV_HAS_SPHERE_LIGHTS && HV_LIGHT_PROBE == 0)
 #ifndef HV_SUN_SHADOW_OF
 #define HV_SUN_SHADOW_OF(l)
 #endif
@@ -243,6 +250,60 @@ void main() {
   }
 #endif
 #if HV_HAS_SPHERE_LIGHTS && HV_LIGHT_PROBE != 2
+#if HV_BUDGET_LOOPS
+  // The error budget (error_budget.glsl): every sphere shaded with the representative point,
+  // each pixel's pairs that the budget sends to the LTC marked in a bit mask, then corrected by a
+  // loop over the marked lights alone. A SIMD CPU implementation runs an `if` body whether or not
+  // a lane takes it (see the top), so a per-pair branch (or any loop holding one) would cost the
+  // LTC everywhere; a loop ends when no lane has a marked light left. The spheres go 32 at a time
+  // (one mask word per pixel: registers, where arrays indexed at run time would go to memory).
+  if (end_point < end_sphere) {
+    uint chunk = end_point;
+    do {
+      uint chunk_end = min(end_sphere, chunk + 32u);
+      uint ltc_marks[HV_LIGHT_PIXELS];
+      for (int j = 0; j < HV_LIGHT_PIXELS; ++j) ltc_marks[j] = 0u;
+#if HV_SHADOWS
+      vec4 chunk_vis[32];  // each light's shadow, kept for its correction (a filter is costly)
+#endif
+      uint i = chunk;
+      do {
+        GpuLight l = tileLight(i);
+        HV_SHADOW_OF(l);
+#if HV_SHADOWS
+        chunk_vis[i - chunk] = vis;
+#endif
+        uint bit = 1u << (i - chunk);
+        for (int j = 0; j < HV_LIGHT_PIXELS; ++j) {
+          bool need;
+          sum[j] += evaluateSphereLightRpAt(l, s[j], sp[j], need) * HV_VIS(j);
+          ltc_marks[j] |= (need && lit[j]) ? bit : 0u;
+        }
+#if HV_HAS_CLEAR_COAT
+        if (any_coat) {
+          for (int j = 0; j < HV_LIGHT_PIXELS; ++j) coat_sum[j] += HV_EVAL_SPHERE(l, cs, csp, j);
+        }
+#endif
+      } while (++i < chunk_end);
+      // The marked lights, lowest first: a lane leaves the loop when its marks are used up.
+      uint marks = ltc_marks[0];
+      for (int j = 1; j < HV_LIGHT_PIXELS; ++j) marks |= ltc_marks[j];
+      while (marks != 0u) {
+        int b = findLSB(marks);
+        marks &= marks - 1u;
+        GpuLight l = tileLight(chunk + uint(b));
+#if HV_SHADOWS
+        vec4 vis = chunk_vis[b];
+#endif
+        for (int j = 0; j < HV_LIGHT_PIXELS; ++j) {
+          bool marked = ((ltc_marks[j] >> uint(b)) & 1u) != 0u;
+          sum[j] += marked ? sphereLightLtcCorrection(l, s[j], sp[j]) * HV_VIS(j) : vec3(0.0);
+        }
+      }
+      chunk = chunk_end;
+    } while (chunk < end_sphere);
+  }
+#else
   if (end_point < end_sphere) {
     uint i = end_point;
     do {
@@ -251,6 +312,7 @@ void main() {
       HV_ACCUMULATE(HV_EVAL_SPHERE, l)
     } while (++i < end_sphere);
   }
+#endif
 #endif
 #if HV_HAS_TUBE_LIGHTS && HV_LIGHT_PROBE != 2
   if (end_sphere < end) {

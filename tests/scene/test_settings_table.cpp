@@ -43,7 +43,8 @@ std::pair<T, nlohmann::json> otherValue(const SettingRow<T>& row) {
     const int v = row.default_value == int(row.info.hi) ? int(row.info.lo) : int(row.info.hi);
     return {v, v};
   } else if constexpr (std::is_same_v<T, float>) {
-    const float v = row.default_value * 2.0f;
+    // Twice the default, or half the range's top for a default of 0 (max_error: no budget).
+    const float v = row.default_value != 0.0f ? row.default_value * 2.0f : float(row.info.hi) / 2;
     return {v, v};
   } else {
     const T v = T((static_cast<int>(row.default_value) + 1) % int(enumNames<T>().size()));
@@ -115,8 +116,14 @@ TEST(SettingsTable, EveryValueReachesItsDefine) {
         s.*row.member = v;
         EXPECT_EQ(defineOf(s), std::to_string(v)) << row.key;
       }
+    } else if constexpr (std::is_same_v<T, float>) {
+      // A float switches its code on where it is not 0; its value is a uniform.
+      for (float v : {0.0f, float(row.info.hi), 1e-6f}) {
+        s.*row.member = v;
+        EXPECT_EQ(defineOf(s), v != 0.0f ? "1" : "0") << row.key << " = " << v;
+      }
     } else {
-      ADD_FAILURE() << row.key << ": a define needs a bool, an integer or an enum";
+      ADD_FAILURE() << row.key << ": a define needs a bool, an integer, a float or an enum";
     }
   });
   EXPECT_GE(defines, 18);

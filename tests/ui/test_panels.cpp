@@ -2,6 +2,8 @@
 // restores, saveMaterials round-trips through the scene file, the light generator is seeded.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -227,6 +229,23 @@ TEST(LightsPanel, AddRemoveEditGenerate) {
   EXPECT_EQ(scene.lights.size(), 10u);
   model.clear();
   EXPECT_EQ(model.count(), 0u);
+}
+
+// The error budget is a slider over the row's range: values outside it are clamped, NaN ignored.
+TEST(RenderingPanel, ErrorBudgetSliderClampsToItsRange) {
+  hv::Scene scene;
+  hv::ui::RenderSettingsModel model(scene);
+  ASSERT_EQ(model.floatFields().size(), 1u);
+  EXPECT_STREQ(model.floatFields()[0].label, "max error (budget)");
+  EXPECT_TRUE(model.setFloat(0, 0.05f));
+  EXPECT_EQ(scene.settings.max_error, 0.05f);
+  EXPECT_FALSE(model.setFloat(0, 0.05f));  // unchanged
+  EXPECT_TRUE(model.setFloat(0, 7.0f));
+  EXPECT_EQ(scene.settings.max_error, 1.0f);
+  EXPECT_TRUE(model.setFloat(0, -1.0f));
+  EXPECT_EQ(scene.settings.max_error, 0.0f);
+  EXPECT_FALSE(model.setFloat(0, std::nanf("")));
+  EXPECT_FALSE(model.setFloat(1, 0.1f));  // no such field
 }
 
 TEST(RenderingPanel, EveryEnumFieldUsesEnumNames) {

@@ -336,6 +336,23 @@ SphereAccuracy measureSphereLights(const AccuracyOptions& o) {
   return a;
 }
 
+BudgetAccuracy measureBudget(const AccuracyOptions& o) {
+  BudgetAccuracy a;
+  a.grid.threads = o.threads;
+  if (o.quick) {
+    a.grid.roughness = {0.1f, 0.5f};
+    a.grid.radius = {0.1f, 0.5f};
+    a.grid.elevation_deg = {45.0f, 5.0f};
+    a.grid.samples = 256;
+  } else {
+    a.grid.samples = 4096;
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  a.sweep = sweepBudget(a.grid, {0.01, 0.02, 0.05, 0.1, 0.2});
+  a.seconds = secondsSince(t0);
+  return a;
+}
+
 SphereAccuracy measureDirectionalLights(const AccuracyOptions& o) {
   SphereAccuracy a;
   a.grid.threads = o.threads;

@@ -207,6 +207,18 @@ void addClearCoatOptions(std::vector<Option>& o) {
                false, true, true});
 }
 
+// The error budget (error_budget.glsl): a budget that takes the LTC almost everywhere, one that
+// splits pixels between the methods, and one that almost never does; on the clear coat's lobe
+// too (its own Surface, the same choice).
+void addBudgetOptions(std::vector<Option>& o) {
+  for (const char* b : {"1e-6", "0.05", "1"}) {
+    const float v = std::stof(b);
+    o.push_back({std::string("max_error=") + b, [v](RenderSettings& s) { s.max_error = v; }});
+  }
+  o.push_back({"clear coat, max_error=0.05", [](RenderSettings& s) { s.max_error = 0.05f; }, false,
+               false, true});
+}
+
 // CI: the options whose code paths differ most (physical falloff divides by d^2 alone).
 std::vector<Option> ciSubset(const std::vector<Option>& all) {
   std::vector<Option> keep;
@@ -217,7 +229,7 @@ std::vector<Option> ciSubset(const std::vector<Option>& all) {
         x.name == "tube_specular=smallest_angle_eq18" || x.name == "d=beckmann" ||
         x.name == "diffuse=burley" || x.name == "ltc (all three)" ||
         x.name == "shadows, shadow_filter=pcss" || x.name == "ao=gtao, ao_specular=cone" ||
-        x.name == "clear coat, ltc (all three)") {
+        x.name == "clear coat, ltc (all three)" || x.name == "max_error=0.05") {
       keep.push_back(x);
     }
   }
@@ -231,6 +243,7 @@ std::vector<Option> options(bool small) {
   addShadowOptions(o);
   addOcclusionOptions(o);
   addClearCoatOptions(o);
+  addBudgetOptions(o);
   return small ? ciSubset(o) : o;
 }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <type_traits>
 
@@ -46,6 +47,19 @@ void intRows(std::vector<TradeConfig>& out, const char* key, const RenderSetting
     if (v == base.*field || double(v) < info.lo || double(v) > info.hi) continue;
     TradeConfig c{std::string(key) + "=" + std::to_string(v), group, base, pf, {}};
     c.settings.*field = v;
+    out.push_back(c);
+  }
+}
+
+// A float (settings.max_error): the row's trade values other than the scene's.
+void floatRows(std::vector<TradeConfig>& out, const char* key, const RenderSettings& base, int pf,
+               float RenderSettings::*field, const SettingInfo& info, const char* group) {
+  for (const double v : info.trade_values) {
+    if (v == 0.0 || float(v) == base.*field) continue;
+    std::ostringstream name;
+    name << key << "=" << v;
+    TradeConfig c{name.str(), group, base, pf, {}};
+    c.settings.*field = float(v);
     out.push_back(c);
   }
 }
@@ -115,6 +129,8 @@ void optionRows(const Scene& scene, int max_brute_force_lights, std::vector<Trad
       boolRow(c, row.key, b, pf, row.member, row.info.trade_group);
     } else if constexpr (std::is_same_v<T, int>) {
       intRows(c, row.key, b, pf, row.member, row.info, row.info.trade_group);
+    } else if constexpr (std::is_same_v<T, float>) {
+      floatRows(c, row.key, b, pf, row.member, row.info, row.info.trade_group);
     } else if constexpr (std::is_enum_v<T>) {
       enumRows(c, row.key, b, pf, row.member, row.info.trade_group);
     }

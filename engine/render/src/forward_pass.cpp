@@ -93,7 +93,8 @@ void ForwardPass::run(const PassContext& ctx, const Input& in, const Output& out
   in.environment.bind(
       b, fallback_2d,
       {HV_UNIT_FORWARD_RADIANCE, HV_UNIT_FORWARD_ENV_BRDF, HV_UNIT_FORWARD_IRRADIANCE});
-  bindLightTables(b, in.ltc ? &ltc_ : nullptr, in.shadows);
+  bindLightTables(b, in.ltc ? &ltc_ : nullptr, in.error_table ? HV_UNIT_FORWARD_ERROR_TABLE : 0,
+                  in.shadows);
   const std::function<void(size_t)> set_lights = [&](size_t di) {
     glUniform2ui(HV_LOC_FORWARD_LIGHTS, ranges[di].x, ranges[di].y);
   };

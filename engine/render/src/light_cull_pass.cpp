@@ -39,7 +39,7 @@ size_t listBound(const std::vector<glm::vec4>& spheres, const FrameBlock& frame)
   for (const glm::vec4& s : spheres) {
     const glm::vec3 c = glm::vec3(frame.view * glm::vec4(glm::vec3(s), 1.0f));
     glm::ivec4 r;
-    if (!glsl::sphereTileRect(c, s.w, scale, frame.near_params.x, viewport, tiles, tile_px, r)) {
+    if (!glsl::sphereTileRect(c, s.w, scale, frame.frame_params.x, viewport, tiles, tile_px, r)) {
       continue;
     }
     const glm::ivec2 lo = glm::max(glm::ivec2(r.x, r.y) - 1, glm::ivec2(0));

@@ -11,10 +11,11 @@
 namespace hv::render {
 
 void bindLightTables(gl::PassBindings& b, std::unique_ptr<LtcTextures>* ltc,
-                     const ShadowMaps* shadows) {
+                     GLuint error_table_unit, const ShadowMaps* shadows) {
   if (ltc) {
     if (!*ltc) *ltc = std::make_unique<LtcTextures>();
     (*ltc)->bind(b);
+    if (error_table_unit) (*ltc)->bindErrorTable(b, error_table_unit);
   }
   if (shadows) {  // ShadowMaps binds its two units itself (shadow_pass.cpp): declared here
     shadows->bind();
@@ -72,7 +73,8 @@ void LightPass::run(const PassContext& ctx, const FrameBlock& frame, const Input
     b.texture(HV_UNIT_LIGHT_TEXELS, light_texels_.id());
     b.texture(HV_UNIT_TILE_INDEX_TEXELS, tile_index_texels_.id());
   }
-  bindLightTables(b, in.ltc ? &ltc_ : nullptr, in.shadows);
+  bindLightTables(b, in.ltc ? &ltc_ : nullptr, in.error_table ? HV_UNIT_ERROR_TABLE : 0,
+                  in.shadows);
   glDispatchCompute(frame.viewport.z, (frame.viewport.w + kLightGroupTiles - 1) / kLightGroupTiles,
                     1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);

@@ -148,9 +148,11 @@ class LightCulling {
 
 // ---- Light pass (light_pass.cpp) ---------------------------------------------------------------
 // What the programs that evaluate lights read besides the lights: the LTC table (created in
-// `*ltc` the first time; null: the programs do not read it) and the shadow atlas (null: none).
+// `*ltc` the first time; null: the programs do not read it), the error budget's table on
+// `error_table_unit` (0: the programs have no budget; it lives in `*ltc` too) and the shadow
+// atlas (null: none).
 void bindLightTables(gl::PassBindings& b, std::unique_ptr<LtcTextures>* ltc,
-                     const ShadowMaps* shadows);
+                     GLuint error_table_unit, const ShadowMaps* shadows);
 
 class LightPass {
  public:
@@ -161,8 +163,9 @@ class LightPass {
     TileListView tiles;     // empty: brute force over every light
     gl::DefineSet defines;  // the scene's lighting defines (Renderer::lightingDefines)
     LightPassProbe probe = LightPassProbe::Shade;
-    size_t texel_limit = 0;  // DebugOptions::light_texel_limit
-    bool ltc = false;        // the program reads the LTC table (Renderer::lightPassNeedsLtc)
+    size_t texel_limit = 0;    // DebugOptions::light_texel_limit
+    bool ltc = false;          // the program reads the LTC table (Renderer::lightPassNeedsLtc)
+    bool error_table = false;  // and the error budget's (Renderer::lightPassHasBudget)
     const ShadowMaps* shadows = nullptr;  // the shadow atlas, when the program has shadows
   };
   // Adds the direct light of every lit pixel into `hdr` (RGBA16F image).
@@ -221,6 +224,7 @@ class ForwardPass {
     const std::vector<gl::ProgramDesc>& programs;  // per material variant of `key`: forward.frag
     const GpuEnvironment& environment;
     bool ltc = false;                     // the programs read the LTC table
+    bool error_table = false;             // and the error budget's
     const ShadowMaps* shadows = nullptr;  // the shadow atlas, when the programs have shadows
   };
   struct Output {

@@ -285,6 +285,7 @@ Renderer::FrameLighting Renderer::lightFrame(const PassContext& ctx, FrameUnifor
       debug_.light_probe,
       debug_.light_texel_limit,
       lightPassNeedsLtc(),
+      lightPassHasBudget(),
       key_.shadows ? &p.shadows : nullptr};
   p.light.run(ctx, frame.block, light, t.hdr.id());
   // Without an environment the ambient pass would add nothing: the background is black, the HDR
@@ -298,7 +299,7 @@ Renderer::FrameLighting Renderer::lightFrame(const PassContext& ctx, FrameUnifor
   if (key_.blend) {
     p.forward.run(ctx,
                   {*scene_, *gpu_, key_, forward_descs_, *p.environment, lightPassNeedsLtc(),
-                   key_.shadows ? &p.shadows : nullptr},
+                   lightPassHasBudget(), key_.shadows ? &p.shadows : nullptr},
                   {t.forward.id(), t.width, t.height});
   }
   return lit;
@@ -463,12 +464,17 @@ GBufferReadback Renderer::readGBuffer() const {
 }
 
 // The light program reads the LTC table (lights.glsl HV_LTC_TABLE) when a light type it compiles
-// shades its specular with it.
+// shades its specular with it, or may (an error budget: HV_SPHERE_BUDGET).
 bool Renderer::lightPassNeedsLtc() const {
   const RenderSettings& s = key_.settings;
   return ((key_.sphere_lights || key_.directional_lights) &&
           s.sphere_specular == SphereSpecular::Ltc) ||
-         (key_.tube_lights && s.tube_specular == TubeSpecular::Ltc);
+         (key_.tube_lights && s.tube_specular == TubeSpecular::Ltc) || lightPassHasBudget();
+}
+bool Renderer::lightPassHasBudget() const {
+  const RenderSettings& s = key_.settings;
+  return (key_.sphere_lights || key_.directional_lights) && s.max_error != 0.0f &&
+         s.sphere_specular == SphereSpecular::RepresentativePoint;
 }
 
 }  // namespace hv::render

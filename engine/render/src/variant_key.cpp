@@ -173,7 +173,7 @@ CullingChoice chooseCulling(const Scene& scene) {
     const glm::vec3 center = glm::vec3(f.view * glm::vec4(glm::vec3(sphere), 1.0f));
     glm::ivec4 r;
     if (glsl::sphereTileRect(center, sphere.w, glm::vec2(f.proj[0][0], f.proj[1][1]),
-                             f.near_params.x, glm::vec2(f.viewport.x, f.viewport.y), tiles,
+                             f.frame_params.x, glm::vec2(f.viewport.x, f.viewport.y), tiles,
                              glm::vec2(kTileSize, kTileHeight), r)) {
       covered += double(r.z - r.x + 1) * double(r.w - r.y + 1);
     }

@@ -18,6 +18,8 @@ std::vector<std::pair<std::string, std::string>> settingDefines(const RenderSett
       out.emplace_back(row.info.define, std::to_string(static_cast<int>(s.*row.member)));
     } else if constexpr (std::is_same_v<T, int>) {
       out.emplace_back(row.info.define, std::to_string(s.*row.member));
+    } else if constexpr (std::is_same_v<T, float>) {
+      out.emplace_back(row.info.define, s.*row.member != 0.0f ? "1" : "0");
     }
   });
   return out;

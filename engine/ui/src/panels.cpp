@@ -329,6 +329,8 @@ RenderSettingsModel::RenderSettingsModel() {
     const auto member = row.member;
     if constexpr (std::is_same_v<T, bool>) {
       bools_.push_back({row.info.label, member});
+    } else if constexpr (std::is_same_v<T, float>) {
+      floats_.push_back({row.info.label, member, float(row.info.lo), float(row.info.hi)});
     } else if constexpr (std::is_enum_v<T>) {
       enums_.push_back({row.info.label, enumNames<T>(),
                         [member](const RenderSettings& s) { return int(s.*member); },
@@ -354,6 +356,16 @@ bool RenderSettingsModel::setBool(size_t field, bool value) {
   bool& b = scene_->settings.*(bools_[field].member);
   if (b == value) return false;
   b = value;
+  return true;
+}
+
+bool RenderSettingsModel::setFloat(size_t field, float value) {
+  if (!scene_ || field >= floats_.size() || !std::isfinite(value)) return false;
+  const FloatField& f = floats_[field];
+  float& v = scene_->settings.*(f.member);
+  value = std::clamp(value, f.lo, f.hi);
+  if (v == value) return false;
+  v = value;
   return true;
 }
 

@@ -286,6 +286,8 @@ bool drawRenderingContents(RenderSettingsModel& model, render::ViewOptions* view
   float label_w = ImGui::CalcTextSize("rotation (deg)").x;
   for (const auto& f : model.enumFields())
     label_w = std::max(label_w, ImGui::CalcTextSize(f.label).x);
+  for (const auto& f : model.floatFields())
+    label_w = std::max(label_w, ImGui::CalcTextSize(f.label).x);
   ImGui::PushItemWidth(-(label_w + ImGui::GetStyle().ItemInnerSpacing.x + 1.0f));
   const auto& enums = model.enumFields();
   for (size_t i = 0; i < enums.size(); ++i) {
@@ -296,6 +298,13 @@ bool drawRenderingContents(RenderSettingsModel& model, render::ViewOptions* view
   for (size_t i = 0; i < bools.size(); ++i) {
     bool b = model.settings().*(bools[i].member);
     if (ImGui::Checkbox(bools[i].label, &b)) changed |= model.setBool(i, b);
+  }
+  const auto& floats = model.floatFields();
+  for (size_t i = 0; i < floats.size(); ++i) {
+    float v = model.settings().*(floats[i].member);
+    if (ImGui::SliderFloat(floats[i].label, &v, floats[i].lo, floats[i].hi, "%.3f")) {
+      changed |= model.setFloat(i, v);
+    }
   }
   float exposure = model.settings().exposure;
   if (ImGui::SliderFloat("exposure", &exposure, 1.0f / 64.0f, 64.0f, "%.3f",

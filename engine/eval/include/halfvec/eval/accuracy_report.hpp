@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "halfvec/eval/error_fit.hpp"
 #include "halfvec/eval/light_accuracy.hpp"
 #include "halfvec/image/image.hpp"
 #include "halfvec/scene/scene.hpp"
@@ -59,6 +60,15 @@ struct TubeAccuracy {
   double seconds = 0.0;
 };
 TubeAccuracy measureTubeLights(const AccuracyOptions& o);
+
+// ---- The error budget (error_fit.hpp): the table's prediction and the budget's choice over the
+// sphere sweep, per budget (the trade report's max_error values) ----
+struct BudgetAccuracy {
+  SphereSweepGrid grid;
+  BudgetSweep sweep;
+  double seconds = 0.0;
+};
+BudgetAccuracy measureBudget(const AccuracyOptions& o);
 
 // ---- Clear coat: a coated sphere under each light type and the sky, per coat roughness ----
 // Engine against the reference (both lobes, clear_coat.glsl) over the sphere's pixels, coated

@@ -37,7 +37,7 @@ static_assert(offsetof(FrameBlock, viewport) == 4 * 64 + 16);
 static_assert(offsetof(FrameBlock, light_count) == 4 * 64 + 32);
 static_assert(offsetof(FrameBlock, frame_flags) == 4 * 64 + 44);
 static_assert(offsetof(FrameBlock, output) == 4 * 64 + 48);
-static_assert(offsetof(FrameBlock, near_params) == 4 * 64 + 64);
+static_assert(offsetof(FrameBlock, frame_params) == 4 * 64 + 64);
 static_assert(offsetof(FrameBlock, directional_lights) == 4 * 64 + 80);
 static_assert(kMaxDirectionalLights == glm::uvec4::length(),
               "FrameBlock::directional_lights holds kMaxDirectionalLights indices");

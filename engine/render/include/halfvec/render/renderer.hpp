@@ -230,7 +230,8 @@ class Renderer {
   gl::Sampler nearest_;
   size_t tile_entries_ = 0;  // entries the last culling pass produced (read at frame end)
   DebugOptions debug_;
-  bool lightPassNeedsLtc() const;  // the light program reads the LTC table (lights.glsl)
+  bool lightPassNeedsLtc() const;   // the light program reads the LTC table (lights.glsl)
+  bool lightPassHasBudget() const;  // and the error budget's table (error_budget.glsl)
 
   // Optional stages (post_passes.cpp): emitter geometry, highlight, post-AA.
   ViewOptions view_options_;

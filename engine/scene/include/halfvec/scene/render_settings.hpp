@@ -174,10 +174,11 @@ enum class SettingPass : uint8_t { None, Light, Ambient, ToneMap, Ao };
 
 // The descriptive columns of a row. Numbers: [lo, hi] (integers compare as integers, floats as
 // the float they are stored in). `define` is the shader define; its value is the enum's value, the
-// integer, or 1/0 for a bool. `trade`: an approximation option that `halfvec trade` varies, in
-// `trade_group`. `label`: the viewer's Render panel shows it (nullptr: not shown);
-// `needs_set_scene`: changing it re-uploads the scene (the irradiance cube is baked only when asked
-// for).
+// integer, 1/0 for a bool, or for a float 1 when it is not 0 (the float itself reaches the
+// shaders in the frame block: it switches code on, its value changes no code). `trade`: an
+// approximation option that `halfvec trade` varies, in `trade_group`. `label`: the viewer's Render
+// panel shows it (nullptr: not shown); `needs_set_scene`: changing it re-uploads the scene (the
+// irradiance cube is baked only when asked for).
 struct SettingInfo {
   double lo = 0.0, hi = 0.0;
   bool lo_open = false;
@@ -188,6 +189,8 @@ struct SettingInfo {
   bool superseded_value = false;
   bool trade = false;
   const char* trade_group = nullptr;
+  // A float's trade rows: these values (0: none), each where it differs from the scene's.
+  std::array<double, 5> trade_values{};
   const char* label = nullptr;
   bool needs_set_scene = false;
 };
@@ -263,6 +266,13 @@ struct SettingInfo {
     (SettingInfo{.feature = SettingFeature::TubeLights, .define = "HV_TUBE_DIFFUSE",               \
                  .pass = SettingPass::Light, .trade = true, .trade_group = "lights",               \
                  .label = "tube diffuse"}))                                                        \
+  /* the error budget: the representative point's predicted relative error per pixel-light */    \
+  /* pair above which that pair takes the LTC; 0: none (error_budget.glsl, docs/lights.md) */       \
+  X(float, max_error, 0.0f, "max_error",                                                           \
+    (SettingInfo{.lo = 0.0, .hi = 1.0, .feature = SettingFeature::SphereLights,                    \
+                 .define = "HV_ERROR_BUDGET", .pass = SettingPass::Light, .trade = true,           \
+                 .trade_group = "lights", .trade_values = {0.01, 0.02, 0.05, 0.1, 0.2},           \
+                 .label = "max error (budget)"}))                                                 \
   /* auto: brute force below the crossover the variant key measures (docs/performance.md) */       \
   X(Culling, culling, Culling::Auto, "culling",                                                    \
     (SettingInfo{.feature = SettingFeature::Lights, .define = "HV_CULLING_BRUTE_FORCE",            \

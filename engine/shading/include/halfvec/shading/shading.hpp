@@ -9,6 +9,7 @@
 
 #include "halfvec/shading/glsl.hpp"
 #include "halfvec/shading/gpu_records.hpp"
+#include "halfvec/shading/error_table.hpp"
 #include "halfvec/shading/ltc_table.hpp"
 
 #pragma GCC diagnostic push

@@ -159,6 +159,11 @@ class RenderSettingsModel {
     const char* label;
     bool RenderSettings::*member;
   };
+  struct FloatField {  // a slider over the row's [lo, hi] (settings.max_error)
+    const char* label;
+    float RenderSettings::*member;
+    float lo, hi;
+  };
 
   RenderSettingsModel();
   explicit RenderSettingsModel(Scene& scene) : RenderSettingsModel() { attach(scene); }
@@ -166,12 +171,14 @@ class RenderSettingsModel {
 
   const std::vector<EnumField>& enumFields() const { return enums_; }
   const std::vector<BoolField>& boolFields() const { return bools_; }
+  const std::vector<FloatField>& floatFields() const { return floats_; }
   const RenderSettings& settings() const { return scene_->settings; }
 
   // Index into enumFields() / boolFields(); return true on change.
   bool setEnum(size_t field, int value);
   bool setBool(size_t field, bool value);
-  bool setExposure(float v);  // clamped to [1/64, 64]
+  bool setFloat(size_t field, float value);  // clamped to the field's range; NaN changes nothing
+  bool setExposure(float v);                 // clamped to [1/64, 64]
   bool setEnvironmentIntensity(float v);
   bool setEnvironmentRotation(float deg);
   // Environment choice: none, uniform (with setEnvironmentColor), sky, or an HDR file. Each
@@ -199,6 +206,7 @@ class RenderSettingsModel {
   Scene* scene_ = nullptr;
   std::vector<EnumField> enums_;
   std::vector<BoolField> bools_;
+  std::vector<FloatField> floats_;
   bool needs_set_scene_ = false;
 };
 
