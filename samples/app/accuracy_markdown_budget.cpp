@@ -20,6 +20,8 @@ bool predictionAgrees(const eval::BudgetSweepRow& r) {
   return p <= 1.5 * m && m <= 1.5 * p;
 }
 
+std::string budgetChoiceMarkdown(const eval::BudgetAccuracy& a);
+
 }  // namespace
 
 std::string budgetMarkdown(const eval::BudgetAccuracy& a) {
@@ -30,8 +32,8 @@ std::string budgetMarkdown(const eval::BudgetAccuracy& a) {
         "representative point takes the LTC where the point's predicted error for that pixel and "
         "light exceeds b times the pair's radiance (shaders/common/error_budget.glsl; "
         "docs/lights.md, \"Error budget\"). The prediction is a table of ln(E_rp / R) over "
-        "roughness x sin(sigma) x N.V x the light's angle from R in footprints, measured against "
-        "the reference by `"
+        "roughness x sin(sigma) x N.V x the light's angle from R in footprints x its azimuth "
+        "around R, measured against the reference by `"
      << errorTableProvenance()
      << "` (engine/shading/src/error_table.cpp). Here: the sphere sweep above (its grid, views "
         "and reference, "
@@ -81,7 +83,16 @@ std::string budgetMarkdown(const eval::BudgetAccuracy& a) {
     md << row(cells);
   }
 
-  // The budget's choices.
+  md << budgetChoiceMarkdown(a);
+  return md.str();
+}
+
+namespace {
+
+// Per budget: the configurations met, against `ltc`'s and the representative point's.
+std::string budgetChoiceMarkdown(const eval::BudgetAccuracy& a) {
+  std::ostringstream md;
+  const auto& rows = a.sweep.rows;
   md << "\n### The budget's choice\n\n"
      << "Per budget b: the configurations where `ltc` alone is within b (rel. error), how many "
         "of them the budget also meets (within b plus twice the reference's noise), the worst "
@@ -112,5 +123,7 @@ std::string budgetMarkdown(const eval::BudgetAccuracy& a) {
   md << "\n";
   return md.str();
 }
+
+}  // namespace
 
 }  // namespace hv::app

@@ -224,6 +224,28 @@ std::string tiledVsBrute(const std::vector<Scene>& scenes, const std::vector<std
   }
   return md;
 }
+
+// --settings: the scene as it is, then once per set (its overrides as --set gives them); none
+// without sets.
+std::vector<Scene> settingsVariants(const std::string& path, const Scene& scene,
+                                    const std::vector<std::string>& sets,
+                                    std::vector<std::string>& names) {
+  std::vector<Scene> variants;
+  if (sets.empty()) return variants;
+  variants.push_back(scene);
+  names.push_back("scene's own settings");
+  for (const std::string& set : sets) {
+    SceneOpenOptions open;
+    std::stringstream list(set);
+    for (std::string kv; std::getline(list, kv, ',');) {
+      if (!kv.empty()) open.overrides.push_back("settings." + kv);
+    }
+    variants.push_back(openScene(path, open));
+    names.push_back(set);
+  }
+  return variants;
+}
+
 }  // namespace
 
 std::vector<std::string> sampleScenePaths() {
@@ -252,22 +274,9 @@ int benchFrame(const FrameBenchOptions& o) {
   }
   std::vector<Scene> loaded;
   for (const std::string& s : scenes) loaded.push_back(loadScene(s));  // fail before rendering
-  // The scene as it is, then once per settings set (the overrides as --set gives them).
-  std::vector<Scene> variants;
   std::vector<std::string> variant_names;
-  if (!o.settings_sets.empty()) {
-    variants.push_back(loaded[0]);
-    variant_names.push_back("scene's own settings");
-    for (const std::string& set : o.settings_sets) {
-      SceneOpenOptions open;
-      std::stringstream list(set);
-      for (std::string kv; std::getline(list, kv, ',');) {
-        if (!kv.empty()) open.overrides.push_back("settings." + kv);
-      }
-      variants.push_back(openScene(scenes[0], open));
-      variant_names.push_back(set);
-    }
-  }
+  const std::vector<Scene> variants =
+      settingsVariants(scenes[0], loaded[0], o.settings_sets, variant_names);
   auto ctx = createHeadlessContext();
   std::printf(
       "renderer: %s, %dx%d; x floor = median over frames of (pass ms / floor pass ms of "
