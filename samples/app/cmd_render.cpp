@@ -48,7 +48,9 @@ Options:
   --view NAME           debug view: basecolor|metallic|roughness|cavity|normal|depth|
                         shading_model|lights_per_tile (G-buffer and culling, shown as stored),
                         or one term, tone-mapped as the normal image (--hdr writes the term):
-                        direct_diffuse|direct_specular|ambient_diffuse|ambient_specular|emissive
+                        direct_diffuse|direct_specular|ambient_diffuse|ambient_specular|emissive;
+                        predicted_error: the error budget's predicted relative error of the
+                        direct light per pixel, 0.1% blue .. 3% green .. 100% red (docs/lights.md)
   --frames N            render N frames and report the median pass times (default 1)
   --uber                compile every feature in, chosen at run time (= --set settings.uber=true);
                         default: programs specialized to the scene (docs/variants.md)

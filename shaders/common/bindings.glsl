@@ -69,6 +69,8 @@
 // the light pass leaves free; the forward pass reads it on unit 5, which it leaves free.
 #define HV_UNIT_ERROR_TABLE 10
 #define HV_UNIT_FORWARD_ERROR_TABLE 5
+// Debug views: the predicted_error view's light-pass output, the HDR target (debug_view.frag).
+#define HV_UNIT_DEBUG_HDR 4
 // Tone map: the HDR target.
 #define HV_UNIT_HDR 0
 // G-buffer pass: a material's textures on units HV_UNIT_MATERIAL_TEXTURES + 0..7 (base color,

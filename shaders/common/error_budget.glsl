@@ -114,10 +114,15 @@ float sphereRpLogRatio(float roughness, float sin_sigma, float NoV, float offset
 // estimated as E_rp e^-t, the pair's error |E_rp - exact| against its radiance (diffuse + exact),
 // in luminance (Rec. 709 weights, as tonemap.glsl): a glossy highlight under a dim diffuse needs
 // the LTC, the same highlight on a bright diffuse may not.
-bool errorExceedsBudget(vec3 diffuse, vec3 rp_specular, float log_ratio, float max_error) {
+// predictedPairError: that error and that radiance (x, y), for the predicted_error view.
+vec2 predictedPairError(vec3 diffuse, vec3 rp_specular, float log_ratio) {
   const vec3 luma = vec3(0.2126f, 0.7152f, 0.0722f);
   vec3 exact = rp_specular * exp(-log_ratio);
-  return dot(abs(rp_specular - exact), luma) > max_error * dot(diffuse + exact, luma);
+  return vec2(dot(abs(rp_specular - exact), luma), dot(diffuse + exact, luma));
+}
+bool errorExceedsBudget(vec3 diffuse, vec3 rp_specular, float log_ratio, float max_error) {
+  vec2 e = predictedPairError(diffuse, rp_specular, log_ratio);
+  return e.x > max_error * e.y;
 }
 
 // The table's t for a sphere seen in direction L (unit, its center) under sin sigma, from the

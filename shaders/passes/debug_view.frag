@@ -9,6 +9,7 @@ layout(binding = HV_UNIT_MATERIAL) uniform sampler2D t_material;
 layout(binding = HV_UNIT_NORMAL) uniform sampler2D t_normal;
 layout(binding = HV_UNIT_DEPTH) uniform sampler2D t_depth;
 layout(std430, binding = HV_BINDING_TILE_RANGES) readonly buffer TileRangeBlock { uvec2 tile_ranges[]; };
+layout(binding = HV_UNIT_DEBUG_HDR) uniform sampler2D t_hdr;
 
 layout(location = 0) in vec2 v_uv;
 layout(location = 0) out vec4 o_color;
@@ -42,6 +43,14 @@ void main() {
       uvec2 tile = uvec2(px) / uvec2(HV_TILE_SIZE, HV_TILE_HEIGHT);
       uint n = tile_ranges[tile.y * u_viewport.z + tile.x].y;
       c = n == 0u ? vec3(0.0) : heat(log2(float(n) + 1.0) / 10.0);  // 1 .. 1023 lights
+      break;
+    }
+    case 14u: {
+      // predicted_error: the light pass's (error, radiance, lit) (light_shade.comp, probe 3);
+      // the error relative to the radiance on a log scale, 0.1% blue .. 100% red, 3% green.
+      vec3 e = texelFetch(t_hdr, px, 0).rgb;
+      float rel = e.x / max(e.y, 1e-20);
+      c = e.z > 0.5 ? heat((log(max(rel, 1e-4)) / log(10.0) + 3.0) / 3.0) : vec3(0.0);
       break;
     }
   }

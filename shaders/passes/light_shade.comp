@@ -91,10 +91,33 @@ GpuLight tileLight(uint i) { return lights[tile_indices[i]]; }
 #ifndef HV_LIGHT_PROBE
 #define HV_LIGHT_PROBE 0
 #endif
-#if HV_LIGHT_PROBE != 0
+#if HV_LIGHT_PROBE == 1 || HV_LIGHT_PROBE == 2
 #include "../common/probes.glsl"
 #endif
-#if HV_LIGHT_PROBE == 1
+#if HV_LIGHT_PROBE == 3
+// The predicted_error view (hv::DebugView::PredictedError, HV_SPHERE_BUDGET compiled in): per
+// pixel, x = the sum over its lights of the budget's predicted error of the representative point
+// (sphereLightPredictedError), y = the sum of their radiance, both in luminance, shadows left out;
+// lights the budget does not judge (points, tubes) add their radiance with no error. The debug
+// view pass (debug_view.frag) shows x / y.
+const vec3 kProbeLuma = vec3(0.2126, 0.7152, 0.0722);
+#define HV_EVAL_POINT(l, S, SP, j) vec3(0.0, dot(evaluatePointLightAt(l, S[j], SP[j]), kProbeLuma), 0.0)
+#define HV_EVAL_SPHERE(l, S, SP, j) vec3(sphereLightPredictedError(l, S[j], SP[j]), 0.0)
+#define HV_EVAL_TUBE(l, S, SP, j) vec3(0.0, dot(evaluateTubeLightAt(l, S[j], SP[j]), kProbeLuma), 0.0)
+#define HV_EVAL_DIRECTIONAL(l, S, SP, j) vec3(directionalLightPredictedError(l, S[j], SP[j]), 0.0)
+// The brute-force loop's lights, of any type.
+vec3 probeAnyLight(GpuLight l, Surface s, ShadingPoint sp) {
+  int type = lightType(l);
+  vec3 r = vec3(0.0, dot(evaluateLightAt(l, s, sp), kProbeLuma), 0.0);
+#if HV_HAS_SPHERE_LIGHTS
+  if (type == HV_LIGHT_SPHERE) r = vec3(sphereLightPredictedError(l, s, sp), 0.0);
+#endif
+#if HV_HAS_DIRECTIONAL_LIGHTS
+  if (type == HV_LIGHT_DIRECTIONAL) r = vec3(directionalLightPredictedError(l, s, sp), 0.0);
+#endif
+  return r;
+}
+#elif HV_LIGHT_PROBE == 1
 vec3 probeLight(GpuLight l) { return l.color_inv_range.rgb * step(0.0, l.position_radius.w); }
 #define HV_EVAL_POINT(l, S, SP, j) probeLight(l)
 #define HV_EVAL_SPHERE(l, S, SP, j) probeLight(l)
@@ -211,7 +234,7 @@ void main() {
 #endif
 
   vec3 sum[HV_LIGHT_PIXELS];
-#if HV_LIGHT_PROBE != 0
+#if HV_LIGHT_PROBE == 1 || HV_LIGHT_PROBE == 2
   for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] = setupProbeValue(s[j], sp[j]);
 #else
   for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] = vec3(0.0);
@@ -220,7 +243,9 @@ void main() {
   uint n = u_light_count;
   for (uint i = 0u; i < n; ++i) {
     GpuLight l = lights[i];
-#if HV_SHADOWS
+#if HV_LIGHT_PROBE == 3
+#define HV_EVAL_ANY(l, S, SP, j) probeAnyLight(l, S[j], SP[j])
+#elif HV_SHADOWS
     vec4 vis = anyLightShadow(l, shadow_P, shadow_N, bvec4(lit[0], lit[1], lit[2], lit[3]));
 #define HV_EVAL_ANY(l, S, SP, j) (evaluateLightAt(l, S[j], SP[j]) * vis[j])
 #else
@@ -337,9 +362,12 @@ void main() {
   }
 #endif
 #endif
-#if HV_HAS_CLEAR_COAT
+#if HV_HAS_CLEAR_COAT && HV_LIGHT_PROBE != 3
   // f_base (1 - c F_c) + c f_coat (clear_coat.glsl), summed over the lights.
   for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j] = sum[j] * base_scale[j] + coat_sum[j] * coat[j];
+#endif
+#if HV_LIGHT_PROBE == 3
+  for (int j = 0; j < HV_LIGHT_PIXELS; ++j) sum[j].z = 1.0;  // lit: the view shows x / y
 #endif
   for (int j = 0; j < HV_LIGHT_PIXELS; ++j) {
     if (!lit[j]) continue;

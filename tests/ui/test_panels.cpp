@@ -272,7 +272,8 @@ TEST(RenderingPanel, EveryEnumFieldUsesEnumNames) {
   const auto views = hv::ui::RenderSettingsModel::debugViewNames();
   ASSERT_EQ(views.size(), hv::render::kDebugViewCount);
   EXPECT_STREQ(views[size_t(hv::render::DebugView::DirectSpecular)], "direct_specular");
-  EXPECT_STREQ(views.back(), "emissive");
+  EXPECT_STREQ(views[size_t(hv::render::DebugView::Emissive)], "emissive");
+  EXPECT_STREQ(views.back(), "predicted_error");
 }
 
 }  // namespace

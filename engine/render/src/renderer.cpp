@@ -27,7 +27,8 @@ constexpr const char* kDebugViewNames[] = {"none",
                                            "direct_specular",
                                            "ambient_diffuse",
                                            "ambient_specular",
-                                           "emissive"};
+                                           "emissive",
+                                           "predicted_error"};
 static_assert(std::size(kDebugViewNames) == kDebugViewCount, "one name per DebugView");
 }  // namespace
 
@@ -54,6 +55,8 @@ std::optional<TermView> termView(DebugView v) {
       return TermView{0, 2, false};
     case DebugView::Emissive:
       return TermView{0, 0, true};
+    case DebugView::PredictedError:  // the direct light's pairs alone (no ambient, no emissive)
+      return TermView{3, 0, false};
     default:
       return std::nullopt;
   }
@@ -276,16 +279,24 @@ Renderer::FrameLighting Renderer::lightFrame(const PassContext& ctx, FrameUnifor
         {t.depth.id(), gpu_->lightBuffer(), gpu_->lightCount(), &gpu_->lightCullSpheres(),
          debug_.tile_bound_limit, debug_.cull_batch_lights, debug_.cull_stage_timers});
   }
+  // The predicted_error view: the light pass's probe with the budget's code compiled in.
+  const bool predicted = view == DebugView::PredictedError;
+  gl::DefineSet light_defines = lightingDefines();
+  if (predicted) {
+    for (auto& d : light_defines) {
+      if (d.name == "HV_ERROR_BUDGET") d.value = "1";
+    }
+  }
   LightPass::Input light{
       gbuffer,
       gpu_->lightBuffer(),
       gpu_->lightCount(),
       key_.settings.culling == Culling::Tiled ? p.culling.view() : TileListView{},
-      lightingDefines(),
-      debug_.light_probe,
+      light_defines,
+      predicted ? LightPassProbe::PredictedError : debug_.light_probe,
       debug_.light_texel_limit,
-      lightPassNeedsLtc(),
-      lightPassHasBudget(),
+      lightPassNeedsLtc() || predicted,
+      lightPassHasBudget() || predicted,
       key_.shadows ? &p.shadows : nullptr};
   p.light.run(ctx, frame.block, light, t.hdr.id());
   // Without an environment the ambient pass would add nothing: the background is black, the HDR

@@ -15,7 +15,9 @@ void runTonemapPass(const PassContext& ctx, const TonemapPassInput& in,
   const RenderSettings& s = in.settings;
   gl::PassBindings b(kPassSlots, "tonemap");
   GLuint prog;
-  const bool tone_mapped = in.view == DebugView::None || termView(in.view);
+  // The predicted_error view is drawn from the light pass's output by the debug view's shader.
+  const bool tone_mapped =
+      (in.view == DebugView::None || termView(in.view)) && in.view != DebugView::PredictedError;
   if (tone_mapped) {
     gl::DefineSet defines;  // the tone map's rows of the settings table
     for (auto& [name, value] : settingDefines(s, SettingPass::ToneMap))
@@ -33,6 +35,7 @@ void runTonemapPass(const PassContext& ctx, const TonemapPassInput& in,
     bindGBuffer(b, in.gbuffer, ctx.nearest);
     // 0 before any culling ran: the lights_per_tile view is the only reader, and it culls.
     b.storage(HV_BINDING_TILE_RANGES, in.tile_ranges);
+    b.texture(HV_UNIT_DEBUG_HDR, in.hdr, ctx.nearest);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, out.framebuffer);
   glViewport(0, 0, out.width, out.height);

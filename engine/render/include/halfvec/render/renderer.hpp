@@ -42,9 +42,12 @@ enum class DebugView : uint32_t {
   DirectSpecular,
   AmbientDiffuse,
   AmbientSpecular,
-  Emissive
+  Emissive,
+  // The error budget's predicted error of the direct light per pixel (error_budget.glsl; the
+  // light pass's probe LightPassProbe::PredictedError), whatever the scene's max_error.
+  PredictedError
 };
-constexpr size_t kDebugViewCount = size_t(DebugView::Emissive) + 1;
+constexpr size_t kDebugViewCount = size_t(DebugView::PredictedError) + 1;
 std::optional<DebugView> debugViewFromString(const std::string& s);
 const char* toString(DebugView v);
 
@@ -96,7 +99,8 @@ constexpr int gbufferBytesPerPixel(bool clear_coat) {
 //  SetupOnly  G-buffer reads, per-pixel setup and the store, no light loop at all
 // The two probes act on the tiled pass (the brute-force baseline ignores them) and render wrong
 // images by design; never left on outside a measurement.
-enum class LightPassProbe { Shade = 0, FetchOnly = 1, SetupOnly = 2 };
+// PredictedError: the predicted_error view's light pass (light_shade.comp, HV_LIGHT_PROBE 3).
+enum class LightPassProbe { Shade = 0, FetchOnly = 1, SetupOnly = 2, PredictedError = 3 };
 
 // Knobs for benchmarks and tests, kept off the renderer's normal API (Renderer::setDebugOptions).
 // The defaults are the normal renderer.
