@@ -169,6 +169,19 @@ std::string optionValue(const Args& args, size_t& i) {
   return args[++i];
 }
 
+std::string recordedCommand(const std::string& command, const Args& args,
+                            const std::vector<std::string>& unrecorded) {
+  std::string out = command;
+  for (size_t i = 0; i < args.size(); ++i) {
+    if (std::find(unrecorded.begin(), unrecorded.end(), args[i]) != unrecorded.end()) {
+      ++i;
+      continue;
+    }
+    out += " " + args[i];
+  }
+  return out;
+}
+
 void takeScenePath(const std::string& arg, std::string& scene) {
   if (!arg.empty() && arg[0] == '-') throw UsageError{"unknown option '" + arg + "'"};
   if (!scene.empty()) throw UsageError{"more than one scene file given"};

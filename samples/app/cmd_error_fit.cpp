@@ -106,16 +106,8 @@ int cmdErrorFit(const Args& args) {
   Options o = parseArgs(args);
   OutputFiles outputs;
   const fs::path out_tmp = outputs.add(o.out);  // fails now if the folder is not writable
-  // The command as recorded in the table: the options that change it (not --threads, --cache,
-  // --out).
-  std::string command = "halfvec error-fit";
-  for (size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--threads" || args[i] == "--cache" || args[i] == "--out") {
-      ++i;
-      continue;
-    }
-    command += " " + args[i];
-  }
+  const std::string command =
+      recordedCommand("halfvec error-fit", args, {"--threads", "--cache", "--out"});
   const fs::path cache = o.cache.empty() ? fs::path() : fs::path(o.cache) / "error_fit.bin";
   eval::ErrorFit fit;
   const auto t0 = std::chrono::steady_clock::now();

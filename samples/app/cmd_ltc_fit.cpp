@@ -128,16 +128,7 @@ int cmdLtcFit(const Args& args) {
   if (o.one_cell) return fitOneCell(o);
   OutputFiles outputs;
   const fs::path out_tmp = outputs.add(o.out);  // fails now if the folder is not writable
-  // The command as recorded in the table: the options that change the table (not --threads,
-  // --cache, which do not).
-  std::string command = "halfvec ltc-fit";
-  for (size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--threads" || args[i] == "--cache") {
-      ++i;
-      continue;
-    }
-    command += " " + args[i];
-  }
+  const std::string command = recordedCommand("halfvec ltc-fit", args, {"--threads", "--cache"});
   const fs::path cache = o.cache.empty() ? fs::path() : fs::path(o.cache) / "ltc_fit.bin";
   eval::LtcTable table;
   const auto t0 = std::chrono::steady_clock::now();

@@ -57,6 +57,11 @@ struct UsageError {
 // the option is the last argument.
 std::string optionValue(const Args& args, size_t& i);
 
+// A generated table's command line as its header records it: `command` and the arguments, less
+// the options in `unrecorded` and their values (those that do not change the table).
+std::string recordedCommand(const std::string& command, const Args& args,
+                            const std::vector<std::string>& unrecorded);
+
 // `v` as an integer in [lo, hi], the whole string decimal digits; else UsageError "<option>
 // expects an integer in <lo>..<hi>, got '<v>'".
 int intInRange(const std::string& option, const std::string& v, int lo, int hi);

@@ -38,7 +38,7 @@
 // Cells per axis. Texel ((m * HV_ERR_OFFSET_CELLS + l) * HV_ERR_ROUGHNESS_CELLS + i, j, k) of one
 // R32F 3D texture holds cell (i roughness, j sin sigma, k N.V, l offset, m azimuth): linear
 // filtering in x stays inside one (offset, azimuth) block (the roughness coordinate is clamped
-// to it), the offset and the azimuth are interpolated by four fetches.
+// to it); the lookup takes the nearest offset and azimuth (sphereRpLogRatio).
 #define HV_ERR_ROUGHNESS_CELLS 8
 #define HV_ERR_SIN_CELLS 8
 #define HV_ERR_NOV_CELLS 8
@@ -48,6 +48,8 @@
 #define HV_ERR_CELLS (HV_ERR_TEXELS_X * HV_ERR_SIN_CELLS * HV_ERR_NOV_CELLS)
 // Footprints per offset cell: the last cell, 3.5 footprints from R, stands for every farther one.
 const float HV_ERR_OFFSET_STEP = 0.5f;
+// The luminance the budget judges errors in (Rec. 709 weights, as tonemap.glsl).
+const vec3 HV_ERR_LUMA = vec3(0.2126f, 0.7152f, 0.0722f);
 // Smallest sin(sigma) and N.V of the table (below them, the first and last cells).
 const float HV_ERR_MIN_SIN = 0.005f;
 const float HV_ERR_MIN_NOV = 0.02f;
@@ -110,19 +112,13 @@ float sphereRpLogRatio(float roughness, float sin_sigma, float NoV, float offset
   return errorTableFetch(uvw);
 }
 
-// Whether the pixel-light pair's predicted error exceeds the budget: with the exact specular
-// estimated as E_rp e^-t, the pair's error |E_rp - exact| against its radiance (diffuse + exact),
-// in luminance (Rec. 709 weights, as tonemap.glsl): a glossy highlight under a dim diffuse needs
-// the LTC, the same highlight on a bright diffuse may not.
-// predictedPairError: that error and that radiance (x, y), for the predicted_error view.
+// The pixel-light pair's predicted error and radiance (x, y): with the exact specular estimated
+// as E_rp e^-t, the error |E_rp - exact| and the radiance diffuse + exact, in luminance. The
+// budget compares the two (sphereNeedsLtc): a glossy highlight under a dim diffuse needs the LTC,
+// the same highlight on a bright diffuse may not.
 vec2 predictedPairError(vec3 diffuse, vec3 rp_specular, float log_ratio) {
-  const vec3 luma = vec3(0.2126f, 0.7152f, 0.0722f);
   vec3 exact = rp_specular * exp(-log_ratio);
-  return vec2(dot(abs(rp_specular - exact), luma), dot(diffuse + exact, luma));
-}
-bool errorExceedsBudget(vec3 diffuse, vec3 rp_specular, float log_ratio, float max_error) {
-  vec2 e = predictedPairError(diffuse, rp_specular, log_ratio);
-  return e.x > max_error * e.y;
+  return vec2(dot(abs(rp_specular - exact), HV_ERR_LUMA), dot(diffuse + exact, HV_ERR_LUMA));
 }
 
 // The table's t for a sphere seen in direction L (unit, its center) under sin sigma, from the
@@ -139,13 +135,29 @@ float sphereRpLogRatioAt(Surface s, vec3 R, float NoV, vec3 L, float sin_sigma) 
   return sphereRpLogRatio(s.roughness, sin_sigma, NoV, offset, cos_phi);
 }
 
-// The sphere light's (or the sun's) pair: the table's prediction for the light seen in direction
-// L under sin sigma, or always the LTC when it straddles the horizon (or holds the point).
+// A sphere (or the sun's disk) seen in direction L under sin sigma straddles the horizon, or
+// holds the shading point (sin sigma > 1): the representative point is not predicted there.
+bool sphereStraddles(Surface s, vec3 L, float sin_sigma) { return abs(dot(s.N, L)) < sin_sigma; }
+
+// The sphere light's (or the sun's) pair: the LTC where the table's predicted error exceeds the
+// budget, and always where the sphere straddles the horizon.
 bool sphereNeedsLtc(Surface s, vec3 R, float NoV, vec3 L, float sin_sigma, vec3 diffuse,
                     vec3 rp_specular, float max_error) {
-  if (abs(dot(s.N, L)) < sin_sigma) return true;
-  return errorExceedsBudget(diffuse, rp_specular, sphereRpLogRatioAt(s, R, NoV, L, sin_sigma),
-                            max_error);
+  if (sphereStraddles(s, L, sin_sigma)) return true;
+  vec2 e = predictedPairError(diffuse, rp_specular, sphereRpLogRatioAt(s, R, NoV, L, sin_sigma));
+  return e.x > max_error * e.y;
+}
+
+// The predicted_error view's pair (light_shade.comp, HV_LIGHT_PROBE 3): predictedPairError, a
+// straddling sphere counting its whole radiance as error; times the light's color (luminance)
+// and the cavity, as combineTerms scales the pair.
+vec2 sphereViewError(Surface s, vec3 R, float NoV, vec3 L, float sin_sigma, vec3 diffuse,
+                     vec3 rp_specular, vec3 radiant) {
+  vec2 e = predictedPairError(diffuse, rp_specular, sphereRpLogRatioAt(s, R, NoV, L, sin_sigma));
+  vec2 pair = sphereStraddles(s, L, sin_sigma)
+                  ? vec2(dot(diffuse + rp_specular, HV_ERR_LUMA))
+                  : e;
+  return pair * s.cavity * dot(radiant, HV_ERR_LUMA);
 }
 #endif
 

@@ -335,17 +335,12 @@ float sphereSinSigma(SphereTerms t) {
   return t.radius * inversesqrt(max(t.d2, HV_MIN_LIGHT_DIST2));
 }
 
-// The predicted_error view (light_shade.comp, HV_LIGHT_PROBE 3): the pair's predicted error and
-// radiance in luminance (predictedPairError); a sphere straddling the horizon or holding the point
-// counts its whole radiance as error (the budget does not predict it: it takes the LTC there).
+// The predicted_error view's pair (sphereViewError).
 vec2 sphereLightPredictedError(GpuLight light, Surface s, ShadingPoint sp) {
   SphereTerms t = sphereTerms(light, s, sp);
   vec3 rp = sphereSpecularRepresentativePoint(s, sp, t.Lc, t.d2, t.radius, t.falloff);
-  float sin_sigma = sphereSinSigma(t);
-  vec2 e = predictedPairError(t.diffuse, rp, sphereRpLogRatioAt(s, sp.R, sp.NoV, t.L, sin_sigma));
-  vec2 whole = vec2(1.0f) * dot(t.diffuse + rp, vec3(0.2126f, 0.7152f, 0.0722f));
-  vec2 pair = abs(dot(s.N, t.L)) < sin_sigma ? whole : e;
-  return pair * s.cavity * dot(vec3(light.color_inv_range), vec3(0.2126f, 0.7152f, 0.0722f));
+  return sphereViewError(s, sp.R, sp.NoV, t.L, sphereSinSigma(t), t.diffuse, rp,
+                         vec3(light.color_inv_range));
 }
 #endif
 
@@ -515,17 +510,15 @@ vec3 evaluateDirectionalLightAt(GpuLight light, Surface s, ShadingPoint sp) {
   return combineTerms(s, vec3(light.color_inv_range), diffuse, specular);
 }
 #if HV_ERROR_BUDGET
-// The predicted_error view's pair (sphereLightPredictedError) for the sun: the representative
-// point with the Karis point diffuse, as the budget judges it.
+// The predicted_error view's pair (sphereViewError) for the sun: the representative point with
+// the Karis point diffuse, as the budget judges it.
 vec2 directionalLightPredictedError(GpuLight light, Surface s, ShadingPoint sp) {
   vec3 L = vec3(light.position_radius);
   float sin_sigma = light.position_radius.w;
   vec3 diffuse = diffuseTerm(s, sp, L, saturate(dot(s.N, L)));
   vec3 rp = sphereSpecularRepresentativePoint(s, sp, L, 1.0f, sin_sigma, 1.0f);
-  vec2 e = predictedPairError(diffuse, rp, sphereRpLogRatioAt(s, sp.R, sp.NoV, L, sin_sigma));
-  vec2 whole = vec2(1.0f) * dot(diffuse + rp, vec3(0.2126f, 0.7152f, 0.0722f));
-  vec2 pair = abs(dot(s.N, L)) < sin_sigma ? whole : e;
-  return pair * s.cavity * dot(vec3(light.color_inv_range), vec3(0.2126f, 0.7152f, 0.0722f));
+  return sphereViewError(s, sp.R, sp.NoV, L, sin_sigma, diffuse, rp,
+                         vec3(light.color_inv_range));
 }
 #endif
 vec3 evaluateDirectionalLight(GpuLight light, Surface s, vec3 P, vec3 V) {

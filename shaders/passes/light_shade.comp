@@ -100,15 +100,14 @@ GpuLight tileLight(uint i) { return lights[tile_indices[i]]; }
 // (sphereLightPredictedError), y = the sum of their radiance, both in luminance, shadows left out;
 // lights the budget does not judge (points, tubes) add their radiance with no error. The debug
 // view pass (debug_view.frag) shows x / y.
-const vec3 kProbeLuma = vec3(0.2126, 0.7152, 0.0722);
-#define HV_EVAL_POINT(l, S, SP, j) vec3(0.0, dot(evaluatePointLightAt(l, S[j], SP[j]), kProbeLuma), 0.0)
+#define HV_EVAL_POINT(l, S, SP, j) vec3(0.0, dot(evaluatePointLightAt(l, S[j], SP[j]), HV_ERR_LUMA), 0.0)
 #define HV_EVAL_SPHERE(l, S, SP, j) vec3(sphereLightPredictedError(l, S[j], SP[j]), 0.0)
-#define HV_EVAL_TUBE(l, S, SP, j) vec3(0.0, dot(evaluateTubeLightAt(l, S[j], SP[j]), kProbeLuma), 0.0)
+#define HV_EVAL_TUBE(l, S, SP, j) vec3(0.0, dot(evaluateTubeLightAt(l, S[j], SP[j]), HV_ERR_LUMA), 0.0)
 #define HV_EVAL_DIRECTIONAL(l, S, SP, j) vec3(directionalLightPredictedError(l, S[j], SP[j]), 0.0)
 // The brute-force loop's lights, of any type.
 vec3 probeAnyLight(GpuLight l, Surface s, ShadingPoint sp) {
   int type = lightType(l);
-  vec3 r = vec3(0.0, dot(evaluateLightAt(l, s, sp), kProbeLuma), 0.0);
+  vec3 r = vec3(0.0, dot(evaluateLightAt(l, s, sp), HV_ERR_LUMA), 0.0);
 #if HV_HAS_SPHERE_LIGHTS
   if (type == HV_LIGHT_SPHERE) r = vec3(sphereLightPredictedError(l, s, sp), 0.0);
 #endif

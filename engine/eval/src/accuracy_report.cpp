@@ -319,17 +319,28 @@ PointLightAccuracy measurePointLights(const AccuracyOptions& o) {
   return a;
 }
 
+namespace {
+
+// The sphere sweep's grid: the full one at 4096 samples, or a quick one.
+SphereSweepGrid sphereGrid(const AccuracyOptions& o) {
+  SphereSweepGrid g;
+  g.threads = o.threads;
+  if (o.quick) {
+    g.roughness = {0.1f, 0.5f};
+    g.radius = {0.1f, 0.5f};
+    g.elevation_deg = {45.0f, 5.0f};
+    g.samples = 256;
+  } else {
+    g.samples = 4096;
+  }
+  return g;
+}
+
+}  // namespace
+
 SphereAccuracy measureSphereLights(const AccuracyOptions& o) {
   SphereAccuracy a;
-  a.grid.threads = o.threads;
-  if (o.quick) {
-    a.grid.roughness = {0.1f, 0.5f};
-    a.grid.radius = {0.1f, 0.5f};
-    a.grid.elevation_deg = {45.0f, 5.0f};
-    a.grid.samples = 256;
-  } else {
-    a.grid.samples = 4096;
-  }
+  a.grid = sphereGrid(o);
   const auto t0 = std::chrono::steady_clock::now();
   a.rows = sweepSphere(a.grid);
   a.seconds = secondsSince(t0);
@@ -338,15 +349,7 @@ SphereAccuracy measureSphereLights(const AccuracyOptions& o) {
 
 BudgetAccuracy measureBudget(const AccuracyOptions& o) {
   BudgetAccuracy a;
-  a.grid.threads = o.threads;
-  if (o.quick) {
-    a.grid.roughness = {0.1f, 0.5f};
-    a.grid.radius = {0.1f, 0.5f};
-    a.grid.elevation_deg = {45.0f, 5.0f};
-    a.grid.samples = 256;
-  } else {
-    a.grid.samples = 4096;
-  }
+  a.grid = sphereGrid(o);  // the sphere sweep's configurations
   const auto t0 = std::chrono::steady_clock::now();
   a.sweep = sweepBudget(a.grid, {0.01, 0.02, 0.05, 0.1, 0.2});
   a.seconds = secondsSince(t0);

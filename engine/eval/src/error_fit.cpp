@@ -45,12 +45,9 @@ size_t texelIndex(const int c[5]) {
          size_t(c[0]);
 }
 
+// A sphere of the sweeps (sweepLight) at `center`, of `radius`.
 Light sphereLight(const glm::vec3& center, float radius) {
-  Light l;
-  l.type = LightType::Sphere;
-  l.color = glm::vec3(1.0f);
-  l.intensity = 1.0f;
-  l.range = 1.0e4f;  // no window at distance 1
+  Light l = sweepLight(LightType::Sphere);
   l.position = center;
   l.radius = radius;
   return l;
@@ -254,7 +251,7 @@ BudgetSweep sweepBudget(const SphereSweepGrid& g, const std::vector<double>& bud
         row.roughness = r;
         row.radius = rad;
         row.elevation_deg = el;
-        row.above = double(el) >= std::asin(std::min(double(rad), 1.0)) * 180.0 / kPi;
+        row.above = sphereAboveHorizon(rad, el);
         out.rows.push_back(row);
       }
   const glm::vec3 P(0.0f), N(0.0f, 0.0f, 1.0f);
@@ -263,10 +260,8 @@ BudgetSweep sweepBudget(const SphereSweepGrid& g, const std::vector<double>& bud
     const float el = float(row.elevation_deg * kPi / 180.0);
     const glm::vec3 dir(std::cos(el), 0.0f, std::sin(el));
     const Light light = sphereLight(dir, row.radius);
-    const float rough = std::max(row.roughness, glsl::HV_MIN_ROUGHNESS);  // as makeSurface
-    const float alpha = rough * rough;
-    const auto views = sweepViews(dir, 2.0f * alpha + std::asin(std::min(row.radius, 1.0f)));
-    std::vector<double> rp, ltc, ref, ref_se, pred_exact;
+    const auto views = sphereSweepViews(dir, row.roughness, row.radius);
+    std::vector<double> rp, ltc, ref, ref_se;
     std::vector<std::vector<double>> chosen(budgets.size());
     std::vector<int> took(budgets.size(), 0);
     double pred_err = 0.0, pred_sum = 0.0;

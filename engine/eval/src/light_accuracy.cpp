@@ -37,15 +37,6 @@ glm::vec3 dirFromElevation(float elevation_rad, float azimuth_rad) {
           std::cos(elevation_rad) * std::sin(azimuth_rad), std::sin(elevation_rad)};
 }
 
-Light whiteLight(LightType type) {
-  Light l;
-  l.type = type;
-  l.color = glm::vec3(1.0f);
-  l.intensity = 1.0f;
-  l.range = 1.0e4f;  // window = 1 - 1e-16 at the distances swept: no window effect
-  return l;
-}
-
 // Reference values (red channel) of one light over the views, per term, for one BRDF.
 struct ViewValues {
   std::vector<double> ref_d, ref_d_se, ref_s, ref_s_se;
@@ -201,6 +192,23 @@ LightIntegral integrateLight(const Light& light, const glm::vec3& P, const glm::
   return r;
 }
 
+Light sweepLight(LightType type) {
+  Light l;
+  l.type = type;
+  l.color = glm::vec3(1.0f);
+  l.intensity = 1.0f;
+  l.range = 1.0e4f;  // window = 1 - 1e-16 at the distances swept: no window effect
+  return l;
+}
+
+bool sphereAboveHorizon(float radius, float elevation_deg) {
+  return double(elevation_deg) >= std::asin(std::min(double(radius), 1.0)) * 180.0 / kPi;
+}
+
+std::vector<glm::vec3> sphereSweepViews(const glm::vec3& dir, float roughness, float radius) {
+  return sweepViews(dir, 2.0f * lobeAlpha(roughness) + std::asin(std::min(radius, 1.0f)));
+}
+
 TermError termError(const std::vector<double>& engine, const std::vector<double>& reference,
                     const std::vector<double>& reference_se) {
   TermError t;
@@ -306,7 +314,7 @@ const std::vector<LightMethod>& tubeSpecularMethods() {
 }
 
 bool SphereSweepRow::above() const {
-  return double(elevation_deg) >= std::asin(std::min(double(radius), 1.0)) * 180.0 / kPi;
+  return sphereAboveHorizon(radius, elevation_deg);
 }
 
 namespace {
@@ -346,14 +354,13 @@ std::vector<SphereSweepRow> sweepSphere(const SphereSweepGrid& g) {
   const auto& sm = sphereSpecularMethods();
   detail::parallelFor(int(rows.size()), g.threads, [&](int i) {
     SphereSweepRow& row = rows[size_t(i)];
-    Light light = whiteLight(g.directional ? LightType::Directional : LightType::Sphere);
+    Light light = sweepLight(g.directional ? LightType::Directional : LightType::Sphere);
     const glm::vec3 dir = dirFromElevation(float(row.elevation_deg * kPi / 180.0), 0.0f);
     light.position = dir;  // distance 1
     light.radius = row.radius;
     light.direction = -dir;  // a directional light: travelling toward the shading point
     light.angular_diameter = 2.0f * std::asin(std::min(row.radius, 1.0f));
-    const float alpha = lobeAlpha(row.roughness);
-    const auto views = sweepViews(dir, 2.0f * alpha + std::asin(std::min(row.radius, 1.0f)));
+    const auto views = sphereSweepViews(dir, row.roughness, row.radius);
     const References ref = referencesAtViews(light, views, row.roughness, g.samples,
                                              g.seed + uint64_t(i) * 1000003ull, sm);
     methodErrors(dm, sm, ref, light, views, row.roughness, row.diffuse, row.specular);
@@ -380,7 +387,7 @@ std::vector<TubeSweepRow> sweepTube(const TubeSweepGrid& g) {
     TubeSweepRow& row = rows[size_t(i)];
     const glm::vec3 dir = dirFromElevation(float(g.elevation_deg * kPi / 180.0), 0.0f);
     const float alpha = lobeAlpha(row.roughness);
-    Light light = whiteLight(LightType::Tube);
+    Light light = sweepLight(LightType::Tube);
     light.position = dir;
     light.radius = row.radius;
     light.length = row.length;

@@ -71,6 +71,13 @@ TermError termError(const std::vector<double>& engine, const std::vector<double>
 // >= 2 degrees), rings of 8 views at 1 and 2 `footprint` (radians) around it, and 8 fixed views
 // (elevations 30 and 60 degrees, 4 azimuths); views within 1 degree of the horizon are dropped.
 std::vector<glm::vec3> sweepViews(const glm::vec3& light_dir, float footprint);
+// The sphere sweep's views of a sphere of r/d `radius` in direction `dir` over a lobe of
+// `roughness`: sweepViews with the footprint 2 alpha + asin(r/d).
+std::vector<glm::vec3> sphereSweepViews(const glm::vec3& dir, float roughness, float radius);
+// The sweeps' light of `type`: white, intensity 1, no window at the distances swept.
+Light sweepLight(LightType type);
+// A sphere of r/d `radius` at `elevation_deg` lies entirely above the horizon.
+bool sphereAboveHorizon(float radius, float elevation_deg);
 
 // One way of shading one term, as the sweeps compare them; each is measured against the
 // reference of its own BRDF terms (o.d, o.v). `variant` is the entry of kEngineLightVariants that
