@@ -76,6 +76,12 @@ void LightCulling::uploadBatches(const void* records, size_t count) {
   glNamedBufferSubData(batches_.id(), 0, GLsizeiptr(bytes.size()), bytes.data());
 }
 
+uint32_t LightCulling::readTotal() const {
+  uint32_t total = 0;
+  if (total_) glGetNamedBufferSubData(total_.id(), 0, sizeof total, &total);
+  return total;
+}
+
 TileListView LightCulling::view() const {
   return {ranges_.id(), types_.id(), indices_.id(), capacity_};
 }
@@ -204,6 +210,8 @@ void LightCulling::cull(const PassContext& ctx, gl::PassBindings& b, const Plan&
     }
   }
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  // The list's header holds the total; the CPU reads it from this copy (readTotal).
+  glCopyNamedBufferSubData(indices_.id(), total_.id(), 0, 0, sizeof(uint32_t));
 }
 
 // Tiled culling (shaders/passes/light_cull_*.comp; docs/lights.md): per tile, its surface bounds
@@ -227,9 +235,15 @@ TileListView LightCulling::run(const PassContext& ctx, FrameUniforms& frame, con
   const Plan p = plan(frame.block, in);
   ensureBuffers(p.tiles, p.groups, in.light_count, p.groups * (p.words + p.summary));
   if (!indices_) growList(std::max<size_t>(p.tiles * 16, 1 << 16));
+  if (!total_) {  // client storage: the CPU reads it every frame, the GPU writes 4 bytes
+    total_ = gl::createBuffer("tile light total (CPU copy)", sizeof(uint32_t), nullptr,
+                              GL_CLIENT_STORAGE_BIT | GL_MAP_READ_BIT);
+  }
   const uint32_t zero = 0;
   if (in.light_count == 0) {  // empty lists
     glClearNamedBufferSubData(indices_.id(), GL_R32UI, 0, sizeof zero, GL_RED_INTEGER,
+                              GL_UNSIGNED_INT, &zero);
+    glClearNamedBufferSubData(total_.id(), GL_R32UI, 0, sizeof zero, GL_RED_INTEGER,
                               GL_UNSIGNED_INT, &zero);
     for (GLuint b : {ranges_.id(), types_.id()}) {
       glClearNamedBufferSubData(b, GL_R32UI, 0, p.tiles * 2 * sizeof(uint32_t), GL_RED_INTEGER,
@@ -257,8 +271,7 @@ TileListView LightCulling::run(const PassContext& ctx, FrameUniforms& frame, con
   }
   cull(ctx, b, p, in.stage_timers);
   if (!bounded) {  // the bound is too loose to allocate: read the exact total back (a stall)
-    uint32_t total = 0;
-    glGetNamedBufferSubData(indices_.id(), 0, sizeof total, &total);
+    const uint32_t total = readTotal();
     ++readbacks_;
     if (total > capacity_) {  // the fill left entries out: grow to the need, cull again
       growList(total);

@@ -119,6 +119,10 @@ class LightCulling {
   // Builds the lists for `frame`; updates frame.block.tile_capacity when it grows.
   TileListView run(const PassContext& ctx, FrameUniforms& frame, const Input& in);
   TileListView view() const;
+  // The number of (tile, light) entries the last run wrote, read from a 4-byte copy made after
+  // the dispatches: the CPU never reads the list itself, which a driver would otherwise move to
+  // host memory, where every light-pass read of it crosses the bus (docs/performance.md).
+  uint32_t readTotal() const;
   size_t readbacks() const { return readbacks_; }
   size_t capacity() const { return capacity_; }
 
@@ -135,6 +139,7 @@ class LightCulling {
   // stride, for the dispatches to bind as ranges.
   void uploadBatches(const void* records, size_t count);
   gl::Buffer ranges_, types_, indices_;  // the lists (TileListView)
+  gl::Buffer total_;                     // a copy of the list's total, for the CPU to read
   gl::Buffer lights_;                    // per light: view-space sphere, tile rectangle
   gl::Buffer bounds_;                    // per tile, block and group: surface AABB
   gl::Buffer masks_;                     // per group: light mask (0 between frames)

@@ -324,9 +324,7 @@ FrameStats Renderer::frameStats(const FrameLighting& lit, int width, int height)
   stats.height = height;
   if (lit.culled) {
     // The scan's total, for the stats: read after the timers, which already waited for the frame.
-    uint32_t total = 0;
-    glGetNamedBufferSubData(lit.tiles.indices, 0, sizeof total, &total);
-    tile_entries_ = total;
+    tile_entries_ = passes_->culling.readTotal();
   }
   stats.tile_light_entries = tile_entries_;
   stats.shadow_maps = lit.shadows.maps;
