@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include "halfvec/platform/context.hpp"
@@ -28,6 +30,19 @@ inline RenderedFrame renderFrame(const hv::Scene& s, int w, int h) {
   r.setScene(s);
   r.render(w, h);
   return {r.readHdr(), r.readGBuffer(), r.variantKey()};
+}
+
+// How far two G-buffers' base colors are apart at pixel i, channel k, as a relative difference
+// (0 where they are equal). Two programs that compute the same base color may round it to
+// adjacent codes of the 8-bit sRGB target where it falls on a rounding boundary (linear 0.5 is
+// code 187.52): the GL allows each its own arithmetic, and the NVIDIA driver's uber and
+// specialized G-buffer programs do differ there while llvmpipe's do not. The lit radiance is at
+// most linear in the base color (diffuse color and F0 scale with it), so an image computed from
+// either is within |out| times this of the other.
+inline double baseColorStep(const hv::GBufferReadback& a, const hv::GBufferReadback& b, size_t i,
+                            int k) {
+  const double x = a.base_color[i][k], y = b.base_color[i][k];
+  return x == y ? 0.0 : std::abs(x - y) / std::max(std::min(x, y), 1e-6);
 }
 
 // A plane at y = 0 seen straight from above (camera at height 2 looking down -y), one material.
