@@ -26,7 +26,7 @@ namespace hv::app {
 
 namespace {
 void printCost(const eval::FrameCost& c) {
-  std::printf("%s (%dx%d, %d frames; floor %.2f ms)\n", c.scene.c_str(), c.width, c.height,
+  std::printf("%s (%dx%d, %d frames; floor %.3g ms)\n", c.scene.c_str(), c.width, c.height,
               c.frames, c.floor_ms);
   std::printf("  %-12s %9s %9s  %s\n", "pass", "ms", "x floor", "95% interval of x floor");
   auto row = [](const eval::PassCost& p) {
@@ -193,7 +193,7 @@ void printShadowSweep(const Scene& scene, int w, int h, int frames) {
     std::printf("  %-18s %22s %22s %10.2f %14zu\n", cs[i]->name.c_str(), lc, fc, s.median("light"),
                 cs[i]->rendered);
   }
-  std::printf("  (floor %.2f ms, median of the no-shadows renderer)\n", none.median("floor"));
+  std::printf("  (floor %.3g ms, median of the no-shadows renderer)\n", none.median("floor"));
   std::fflush(stdout);
 }
 
