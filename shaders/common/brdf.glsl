@@ -124,47 +124,72 @@ float G1_SmithBeckmann(float alpha, float NoX) {
 // Heitz 2014, "Understanding the Masking-Shadowing Function in Microfacet-Based BRDFs", eq. 99
 // (exact height-correlated Smith for GGX), in the division-free form of Filament
 // (surface_brdf.fs): V = 0.5 / (NoL sqrt(NoV^2 (1-a^2) + a^2) + NoV sqrt(NoL^2 (1-a^2) + a^2)).
-float V_SmithGGXCorrelated(float alpha, float NoV, float NoL) {
+// Each V term below is split as the light pass evaluates it: a factor of the view alone
+// (NAME_View, computed once per pixel, BrdfView) and the rest (NAME_ForView); NAME itself is the
+// two composed, so every caller runs the same arithmetic.
+float smithGgxRoot(float alpha, float NoX) {  // sqrt(NoX^2 (1-a^2) + a^2)
   float a2 = alpha * alpha;
-  float GGXV = NoL * sqrt(NoV * NoV * (1.0f - a2) + a2);
-  float GGXL = NoV * sqrt(NoL * NoL * (1.0f - a2) + a2);
+  return sqrt(NoX * NoX * (1.0f - a2) + a2);
+}
+float V_SmithGGXCorrelated_View(float alpha, float NoV) { return smithGgxRoot(alpha, NoV); }
+float V_SmithGGXCorrelated_ForView(float alpha, float view, float NoV, float NoL) {
+  float GGXV = NoL * view;
+  float GGXL = NoV * smithGgxRoot(alpha, NoL);
   return 0.5f / (GGXV + GGXL);
+}
+float V_SmithGGXCorrelated(float alpha, float NoV, float NoL) {
+  return V_SmithGGXCorrelated_ForView(alpha, V_SmithGGXCorrelated_View(alpha, NoV), NoV, NoL);
 }
 
 // Hammon 2017, "PBR Diffuse Lighting for GGX+Smith Microsurfaces", slide 82; UE4
 // Vis_SmithJointApprox: the sqrt of V_SmithGGXCorrelated replaced by its linear approximation,
 // V = 0.5 / mix(2 NoL NoV, NoL + NoV, alpha). No sqrt.
-float V_SmithGGXCorrelatedFast(float alpha, float NoV, float NoL) {
-  float GGXV = NoL * (NoV * (1.0f - alpha) + alpha);
+float V_SmithGGXCorrelatedFast_View(float alpha, float NoV) { return NoV * (1.0f - alpha) + alpha; }
+float V_SmithGGXCorrelatedFast_ForView(float alpha, float view, float NoV, float NoL) {
+  float GGXV = NoL * view;
   float GGXL = NoV * (NoL * (1.0f - alpha) + alpha);
   return 0.5f / (GGXV + GGXL);
+}
+float V_SmithGGXCorrelatedFast(float alpha, float NoV, float NoL) {
+  return V_SmithGGXCorrelatedFast_ForView(alpha, V_SmithGGXCorrelatedFast_View(alpha, NoV), NoV,
+                                          NoL);
 }
 
 // Karis 2013 eq. 4: Schlick-GGX, G1(v) = NoV / (NoV (1-k) + k), k = alpha/2. The NoL NoV of G
 // cancels against 4 NoL NoV, so V = 0.25 / ((NoV (1-k) + k)(NoL (1-k) + k)) (UE4 Vis_Schlick).
 // The caller picks k: alpha/2 for image-based lighting, with alpha from the Disney remap
 // ((roughness+1)/2)^2 for analytic lights (see visibility()).
-float V_SchlickGGX(float k, float NoV, float NoL) {
-  float GV = NoV * (1.0f - k) + k;
+float V_SchlickGGX_View(float k, float NoV) { return NoV * (1.0f - k) + k; }
+float V_SchlickGGX_ForView(float k, float view, float NoL) {
   float GL = NoL * (1.0f - k) + k;
-  return 0.25f / (GV * GL);
+  return 0.25f / (view * GL);
+}
+float V_SchlickGGX(float k, float NoV, float NoL) {
+  return V_SchlickGGX_ForView(k, V_SchlickGGX_View(k, NoV), NoL);
 }
 
 // Walter et al. 2007 eq. 34, separable (uncorrelated) Smith GGX, G = G1(v) G1(l). Each
 // G1(c) / (2c) = 1 / (c + sqrt(c^2 (1-a^2) + a^2)), so V needs no division by NoV or NoL.
+float V_SmithGGXSeparable_View(float alpha, float NoV) { return NoV + smithGgxRoot(alpha, NoV); }
+float V_SmithGGXSeparable_ForView(float alpha, float view, float NoL) {
+  float GL = NoL + smithGgxRoot(alpha, NoL);
+  return 1.0f / (view * GL);
+}
 float V_SmithGGXSeparable(float alpha, float NoV, float NoL) {
-  float a2 = alpha * alpha;
-  float GV = NoV + sqrt(NoV * NoV * (1.0f - a2) + a2);
-  float GL = NoL + sqrt(NoL * NoL * (1.0f - a2) + a2);
-  return 1.0f / (GV * GL);
+  return V_SmithGGXSeparable_ForView(alpha, V_SmithGGXSeparable_View(alpha, NoV), NoL);
 }
 
 // Walter et al. 2007 eq. 27 (rational Smith-Beckmann G1), separable: G = G1(v) G1(l).
-float V_SmithBeckmannSeparable(float alpha, float NoV, float NoL) {
-  float G = G1_SmithBeckmann(alpha, NoV) * G1_SmithBeckmann(alpha, NoL);
+float V_SmithBeckmannSeparable_View(float alpha, float NoV) { return G1_SmithBeckmann(alpha, NoV); }
+float V_SmithBeckmannSeparable_ForView(float alpha, float view, float NoV, float NoL) {
+  float G = view * G1_SmithBeckmann(alpha, NoL);
   // G1(c) ~ 3.535 c / alpha as c -> 0, so G / (4 NoV NoL) has a finite limit; the 1e-8 floor
   // only avoids 0/0 when NoL = 0 (then G = 0 and V = 0, harmless since the light term has NoL).
   return G / max(4.0f * NoV * NoL, 1e-8f);
+}
+float V_SmithBeckmannSeparable(float alpha, float NoV, float NoL) {
+  return V_SmithBeckmannSeparable_ForView(alpha, V_SmithBeckmannSeparable_View(alpha, NoV), NoV,
+                                          NoL);
 }
 
 // Cook & Torrance 1982, "A Reflectance Model for Computer Graphics" (V-cavity G):
@@ -223,9 +248,15 @@ float Fd_Lambert() { return INV_PI; }
 
 // Burley 2012, "Physically-Based Shading at Disney", section 5.3: retro-reflection with
 // fd90 = 0.5 + 2 roughness LoH^2, roughness = perceptual roughness as in Disney's model.
-float Fd_Burley(float roughness, float NoV, float NoL, float LoH) {
+// Split as the V terms are: the view's factor is Schlick's weight pow5(1 - NoV), and
+// F_Schlick(1, f90, NoV) = 1 + (f90 - 1) pow5(1 - NoV).
+float Fd_Burley_View(float NoV) { return pow5(1.0f - NoV); }
+float Fd_Burley_ForView(float roughness, float view, float NoL, float LoH) {
   float f90 = 0.5f + 2.0f * roughness * LoH * LoH;
-  return F_Schlick(1.0f, f90, NoL) * F_Schlick(1.0f, f90, NoV) * INV_PI;
+  return F_Schlick(1.0f, f90, NoL) * (1.0f + (f90 - 1.0f) * view) * INV_PI;
+}
+float Fd_Burley(float roughness, float NoV, float NoL, float LoH) {
+  return Fd_Burley_ForView(roughness, Fd_Burley_View(NoV), NoL, LoH);
 }
 
 // ---- Metallic workflow (Karis 2013 "Material Model") ----
@@ -284,19 +315,35 @@ float distribution(float alpha, float NoH, float sin2_NH) {
 #endif
 }
 
-// The chosen V term for a given visibility alpha (no remap); image-based lighting calls this
-// with alpha = roughness^2 (Karis 2013: the remap is for analytic lights only).
-float visibilityForAlpha(float alpha, float NoV, float NoL, float NoH, float VoH) {
+// The chosen V term's factor of the view alone (its NAME_View; 0 for Cook-Torrance and the
+// implicit term, which have none), for a given visibility alpha.
+float visibilityView(float alpha, float NoV) {
 #if HV_BRDF_V == HV_V_SCHLICK_GGX
-  return V_SchlickGGX(0.5f * alpha, NoV, NoL);  // Karis 2013 eq. 4: k = alpha/2
+  return V_SchlickGGX_View(0.5f * alpha, NoV);  // Karis 2013 eq. 4: k = alpha/2
 #elif HV_BRDF_V == HV_V_SMITH_GGX_CORRELATED
-  return V_SmithGGXCorrelated(alpha, NoV, NoL);
+  return V_SmithGGXCorrelated_View(alpha, NoV);
 #elif HV_BRDF_V == HV_V_SMITH_GGX_CORRELATED_FAST
-  return V_SmithGGXCorrelatedFast(alpha, NoV, NoL);
+  return V_SmithGGXCorrelatedFast_View(alpha, NoV);
 #elif HV_BRDF_V == HV_V_SMITH_GGX_SEPARABLE
-  return V_SmithGGXSeparable(alpha, NoV, NoL);
+  return V_SmithGGXSeparable_View(alpha, NoV);
 #elif HV_BRDF_V == HV_V_SMITH_BECKMANN_SEPARABLE
-  return V_SmithBeckmannSeparable(alpha, NoV, NoL);
+  return V_SmithBeckmannSeparable_View(alpha, NoV);
+#else
+  return 0.0f;
+#endif
+}
+// The chosen V term from its view factor (visibilityView of the same alpha and NoV).
+float visibilityForView(float view, float alpha, float NoV, float NoL, float NoH, float VoH) {
+#if HV_BRDF_V == HV_V_SCHLICK_GGX
+  return V_SchlickGGX_ForView(0.5f * alpha, view, NoL);
+#elif HV_BRDF_V == HV_V_SMITH_GGX_CORRELATED
+  return V_SmithGGXCorrelated_ForView(alpha, view, NoV, NoL);
+#elif HV_BRDF_V == HV_V_SMITH_GGX_CORRELATED_FAST
+  return V_SmithGGXCorrelatedFast_ForView(alpha, view, NoV, NoL);
+#elif HV_BRDF_V == HV_V_SMITH_GGX_SEPARABLE
+  return V_SmithGGXSeparable_ForView(alpha, view, NoL);
+#elif HV_BRDF_V == HV_V_SMITH_BECKMANN_SEPARABLE
+  return V_SmithBeckmannSeparable_ForView(alpha, view, NoV, NoL);
 #elif HV_BRDF_V == HV_V_COOK_TORRANCE
   return V_CookTorrance(NoH, NoV, NoL, VoH);
 #else
@@ -304,16 +351,23 @@ float visibilityForAlpha(float alpha, float NoV, float NoL, float NoH, float VoH
 #endif
 }
 
+// The chosen V term for a given visibility alpha (no remap); image-based lighting calls this
+// with alpha = roughness^2 (Karis 2013: the remap is for analytic lights only).
+float visibilityForAlpha(float alpha, float NoV, float NoL, float NoH, float VoH) {
+  return visibilityForView(visibilityView(alpha, NoV), alpha, NoV, NoL, NoH, VoH);
+}
+
 // Visibility for analytic lights. Karis 2013 eq. 4 ("Specular G") states the Disney remap
 // alpha = ((roughness+1)/2)^2 for Schlick-GGX only: with HV_REMAP_ROUGHNESS and
 // HV_BRDF_V == HV_V_SCHLICK_GGX, k = alpha_remapped / 2. Every other V term (Smith exact, its
 // approximation, Beckmann, Cook-Torrance, implicit) uses alpha = roughness^2 unchanged.
-float visibility(float roughness, float alpha, float NoV, float NoL, float NoH, float VoH) {
+float visibilityAlpha(float roughness, float alpha) {
   // Both arguments are compile-time constants: the compiler folds the choice.
-  float alpha_v = remapAppliesTo(HV_REMAP_ROUGHNESS != 0, HV_BRDF_V)
-                      ? remappedVisibilityAlpha(roughness)
-                      : alpha;
-  return visibilityForAlpha(alpha_v, NoV, NoL, NoH, VoH);
+  return remapAppliesTo(HV_REMAP_ROUGHNESS != 0, HV_BRDF_V) ? remappedVisibilityAlpha(roughness)
+                                                            : alpha;
+}
+float visibility(float roughness, float alpha, float NoV, float NoL, float NoH, float VoH) {
+  return visibilityForAlpha(visibilityAlpha(roughness, alpha), NoV, NoL, NoH, VoH);
 }
 
 // Karis 2013 eq. 5 area; f90 = 1 except for the UE4 occlusion variant.
@@ -338,14 +392,49 @@ float diffuseLobe(float roughness, float NoV, float NoL, float LoH) {
 #endif
 }
 
+// What a pixel's BRDF takes from the view alone, computed once per pixel before the light loop
+// (ShadingPoint, lights.glsl; UE4's BxDFContext holds N.V for the same reason): the visibility
+// term's view factor (visibilityView) and Burley's view factor. The ForView lobes below finish
+// them per light with the arithmetic of the whole terms (specularLobe, diffuseLobe). The
+// visibility alpha is not kept: two operations per light recompute it, and a value more per
+// pixel held across the light loop spills on llvmpipe (docs/performance.md, "Per-pixel setup").
+struct BrdfView {
+  float vis;  // visibilityView(visibilityAlpha(roughness, alpha), NoV)
+  float fd;   // Fd_Burley_View(NoV) with Burley, else 0 (unused)
+};
+BrdfView brdfView(Surface s, float NoV) {
+  BrdfView v;
+  v.vis = visibilityView(visibilityAlpha(s.roughness, s.alpha), NoV);
+#if HV_BRDF_FD == HV_FD_BURLEY
+  v.fd = Fd_Burley_View(NoV);
+#else
+  v.fd = 0.0f;
+#endif
+  return v;
+}
+
+float diffuseLobeForView(float roughness, BrdfView v, float NoL, float LoH) {
+#if HV_BRDF_FD == HV_FD_BURLEY
+  return Fd_Burley_ForView(roughness, v.fd, NoL, LoH);
+#else
+  return Fd_Lambert();
+#endif
+}
+
 // Specular BRDF D V F (Karis 2013 eq. 3 with V = G / (4 NoL NoV)). normalization scales D: 1 for
 // punctual lights, the energy normalization of Karis 2013 eqs. 14 and 20 for area lights.
 // NoV must already be clamped (HV_MIN_NOV), NoL saturated; sin2_NH = |N x H|^2 (see D_GGX).
+// v = brdfView(s, NoV).
+vec3 specularLobeForView(Surface s, BrdfView v, float NoV, float NoL, float NoH, float sin2_NH,
+                         float VoH, float normalization) {
+  float D = distribution(s.alpha, NoH, sin2_NH) * normalization;
+  float Vis =
+      visibilityForView(v.vis, visibilityAlpha(s.roughness, s.alpha), NoV, NoL, NoH, VoH);
+  return (D * Vis) * fresnel(s.f0, VoH);
+}
 vec3 specularLobe(Surface s, float NoV, float NoL, float NoH, float sin2_NH, float VoH,
                   float normalization) {
-  float D = distribution(s.alpha, NoH, sin2_NH) * normalization;
-  float Vis = visibility(s.roughness, s.alpha, NoV, NoL, NoH, VoH);
-  return (D * Vis) * fresnel(s.f0, VoH);
+  return specularLobeForView(s, brdfView(s, NoV), NoV, NoL, NoH, sin2_NH, VoH, normalization);
 }
 
 // Full BRDF f(v, l) (not multiplied by NoL) for unit V and L: diffuse_color * Fd + D V F.

@@ -187,14 +187,15 @@ float lineNormalization(float alpha, float len, float d2) {
 }
 
 // What every light shading a pixel shares, computed once per pixel before the light loop (as
-// UE4's BxDFContext): the view direction, N.V and the reflection ray of Karis eq. 11 and 19, and
-// the pixel's LTC and the magnitude of its lobe (ltcShadingSetup: only read, and so only computed,
-// with an LTC mode).
+// UE4's BxDFContext): the view direction, N.V, the reflection ray of Karis eq. 11 and 19, the
+// BRDF terms' factors of the view alone (brdfView), and the pixel's LTC and the magnitude of its
+// lobe (ltcShadingSetup: only read, and so only computed, with an LTC mode).
 struct ShadingPoint {
   vec3 P;         // world position
   vec3 V;         // unit, from P toward the eye
   vec3 R;         // reflect(-V, N): the reflection ray of the representative-point methods
   float NoV;      // max(dot(N, V), HV_MIN_NOV): the BRDF's N.V
+  BrdfView brdf;  // brdfView(s, NoV): the BRDF terms' factors of the view alone
   Ltc ltc;        // the LTC of this pixel's (roughness, N.V), world space
   vec3 ltc_spec;  // ltcSpecularMagnitude: what the LTC's integral (<= 1) is multiplied by
 };
@@ -207,7 +208,7 @@ vec3 diffuseTerm(Surface s, ShadingPoint sp, vec3 Ld, float diffuse_irr) {
   vec3 Hd = safeNormalize(sp.V + Ld);
   float NoLd = saturate(dot(s.N, Ld));
   float LoHd = saturate(dot(Ld, Hd));
-  return s.diffuse_color * (diffuseLobe(s.roughness, sp.NoV, NoLd, LoHd) * diffuse_irr);
+  return s.diffuse_color * (diffuseLobeForView(s.roughness, sp.brdf, NoLd, LoHd) * diffuse_irr);
 }
 vec3 specularTerm(Surface s, ShadingPoint sp, vec3 Ls, float spec_irr, float spec_norm) {
   // H is normalized explicitly: the identity N.H = (N.V + N.L) / sqrt(2 + 2 V.L) (UE4's
@@ -220,7 +221,8 @@ vec3 specularTerm(Surface s, ShadingPoint sp, vec3 Ls, float spec_irr, float spe
   // 1 - NoH^2 from |N x H|^2: exact near the mirror direction, where 1 - NoH^2 cancels (D_GGX).
   vec3 NxH = cross(s.N, H);
   float VoH = saturate(dot(sp.V, H));
-  return specularLobe(s, sp.NoV, NoL, NoH, dot(NxH, NxH), VoH, spec_norm) * (spec_irr * NoL);
+  return specularLobeForView(s, sp.brdf, sp.NoV, NoL, NoH, dot(NxH, NxH), VoH, spec_norm) *
+         (spec_irr * NoL);
 }
 
 // The LTC paths (they use ShadingPoint and specularTerm above; Ltc comes from ltc.glsl).
@@ -232,6 +234,7 @@ ShadingPoint makeShadingPoint(Surface s, vec3 P, vec3 V) {
   sp.V = V;
   sp.R = reflect(-V, s.N);
   sp.NoV = max(dot(s.N, V), HV_MIN_NOV);
+  sp.brdf = brdfView(s, sp.NoV);
   ltcShadingSetup(s, V, sp.NoV, sp.ltc, sp.ltc_spec);
   return sp;
 }
