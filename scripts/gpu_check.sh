@@ -6,8 +6,10 @@
 #       on the GPU machine: the renderer's name; every sample scene rendered at 320x180 (PFM and
 #       PNG, as scripts/same_renders.sh renders them) into OUTDIR/renders; then the cost goals'
 #       benchmarks at 1280x720, frames interleaved, each into OUTDIR/bench_*.txt (--quick: the
-#       renders and the frame table only). Every step has a time limit and a failed step does not
-#       stop the rest; OUTDIR/summary.txt lists each step with its exit status and seconds.
+#       renders and the frame table only), then, where this build has them, the GPU test binaries
+#       (build/tests/test_{gl,ibl,render,eval,app}: what fails on this driver, not on llvmpipe).
+#       Every step has a time limit and a failed step does not stop the rest;
+#       OUTDIR/summary.txt lists each step with its exit status and seconds.
 #   bash scripts/gpu_check.sh compare OUTDIR [--exe PATH]
 #       here: renders the same scenes with this machine's driver and prints, per scene,
 #       `halfvec compare` of the two HDR images (relative RMSE, largest difference): what one
@@ -114,6 +116,15 @@ for n in 256 1024; do
   step "bench_cull_stages_$n" 200 "$hv" bench --frame --cull-stages "${big[@]}" \
     --scene "samples/bench/floor_spheres_${n}_lights_5m.json"
 done
-step bench_vs_brute_4 200 "$hv" bench --frame --vs-brute "${big[@]}" \
-  --scene samples/bench/floor_spheres_4_lights_5m.json
+# Where tiled culling starts to pay on this GPU (culling: auto's crossover is llvmpipe's).
+for n in 4 32 256 1024; do
+  for r in 5m 1p5m; do
+    step "bench_vs_brute_${n}_$r" 200 "$hv" bench --frame --vs-brute "${big[@]}" \
+      --scene "samples/bench/floor_spheres_${n}_lights_$r.json"
+  done
+done
+for t in gl ibl render eval app; do
+  bin=$(dirname "$hv")/tests/test_$t
+  [ -x "$bin" ] && step "test_$t" 300 "$bin" --gtest_brief=1
+done
 exit 0
