@@ -58,7 +58,7 @@ if [ "$mode" = compare ]; then
   printf '|---|---:|---:|---:|---:|\n'
   for f in "$out"/renders/*.pfm; do
     name=$(basename "$f" .pfm)
-    [ -f "$mine/$name.pfm" ] || { echo "| $name | (not rendered here) | | |"; continue; }
+    [ -f "$mine/$name.pfm" ] || { echo "| $name | (not rendered here) | | | |"; continue; }
     "$hv" compare "$f" "$mine/$name.pfm" --json "$mine/$name.hdr.json" >/dev/null 2>&1
     "$hv" compare "${f%.pfm}.png" "$mine/$name.png" --json "$mine/$name.png.json" >/dev/null 2>&1
     python3 - "$mine/$name.hdr.json" "$mine/$name.png.json" "$name" <<'PY'

@@ -24,39 +24,17 @@ then the same two measures for controls: a = 1 (the surface drawn opaque) and a 
 Python's standard library only.
 """
 import os
-import struct
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from sample_image_rmse import read_png  # noqa: E402
-
-
-def read_pfm(path):
-    with open(path, "rb") as f:
-        kind = f.readline().strip()
-        if kind != b"PF":
-            sys.exit(f"{path}: not an RGB PFM")
-        w, h = map(int, f.readline().split())
-        scale = float(f.readline())
-        data = f.read()
-    fmt = "<" if scale < 0 else ">"
-    vals = struct.unpack(f"{fmt}{w * h * 3}f", data[:w * h * 12])
-    # PFM rows go bottom-up; return top-down rows of RGB triples.
-    return w, h, [[vals[((h - 1 - y) * w + x) * 3:((h - 1 - y) * w + x) * 3 + 3] for x in range(w)]
-                  for y in range(h)]
+from ibl_bias import read_pfm  # noqa: E402
+from sample_image_rmse import chroma, read_png  # noqa: E402
 
 
 def png_rgb(path):
     w, h, c, rows = read_png(path)
     return w, h, [[[rows[y][x * c + k] / 255.0 for k in range(3)] for x in range(w)]
                   for y in range(h)]
-
-
-def chroma(p, q):
-    sp, sq = sum(p), sum(q)
-    if sp <= 0.05 or sq <= 0.05:
-        return None
-    return ((p[0] / sp - q[0] / sq) ** 2 + (p[1] / sp - q[1] / sq) ** 2) ** 0.5
 
 
 def measures(pixels, coverage, gain):

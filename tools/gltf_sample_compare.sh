@@ -25,11 +25,11 @@ here=$(cd "$(dirname "$0")" && pwd)
 assets=${HV_ASSETS_DIR:-$here/../../shared/assets}
 env_hdr=$assets/env/studio_small_03_1k.hdr
 background=$assets/gltf-asset-generator/Positive/Material_AlphaMask/Figures/SampleImages/Material_AlphaMask_03.png
-# render MODEL OUT_STEM [--set ...]: the sample images' camera, lighting and output transform.
+# render MODEL OUT_STEM [options]: the sample images' camera, lighting and output transform.
 render() {
   local model=$1 stem=$2
   shift 2
-  "$exe" render "$model" --size 400x400 --out "$stem.png" --hdr "$stem.pfm" --aa none \
+  "$exe" render "$model" --size 400x400 --out "$stem.png" --aa none \
     --env "$env_hdr" --set 'camera.position=[0,0,1.3]' --set 'camera.target=[0,0,0]' \
     --set 'camera.fov_y_deg=45' --set 'lights=[]' --set 'settings.tone_map="pbr_neutral"' \
     --set 'settings.gamma="srgb"' --set 'settings.dither=false' "$@" >/dev/null 2>"$stem.log"
@@ -37,8 +37,8 @@ render() {
 for model in "$@"; do
   name=$(basename "$model" .gltf)
   expected=$(dirname "$model")/Figures/SampleImages/$name.png
-  render "$model" "$out/$name"
   if [ "$blend" = 0 ]; then
+    render "$model" "$out/$name"
     printf '%-40s %s\n' "$name" \
       "$(python3 "$here/sample_image_rmse.py" "$out/$name.png" "$expected" 40 40 360 360)"
     continue
@@ -56,8 +56,9 @@ for m in g.get("materials", []):
     m["alphaMode"] = "OPAQUE"
 json.dump(g, open(sys.argv[2], "w"))
 PY
-  render "$copy/$name.gltf" "$out/${name}_opaque"
-  render "$model" "$out/${name}_empty" --set 'objects=[]'
+  render "$model" "$out/$name" --hdr "$out/$name.pfm"
+  render "$copy/$name.gltf" "$out/${name}_opaque" --hdr "$out/${name}_opaque.pfm"
+  render "$model" "$out/${name}_empty" --hdr "$out/${name}_empty.pfm" --set 'objects=[]'
   printf '%-40s %s\n' "$name" "$(python3 "$here/blend_composite.py" "$out/$name.pfm" \
     "$out/${name}_opaque.pfm" "$out/${name}_empty.pfm" "$out/${name}_opaque.png" "$expected" \
     "$background" 40 40 360 360)"

@@ -61,6 +61,14 @@ def read_png(path):
     return width, height, comps, rows
 
 
+def chroma(p, q):
+    """Distance of the (r, g) chromaticities of two RGB values; None unless both sums > 0.05."""
+    sp, sq = sum(p), sum(q)
+    if sp <= 0.05 or sq <= 0.05:
+        return None
+    return ((p[0] / sp - q[0] / sq) ** 2 + (p[1] / sp - q[1] / sq) ** 2) ** 0.5
+
+
 def main():
     if len(sys.argv) != 7:
         sys.exit(__doc__)
@@ -81,16 +89,16 @@ def main():
                 n += 1
     rmse = (se / n) ** 0.5
     re = rr = 0.0
-    chroma, nc = 0.0, 0
+    cs, nc = 0.0, 0
     for y in range(y0, y1):
         for x in range(x0, x1):
             p = [a[y][x * c1 + k] / 255.0 for k in range(3)]
             q = [b[y][x * c2 + k] / 255.0 for k in range(3)]
             re += sum(pi * qi for pi, qi in zip(p, q))
             rr += sum(pi * pi for pi in p)
-            sp, sq = sum(p), sum(q)
-            if sp > 0.05 and sq > 0.05:
-                chroma += ((p[0] / sp - q[0] / sq) ** 2 + (p[1] / sp - q[1] / sq) ** 2) ** 0.5
+            c = chroma(p, q)
+            if c is not None:
+                cs += c
                 nc += 1
     gain = re / rr if rr > 0.0 else 0.0
     gse = 0.0
@@ -100,7 +108,7 @@ def main():
                 gse += (gain * a[y][x * c1 + k] / 255.0 - b[y][x * c2 + k] / 255.0) ** 2
     grel = (gse / n) ** 0.5 / (ref / n)
     print(f"rel_rmse={rmse / (ref / n):.4f} rmse={rmse:.4f} mean_abs={ae / n:.4f} "
-          f"gain={gain:.3f} gain_rel_rmse={grel:.4f} chroma={chroma / max(nc, 1):.4f}")
+          f"gain={gain:.3f} gain_rel_rmse={grel:.4f} chroma={cs / max(nc, 1):.4f}")
 
 
 if __name__ == "__main__":
