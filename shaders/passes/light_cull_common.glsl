@@ -74,14 +74,13 @@ bool sphereTouchesBox(vec4 sphere, vec3 lo, vec3 hi) {
   vec3 q = clamp(sphere.xyz, lo, hi);
   return dot(q - sphere.xyz, q - sphere.xyz) <= sphere.w * sphere.w;
 }
-// A spot's cone against the box (lo, hi): false when the box's bounding sphere lies outside it
-// (sphereOutsideCone); true for every other light, and no code without spots.
-bool coneTouchesBox(uint i, vec3 lo, vec3 hi) {
+// A spot's cone (the record's cone_apex, cone_axis) against the box (lo, hi): false when the
+// box's bounding sphere lies outside it (sphereOutsideCone); true for every other light, and no
+// code without spots.
+bool coneTouchesBox(vec4 apex, vec4 axis, vec3 lo, vec3 hi) {
 #if !HV_HAS_SPOT_LIGHTS
   return true;
 #endif
-  vec4 apex = cull_lights[i].cone_apex;
-  vec4 axis = cull_lights[i].cone_axis;
   vec3 c = 0.5 * (lo + hi);
   return apex.w == 0.0 ||
          !sphereOutsideCone(c, 0.5 * length(hi - lo), apex.xyz, axis.xyz, axis.w, apex.w);
@@ -102,5 +101,35 @@ uvec2 thisTile() {
   return gl_WorkGroupID.xy * uint(HV_CULL_GROUP_TILES) + blockOrigin(t / 8u) + in_block;
 }
 bool inGrid(uvec2 tile) { return tile.x < u_viewport.z && tile.y < u_viewport.w; }
+
+// The last test of every path, the light (its record) against one tile with a surface, whose
+// view-space AABB is (lo, hi): inside the light's tile rectangle, sphere-box distance, a spot's
+// cone against the box's sphere.
+bool lightTouchesTile(vec4 sphere, uvec2 packed_rect, vec4 cone_apex, vec4 cone_axis, uvec2 tile,
+                      vec3 lo, vec3 hi) {
+  uvec4 rect = unpackRect(packed_rect);
+  return tile.x >= rect.x && tile.x <= rect.z && tile.y >= rect.y && tile.y <= rect.w &&
+         sphereTouchesBox(sphere, lo, hi) && coneTouchesBox(cone_apex, cone_axis, lo, hi);
+}
+
+// The group's reservation (reserve): its entries' total, then its base in the index list.
+shared uint s_group_total, s_group_base;
+
+// Reserves the group's entries with one global atomic (within the group, each tile's place in any
+// order) and writes the tile's range and split. Returns the tile's write cursors per type.
+// Contains barriers: call from uniform control flow, with s_group_total 0 and a barrier before.
+uvec3 reserve(uvec2 tile, uvec3 n) {
+  uint total = n.x + n.y + n.z;
+  uint local_offset = atomicAdd(s_group_total, total);
+  barrier();
+  if (gl_LocalInvocationIndex == 0u) s_group_base = atomicAdd(tile_index_count, s_group_total);
+  barrier();
+  uint offset = s_group_base + local_offset;
+  if (inGrid(tile)) {
+    tile_ranges[tileIndex(tile)] = uvec2(offset, total);
+    tile_types[tileIndex(tile)] = n.xy;  // points, spheres; tubes follow
+  }
+  return uvec3(offset, offset + n.x, offset + n.x + n.y);
+}
 
 #endif

@@ -2,10 +2,10 @@
 // light_cull_count.comp, light_cull_reserve.comp, light_cull_fill.comp): (a) refine, the group's
 // mask refined per block (rectangle and sphere-box tests against each block) into shared memory,
 // the group's mask cleared for the next frame or batch; (b) walk, every tile walks its block's mask
-// in light order, tests each light against itself (inside the light's rectangle, sphere-box
-// distance to the tile's AABB, a spot's cone against the AABB's sphere) and counts the hits per light type; (c) reserve, the group reserves
-// its tiles' entries with one atomicAdd on the list's total; (d) walk again, writing each tile's
-// list: points, then spheres, then tubes, each in light order.
+// in light order, tests each light against itself (lightTouchesTile) and counts the hits per light
+// type; (c) reserve (light_cull_common.glsl), the group reserves its tiles' entries with one
+// atomicAdd on the list's total; (d) walk again, writing each tile's list: points, then spheres,
+// then tubes, each in light order.
 #ifndef HV_LIGHT_CULL_WALK_GLSL
 #define HV_LIGHT_CULL_WALK_GLSL
 
@@ -19,7 +19,6 @@ shared uint s_mask[HV_CULL_BLOCKS * (HV_CULL_FUSED_MAX_LIGHTS / 32)];
 // those (and no other word of s_mask is written).
 shared uint s_words[HV_CULL_BLOCKS * (HV_CULL_FUSED_MAX_LIGHTS / 1024)];
 shared vec4 s_block_bounds[HV_CULL_BLOCKS * 2];
-shared uint s_group_total, s_group_base;
 
 uint blockWords() { return u_batch.mask_words; }
 uint blockSummaryWords() { return u_batch.summary_words; }
@@ -57,7 +56,8 @@ void refine() {
         bool touch = valid && rect.x <= hi.x && rect.z >= lo.x && rect.y <= hi.y && rect.w >= lo.y &&
                      box_lo.w != 0.0 &&
                      sphereTouchesBox(sphere, box_lo.xyz, s_block_bounds[2 * b + 1].xyz) &&
-                     coneTouchesBox(i, box_lo.xyz, s_block_bounds[2 * b + 1].xyz);
+                     coneTouchesBox(cull_lights[i].cone_apex, cull_lights[i].cone_axis, box_lo.xyz,
+                                    s_block_bounds[2 * b + 1].xyz);
         bits[b] |= touch ? 1u << k : 0u;
       }
     } while (m != 0u);
@@ -88,11 +88,11 @@ void walk(uvec2 tile, bool fill, inout uvec3 n, inout uvec3 cursor) {
       do {  // m != 0: the summary marks the word
         uint i = first + uint(findLSB(m));
         m &= m - 1u;
-        uvec4 rect = unpackRect(cull_lights[i].rect.xy);
         uint type = cull_lights[i].rect.z;
-        bool hit = has_surface && tile.x >= rect.x && tile.x <= rect.z && tile.y >= rect.y &&
-                   tile.y <= rect.w && sphereTouchesBox(cull_lights[i].sphere, lo.xyz, hi) &&
-                   coneTouchesBox(i, lo.xyz, hi);
+        bool hit = has_surface &&
+                   lightTouchesTile(cull_lights[i].sphere, cull_lights[i].rect.xy,
+                                    cull_lights[i].cone_apex, cull_lights[i].cone_axis, tile,
+                                    lo.xyz, hi);
         // Per type without indexing a vector by a variable (which a SIMD implementation may turn
         // into per-lane memory accesses): selects.
         uvec3 add = uvec3(type == 0u, type == 1u, type == 2u) * uint(hit);
@@ -103,23 +103,6 @@ void walk(uvec2 tile, bool fill, inout uvec3 n, inout uvec3 cursor) {
       } while (m != 0u);
     }
   }
-}
-
-// (c) Reserves the group's entries with one global atomic (within the group, each tile's place in
-// any order) and writes the tile's range and split. Returns the tile's write cursors per type.
-// Contains barriers: call from uniform control flow, with s_group_total 0 and a barrier before.
-uvec3 reserve(uvec2 tile, uvec3 n) {
-  uint total = n.x + n.y + n.z;
-  uint local_offset = atomicAdd(s_group_total, total);
-  barrier();
-  if (gl_LocalInvocationIndex == 0u) s_group_base = atomicAdd(tile_index_count, s_group_total);
-  barrier();
-  uint offset = s_group_base + local_offset;
-  if (inGrid(tile)) {
-    tile_ranges[tileIndex(tile)] = uvec2(offset, total);
-    tile_types[tileIndex(tile)] = n.xy;  // points, spheres; tubes follow
-  }
-  return uvec3(offset, offset + n.x, offset + n.x + n.y);
 }
 
 // Shared state to 0, the blocks' bounds into shared memory; a barrier follows.
