@@ -17,6 +17,9 @@
 #define HV_CULL_BLOCK_TILES (HV_CULL_BLOCK_W * HV_CULL_BLOCK_H)
 #define HV_CULL_BLOCKS_X (HV_CULL_GROUP_TILES / HV_CULL_BLOCK_W)
 #define HV_CULL_BLOCKS (HV_CULL_GROUP_SIZE / HV_CULL_BLOCK_TILES)
+// The most lights the single-dispatch culling of a handful of lights takes (light_cull_few.comp:
+// one light record per invocation of a group); the renderer's threshold is at most this.
+#define HV_CULL_FEW_MAX_LIGHTS 64
 // The binning stage's workgroup: this many lights of a batch (per band of group rows).
 #define HV_CULL_BIN_LIGHTS 64
 

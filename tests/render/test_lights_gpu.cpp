@@ -398,6 +398,91 @@ TEST(LightPass, TiledEqualsBruteForceLightsStraddlingTilesAndNearPlane) {
   EXPECT_GT(expectTiledEqualsBrute(tiled, r.readHdr(), w), 1e-3) << "lights should light the floor";
 }
 
+// A handful of lights (render::kCullFewLights) is culled in one dispatch (light_cull_few.comp)
+// instead of the three stages; both must write the same lists: the same image to the bit and the
+// same number of entries, and the image tiled equals brute force (tolerance as above). The scene
+// has the staged path's hard cases: tiles straddling depth edges, a light whose sphere holds the
+// camera, one crossing the near plane, one behind the camera, a spot (the cone test), every type.
+TEST(LightPass, FewLightsCulledInOneDispatchAsByTheStages) {
+  testContext();
+  Material m;
+  m.base_color = glm::vec3(0.8f);
+  m.roughness = 0.4f;
+  Scene s = planeScene(m, 12.0f);
+  s.camera.position = {0.0f, 1.5f, 5.0f};
+  s.camera.target = {0.0f, 0.5f, 0.0f};
+  s.camera.up = {0.0f, 1.0f, 0.0f};
+  s.camera.near_plane = 0.1f;
+  s.meshes.push_back(makeSphere(0.5f, 24, 12));
+  s.meshes.back().material = 0;
+  for (int i = 0; i < 3; ++i) {
+    Object o;
+    o.meshes = {1};
+    o.transform = glm::translate(glm::mat4(1.0f),
+                                 glm::vec3(-1.5f + 1.5f * float(i), 0.5f, 1.5f - 1.5f * float(i)));
+    s.objects.push_back(o);
+  }
+  RandomLights lights;
+  lights.count = 10;
+  lights.seed = 11;
+  lights.half_xz = 4.0f;
+  lights.y1 = 1.5f;
+  lights.z_shift = 1.0f;
+  lights.range0 = 0.8f;
+  lights.range_span = 2.0f;
+  lights.length = 0.3f;
+  addRandomLights(s, lights);
+  Light inside;  // the camera is inside this one's culling sphere
+  inside.position = s.camera.position + glm::vec3(0.2f, -0.1f, -0.05f);
+  inside.range = 3.0f;
+  inside.intensity = 0.5f;
+  s.lights.push_back(inside);
+  Light near_plane = inside;  // just in front of the camera, crossing the near plane
+  near_plane.type = LightType::Sphere;
+  near_plane.radius = 0.05f;
+  near_plane.position = s.camera.position + glm::vec3(0.0f, 0.0f, -0.12f);
+  near_plane.range = 1.0f;
+  s.lights.push_back(near_plane);
+  Light spot;  // a narrow cone onto the middle sphere
+  spot.type = LightType::Spot;
+  spot.position = {0.5f, 3.0f, 0.5f};
+  spot.direction = glm::normalize(glm::vec3(-0.5f, -2.5f, -0.5f));
+  spot.inner_cone_angle = 0.1f;
+  spot.outer_cone_angle = 0.25f;
+  spot.range = 6.0f;
+  spot.intensity = 8.0f;
+  s.lights.push_back(spot);
+  ASSERT_LE(s.lights.size(), render::kCullFewLights);
+
+  const int w = 125, h2 = 70;           // partial tiles at two edges
+  s.settings.culling = Culling::Tiled;  // not auto: the tiled side is the one tested
+  auto run = [&](size_t few_lights, bool* few_ran) {
+    render::Renderer r;
+    render::DebugOptions o;
+    o.cull_few_lights = few_lights;
+    o.cull_stage_timers = true;  // the stages' names say which path ran
+    r.setDebugOptions(o);
+    r.setScene(s);
+    const render::FrameStats stats = r.render(w, h2);
+    *few_ran = std::any_of(stats.passes.begin(), stats.passes.end(),
+                           [](const auto& p) { return p.first == "light_cull_few"; });
+    return std::make_pair(r.readHdr(), stats.tile_light_entries);
+  };
+  bool few_ran = false, staged_few = true;
+  const auto [few, few_entries] = run(render::kCullFewLights, &few_ran);
+  const auto [staged, staged_entries] = run(0, &staged_few);
+  EXPECT_TRUE(few_ran);
+  EXPECT_FALSE(staged_few);
+  EXPECT_GT(few_entries, 0u);
+  EXPECT_EQ(few_entries, staged_entries);
+  EXPECT_EQ(few.px, staged.px) << "the two paths' lists must be the same, in light order";
+  s.settings.culling = Culling::BruteForce;
+  render::Renderer r;
+  r.setScene(s);
+  r.render(w, h2);
+  EXPECT_GT(expectTiledEqualsBrute(few, r.readHdr(), w), 1e-3) << "lights should light the scene";
+}
+
 // culling: auto picks brute force for two point lights whose spheres hold the camera (every tile
 // lists both: chooseCulling), and the image is the tiled one bit for bit: both sum the same
 // lights in light order.

@@ -48,6 +48,11 @@ size_t listBound(const std::vector<glm::vec4>& spheres, const FrameBlock& frame)
   }
   return bound;
 }
+// The program of one culling stage, shaders/passes/<name>.comp.
+GLuint stageProgram(const PassContext& ctx, const char* name) {
+  return ctx.programs.get(
+      {name, {{GL_COMPUTE_SHADER, std::string("passes/") + name + ".comp"}}, {}});
+}
 }  // namespace
 
 void LightCulling::growList(size_t need) {
@@ -132,6 +137,7 @@ struct LightCulling::Plan {
   size_t batch_lights = 0, batches = 0;
   size_t words = 0, summary = 0;  // mask and summary words per group
   bool fused = false;             // one batch, binned and walked in one dispatch each
+  bool few = false;               // a handful of lights: one dispatch (light_cull_few.comp)
   // The dispatches' CullBatch records, one uniform-buffer range each: record 0 for the stages
   // that read no batch (bounds, reserve), record 1 + b for batch b.
   std::vector<glsl::CullBatch> records;
@@ -148,6 +154,7 @@ LightCulling::Plan LightCulling::plan(const FrameBlock& f, const Input& in) {
                        ? in.batch_lights
                        : HV_CULL_FUSED_MAX_LIGHTS;
   p.fused = in.light_count <= p.batch_lights && p.batch_lights == HV_CULL_FUSED_MAX_LIGHTS;
+  p.few = p.fused && in.light_count <= std::min<size_t>(in.few_lights, HV_CULL_FEW_MAX_LIGHTS);
   // Mask words per group: one bit per light of a batch; summary words: one bit per mask word.
   p.words = (std::min(in.light_count, p.batch_lights) + 31) / 32;
   p.summary = (p.words + 31) / 32;
@@ -176,14 +183,29 @@ void LightCulling::dispatch(gl::PassBindings& b, const Plan& p, GLuint program, 
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
-// Every stage once: bounds, then binning and walks (one dispatch each, or per batch).
+// Every stage once: the few-lights dispatch, or the staged path.
 void LightCulling::cull(const PassContext& ctx, gl::PassBindings& b, const Plan& p,
                         bool stage_timers) const {
-  auto stage = [&](const char* name) {
-    return ctx.programs.get(
-        {name, {{GL_COMPUTE_SHADER, std::string("passes/") + name + ".comp"}}, {}});
-  };
+  auto stage = [&](const char* name) { return stageProgram(ctx, name); };
   b.storage(HV_BINDING_TILE_INDICES, indices_.id());
+  if (p.few) {
+    const uint32_t zero = 0;  // the list's total, for the groups' reservations
+    glClearNamedBufferSubData(indices_.id(), GL_R32UI, 0, sizeof zero, GL_RED_INTEGER,
+                              GL_UNSIGNED_INT, &zero);
+    const StageTimer t(ctx.timer, stage_timers, "light_cull_few");
+    dispatch(b, p, stage("light_cull_few"), 1, false);
+  } else {
+    stages(ctx, b, p, stage_timers);
+  }
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  // The list's header holds the total; the CPU reads it from this copy (readTotal).
+  glCopyNamedBufferSubData(indices_.id(), total_.id(), 0, 0, sizeof(uint32_t));
+}
+
+// The staged path: bounds, then binning and walks (one dispatch each, or per batch).
+void LightCulling::stages(const PassContext& ctx, gl::PassBindings& b, const Plan& p,
+                          bool stage_timers) const {
+  auto stage = [&](const char* name) { return stageProgram(ctx, name); };
   const GLuint bin = stage("light_cull_bin");
   {
     const StageTimer t(ctx.timer, stage_timers, "light_cull_bounds");
@@ -209,9 +231,6 @@ void LightCulling::cull(const PassContext& ctx, gl::PassBindings& b, const Plan&
       dispatch(b, p, fill, 1 + k, false);
     }
   }
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  // The list's header holds the total; the CPU reads it from this copy (readTotal).
-  glCopyNamedBufferSubData(indices_.id(), total_.id(), 0, 0, sizeof(uint32_t));
 }
 
 // Tiled culling (shaders/passes/light_cull_*.comp; docs/lights.md): per tile, its surface bounds
@@ -220,12 +239,13 @@ void LightCulling::cull(const PassContext& ctx, gl::PassBindings& b, const Plan&
 // touches; per group, the mask refined per block, then each tile's walk of its block's mask in
 // light order, twice: count, then (after one reservation per group) write. Up to
 // HV_CULL_FUSED_MAX_LIGHTS lights the last steps are one dispatch; above, the lights are binned
-// and walked in batches. No cap on a tile's list: the index list is sized before the dispatches
-// from an upper bound computed on the CPU (listBound: the lights' tile rectangles, which contain
-// every pair the GPU can find), so nothing waits for the GPU. Only when that bound exceeds
-// Input::bound_limit (32 Mi entries, 128 MiB, by default) is the exact total read back after the
-// dispatches (a pipeline stall on a GPU) and, if the list was too small, the list grown to it
-// and the culling run again.
+// and walked in batches. Up to Input::few_lights lights (kCullFewLights) all of it is one
+// dispatch, every light tested against every tile (light_cull_few.comp): the same lists. No cap
+// on a tile's list: the index list is sized before the dispatches from an upper bound computed on
+// the CPU (listBound: the lights' tile rectangles, which contain every pair the GPU can find), so
+// nothing waits for the GPU. Only when that bound exceeds Input::bound_limit (32 Mi entries, 128
+// MiB, by default) is the exact total read back after the dispatches (a pipeline stall on a GPU)
+// and, if the list was too small, the list grown to it and the culling run again.
 TileListView LightCulling::run(const PassContext& ctx, FrameUniforms& frame, const Input& in) {
   // One timer for the pass, or with Input::stage_timers one per stage instead (the timer does not
   // nest: the frame's total is the sum of its timers).

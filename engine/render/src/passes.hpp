@@ -115,6 +115,7 @@ class LightCulling {
     size_t bound_limit = size_t(32) << 20;                 // DebugOptions::tile_bound_limit
     size_t batch_lights = 0;                               // DebugOptions::cull_batch_lights
     bool stage_timers = false;                             // DebugOptions::cull_stage_timers
+    size_t few_lights = kCullFewLights;                    // DebugOptions::cull_few_lights
   };
   // Builds the lists for `frame`; updates frame.block.tile_capacity when it grows.
   TileListView run(const PassContext& ctx, FrameUniforms& frame, const Input& in);
@@ -130,6 +131,7 @@ class LightCulling {
   struct Plan;  // the frame's grid of groups and batches (light_cull_pass.cpp)
   static Plan plan(const FrameBlock& frame, const Input& in);
   void cull(const PassContext& ctx, gl::PassBindings& b, const Plan& p, bool stage_timers) const;
+  void stages(const PassContext& ctx, gl::PassBindings& b, const Plan& p, bool stage_timers) const;
   void dispatch(gl::PassBindings& b, const Plan& p, GLuint program, size_t record,
                 bool per_light) const;
   void growList(size_t need);

@@ -274,10 +274,11 @@ Renderer::FrameLighting Renderer::lightFrame(const PassContext& ctx, FrameUnifor
   // key_.settings: culling auto resolved (chooseCulling).
   lit.culled = key_.settings.culling == Culling::Tiled || view == DebugView::LightsPerTile;
   if (lit.culled) {
-    lit.tiles = p.culling.run(
-        ctx, frame,
-        {t.depth.id(), gpu_->lightBuffer(), gpu_->lightCount(), &gpu_->lightCullSpheres(),
-         debug_.tile_bound_limit, debug_.cull_batch_lights, debug_.cull_stage_timers});
+    lit.tiles =
+        p.culling.run(ctx, frame,
+                      {t.depth.id(), gpu_->lightBuffer(), gpu_->lightCount(),
+                       &gpu_->lightCullSpheres(), debug_.tile_bound_limit, debug_.cull_batch_lights,
+                       debug_.cull_stage_timers, debug_.cull_few_lights});
   }
   // The predicted_error view: the light pass's probe with the budget's code compiled in.
   const bool predicted = view == DebugView::PredictedError;

@@ -104,6 +104,12 @@ enum class LightPassProbe { Shade = 0, FetchOnly = 1, SetupOnly = 2, PredictedEr
 
 // Knobs for benchmarks and tests, kept off the renderer's normal API (Renderer::setDebugOptions).
 // The defaults are the normal renderer.
+// Up to this many lights the tiled culling is one dispatch (shaders/passes/
+// light_cull_few.comp: every light against every tile) instead of its three stages; the same
+// lists either way (docs/performance.md, "Culling a handful of lights"). At most
+// HV_CULL_FEW_MAX_LIGHTS (64).
+inline constexpr size_t kCullFewLights = 16;
+
 struct DebugOptions {
   LightPassProbe light_probe = LightPassProbe::Shade;
   // The tiled light pass reads lights and tile lists through buffer textures when they fit in
@@ -131,6 +137,9 @@ struct DebugOptions {
   // batched: "light_cull_batches" after the bounds) instead of as one "light_cull" pass
   // (`halfvec bench --frame --cull-stages`). The image is unchanged.
   bool cull_stage_timers = false;
+  // The single-dispatch culling up to this many lights (kCullFewLights; 0: always the stages).
+  // Tests compare the two paths' lists.
+  size_t cull_few_lights = kCullFewLights;
 };
 
 class Renderer {
