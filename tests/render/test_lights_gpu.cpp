@@ -483,6 +483,51 @@ TEST(LightPass, FewLightsCulledInOneDispatchAsByTheStages) {
   EXPECT_GT(expectTiledEqualsBrute(few, r.readHdr(), w), 1e-3) << "lights should light the scene";
 }
 
+// Beyond kCullFewLights, lights that reach kCullFewCoverage of the tiles on average
+// (kCullFewCoveringLights of them at most) take the one dispatch too, the same lists as the
+// stages; as many small lights take the stages.
+TEST(LightPass, CoveringLightsCulledInOneDispatch) {
+  testContext();
+  Material m;
+  m.base_color = glm::vec3(0.8f);
+  m.roughness = 0.5f;
+  const int w = 96, h2 = 64;
+  auto culled = [&](float range, size_t few_lights, bool* few_ran) {
+    Scene s = planeScene(m, 8.0f);
+    s.camera.position = {0.0f, 3.0f, 4.0f};
+    s.camera.up = {0.0f, 1.0f, 0.0f};
+    RandomLights lights;
+    lights.count = int(render::kCullFewCoveringLights);
+    lights.seed = 13;
+    lights.range0 = range;
+    lights.range_span = 0.0f;
+    addRandomLights(s, lights);
+    s.settings.culling = Culling::Tiled;
+    render::Renderer r;
+    render::DebugOptions o;
+    o.cull_few_lights = few_lights;
+    o.cull_stage_timers = true;
+    r.setDebugOptions(o);
+    r.setScene(s);
+    const render::FrameStats stats = r.render(w, h2);
+    *few_ran = std::any_of(stats.passes.begin(), stats.passes.end(),
+                           [](const auto& p) { return p.first == "light_cull_few"; });
+    return r.readHdr();
+  };
+  static_assert(render::kCullFewCoveringLights > render::kCullFewLights);
+  bool few = false, staged = true;
+  const auto large = culled(30.0f, render::kCullFewLights, &few);
+  const auto large_staged = culled(30.0f, 0, &staged);
+  EXPECT_TRUE(few) << "lights that cover the screen: one dispatch";
+  EXPECT_FALSE(staged);
+  EXPECT_EQ(large.px, large_staged.px);
+  const auto small = culled(0.4f, render::kCullFewLights, &few);
+  EXPECT_FALSE(few) << "small lights: the stages";
+  double mean = 0.0;
+  for (const auto& p : small.px) mean += p.x;
+  EXPECT_GT(mean, 0.0) << "the small lights should light the plane";
+}
+
 // culling: auto picks brute force for two point lights whose spheres hold the camera (every tile
 // lists both: chooseCulling), and the image is the tiled one bit for bit: both sum the same
 // lights in light order.

@@ -143,7 +143,7 @@ struct LightCulling::Plan {
   std::vector<glsl::CullBatch> records;
 };
 
-LightCulling::Plan LightCulling::plan(const FrameBlock& f, const Input& in) {
+LightCulling::Plan LightCulling::plan(const FrameBlock& f, const Input& in, size_t bound) {
   Plan p;
   p.tiles = size_t(f.viewport.z) * f.viewport.w;
   p.groups_x = (f.viewport.z + HV_CULL_GROUP_TILES - 1) / HV_CULL_GROUP_TILES;
@@ -154,7 +154,14 @@ LightCulling::Plan LightCulling::plan(const FrameBlock& f, const Input& in) {
                        ? in.batch_lights
                        : HV_CULL_FUSED_MAX_LIGHTS;
   p.fused = in.light_count <= p.batch_lights && p.batch_lights == HV_CULL_FUSED_MAX_LIGHTS;
-  p.few = p.fused && in.light_count <= std::min<size_t>(in.few_lights, HV_CULL_FEW_MAX_LIGHTS);
+  // One dispatch for a handful of lights, or for up to kCullFewCoveringLights lights that reach
+  // kCullFewCoverage of the tiles or more on average (the list's bound over the tiles: the
+  // stages' group and block tests then have little to skip).
+  static_assert(kCullFewCoveringLights <= HV_CULL_FEW_MAX_LIGHTS);
+  const size_t few = std::min<size_t>(in.few_lights, HV_CULL_FEW_MAX_LIGHTS);
+  const bool covering = in.few_lights > 0 && in.light_count <= kCullFewCoveringLights &&
+                        double(bound) >= kCullFewCoverage * double(in.light_count * p.tiles);
+  p.few = p.fused && (in.light_count <= few || covering);
   // Mask words per group: one bit per light of a batch; summary words: one bit per mask word.
   p.words = (std::min(in.light_count, p.batch_lights) + 31) / 32;
   p.summary = (p.words + 31) / 32;
@@ -252,7 +259,9 @@ TileListView LightCulling::run(const PassContext& ctx, FrameUniforms& frame, con
   std::optional<gl::ScopedPass> pass;
   if (!in.stage_timers) pass.emplace(ctx.timer, "light_cull");
   applyState(PipelineState{});
-  const Plan p = plan(frame.block, in);
+  // The list's size before anything runs: from the CPU bound, when it is small enough.
+  const size_t bound = in.light_count > 0 ? listBound(*in.cull_spheres, frame.block) : 0;
+  const Plan p = plan(frame.block, in, bound);
   ensureBuffers(p.tiles, p.groups, in.light_count, p.groups * (p.words + p.summary));
   if (!indices_) growList(std::max<size_t>(p.tiles * 16, 1 << 16));
   if (!total_) {  // client storage: the CPU reads it every frame, the GPU writes 4 bytes
@@ -271,8 +280,6 @@ TileListView LightCulling::run(const PassContext& ctx, FrameUniforms& frame, con
     }
     return view();
   }
-  // Size the list before anything runs, from the CPU bound when it is small enough.
-  const size_t bound = listBound(*in.cull_spheres, frame.block);
   const bool bounded = bound <= in.bound_limit;
   if (bounded && bound > capacity_) growList(bound);
   uploadBatches(p.records.data(), p.records.size());

@@ -129,7 +129,7 @@ class LightCulling {
 
  private:
   struct Plan;  // the frame's grid of groups and batches (light_cull_pass.cpp)
-  static Plan plan(const FrameBlock& frame, const Input& in);
+  static Plan plan(const FrameBlock& frame, const Input& in, size_t bound);
   void cull(const PassContext& ctx, gl::PassBindings& b, const Plan& p, bool stage_timers) const;
   void stages(const PassContext& ctx, gl::PassBindings& b, const Plan& p, bool stage_timers) const;
   void dispatch(gl::PassBindings& b, const Plan& p, GLuint program, size_t record,

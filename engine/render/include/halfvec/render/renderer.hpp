@@ -109,6 +109,10 @@ enum class LightPassProbe { Shade = 0, FetchOnly = 1, SetupOnly = 2, PredictedEr
 // lists either way (docs/performance.md, "Culling a handful of lights"). At most
 // HV_CULL_FEW_MAX_LIGHTS (64).
 inline constexpr size_t kCullFewLights = 16;
+// And up to kCullFewCoveringLights lights that reach kCullFewCoverage of the screen's tiles or
+// more on average (measured: docs/performance.md, "Culling a handful of lights").
+inline constexpr size_t kCullFewCoveringLights = 32;
+inline constexpr double kCullFewCoverage = 0.5;
 
 struct DebugOptions {
   LightPassProbe light_probe = LightPassProbe::Shade;
@@ -137,7 +141,8 @@ struct DebugOptions {
   // batched: "light_cull_batches" after the bounds) instead of as one "light_cull" pass
   // (`halfvec bench --frame --cull-stages`). The image is unchanged.
   bool cull_stage_timers = false;
-  // The single-dispatch culling up to this many lights (kCullFewLights; 0: always the stages).
+  // The single-dispatch culling up to this many lights (kCullFewLights, and kCullFewCoverage's
+  // rule; 0: always the stages).
   // Tests compare the two paths' lists.
   size_t cull_few_lights = kCullFewLights;
 };
