@@ -61,6 +61,46 @@ void addRandomLights(Scene& s, const RandomLights& p) {
   }
 }
 
+// The culling's cases at the camera: a point light whose culling sphere holds the camera, and a
+// small sphere light just in front of it, crossing the near plane.
+void addLightsAtTheCamera(Scene& s) {
+  Light inside;
+  inside.position = s.camera.position + glm::vec3(0.2f, -0.1f, -0.05f);
+  inside.range = 3.0f;
+  inside.intensity = 0.5f;
+  s.lights.push_back(inside);
+  Light near_plane = inside;
+  near_plane.type = LightType::Sphere;
+  near_plane.radius = 0.05f;
+  near_plane.position = s.camera.position + glm::vec3(0.0f, 0.0f, -0.12f);
+  near_plane.range = 1.0f;
+  s.lights.push_back(near_plane);
+}
+
+// One tiled frame with DebugOptions::cull_few_lights = few_lights: its image, its list entries
+// and whether the one-dispatch culling ran (the stages' timer names say which path did).
+struct CulledFrame {
+  ImageRGBf hdr;
+  size_t entries = 0;
+  bool few_ran = false;
+};
+CulledFrame cullFrame(Scene s, int w, int h, size_t few_lights) {
+  s.settings.culling = Culling::Tiled;  // not auto: the tiled side is the one tested
+  render::Renderer r;
+  render::DebugOptions o;
+  o.cull_few_lights = few_lights;
+  o.cull_stage_timers = true;
+  r.setDebugOptions(o);
+  r.setScene(s);
+  const render::FrameStats stats = r.render(w, h);
+  CulledFrame f;
+  f.few_ran = std::any_of(stats.passes.begin(), stats.passes.end(),
+                          [](const auto& p) { return p.first == "light_cull_few"; });
+  f.entries = stats.tile_light_entries;
+  f.hdr = r.readHdr();
+  return f;
+}
+
 }  // namespace
 
 // Every light type: GPU HDR = CPU evaluateLight on the read-back G-buffer, to the precision of the
@@ -263,17 +303,7 @@ TEST(LightPass, TiledEqualsBruteForceDepthEdgesAndCameraInsideLights) {
   lights.range_span = 1.5f;
   lights.length = 0.3f;
   addRandomLights(s, lights);
-  Light inside;  // the camera is inside this one's culling sphere
-  inside.position = s.camera.position + glm::vec3(0.2f, -0.1f, -0.05f);
-  inside.range = 3.0f;
-  inside.intensity = 0.5f;
-  s.lights.push_back(inside);
-  Light near_plane = inside;  // just in front of the camera, crossing the near plane
-  near_plane.type = LightType::Sphere;
-  near_plane.radius = 0.05f;
-  near_plane.position = s.camera.position + glm::vec3(0.0f, 0.0f, -0.12f);
-  near_plane.range = 1.0f;
-  s.lights.push_back(near_plane);
+  addLightsAtTheCamera(s);
 
   const int w = 128, h2 = 72;
   s.settings.culling = Culling::Tiled;  // not auto: the tiled side is the one tested
@@ -432,17 +462,7 @@ TEST(LightPass, FewLightsCulledInOneDispatchAsByTheStages) {
   lights.range_span = 2.0f;
   lights.length = 0.3f;
   addRandomLights(s, lights);
-  Light inside;  // the camera is inside this one's culling sphere
-  inside.position = s.camera.position + glm::vec3(0.2f, -0.1f, -0.05f);
-  inside.range = 3.0f;
-  inside.intensity = 0.5f;
-  s.lights.push_back(inside);
-  Light near_plane = inside;  // just in front of the camera, crossing the near plane
-  near_plane.type = LightType::Sphere;
-  near_plane.radius = 0.05f;
-  near_plane.position = s.camera.position + glm::vec3(0.0f, 0.0f, -0.12f);
-  near_plane.range = 1.0f;
-  s.lights.push_back(near_plane);
+  addLightsAtTheCamera(s);
   Light spot;  // a narrow cone onto the middle sphere
   spot.type = LightType::Spot;
   spot.position = {0.5f, 3.0f, 0.5f};
@@ -454,33 +474,20 @@ TEST(LightPass, FewLightsCulledInOneDispatchAsByTheStages) {
   s.lights.push_back(spot);
   ASSERT_LE(s.lights.size(), render::kCullFewLights);
 
-  const int w = 125, h2 = 70;           // partial tiles at two edges
-  s.settings.culling = Culling::Tiled;  // not auto: the tiled side is the one tested
-  auto run = [&](size_t few_lights, bool* few_ran) {
-    render::Renderer r;
-    render::DebugOptions o;
-    o.cull_few_lights = few_lights;
-    o.cull_stage_timers = true;  // the stages' names say which path ran
-    r.setDebugOptions(o);
-    r.setScene(s);
-    const render::FrameStats stats = r.render(w, h2);
-    *few_ran = std::any_of(stats.passes.begin(), stats.passes.end(),
-                           [](const auto& p) { return p.first == "light_cull_few"; });
-    return std::make_pair(r.readHdr(), stats.tile_light_entries);
-  };
-  bool few_ran = false, staged_few = true;
-  const auto [few, few_entries] = run(render::kCullFewLights, &few_ran);
-  const auto [staged, staged_entries] = run(0, &staged_few);
-  EXPECT_TRUE(few_ran);
-  EXPECT_FALSE(staged_few);
-  EXPECT_GT(few_entries, 0u);
-  EXPECT_EQ(few_entries, staged_entries);
-  EXPECT_EQ(few.px, staged.px) << "the two paths' lists must be the same, in light order";
+  const int w = 125, h2 = 70;  // partial tiles at two edges
+  const CulledFrame few = cullFrame(s, w, h2, render::kCullFewLights);
+  const CulledFrame staged = cullFrame(s, w, h2, 0);
+  EXPECT_TRUE(few.few_ran);
+  EXPECT_FALSE(staged.few_ran);
+  EXPECT_GT(few.entries, 0u);
+  EXPECT_EQ(few.entries, staged.entries);
+  EXPECT_EQ(few.hdr.px, staged.hdr.px) << "the two paths' lists must be the same, in light order";
   s.settings.culling = Culling::BruteForce;
   render::Renderer r;
   r.setScene(s);
   r.render(w, h2);
-  EXPECT_GT(expectTiledEqualsBrute(few, r.readHdr(), w), 1e-3) << "lights should light the scene";
+  EXPECT_GT(expectTiledEqualsBrute(few.hdr, r.readHdr(), w), 1e-3)
+      << "lights should light the scene";
 }
 
 // Beyond kCullFewLights, lights that reach kCullFewCoverage of the tiles on average
@@ -492,7 +499,7 @@ TEST(LightPass, CoveringLightsCulledInOneDispatch) {
   m.base_color = glm::vec3(0.8f);
   m.roughness = 0.5f;
   const int w = 96, h2 = 64;
-  auto culled = [&](float range, size_t few_lights, bool* few_ran) {
+  auto lightsOfRange = [&](float range) {
     Scene s = planeScene(m, 8.0f);
     s.camera.position = {0.0f, 3.0f, 4.0f};
     s.camera.up = {0.0f, 1.0f, 0.0f};
@@ -502,29 +509,18 @@ TEST(LightPass, CoveringLightsCulledInOneDispatch) {
     lights.range0 = range;
     lights.range_span = 0.0f;
     addRandomLights(s, lights);
-    s.settings.culling = Culling::Tiled;
-    render::Renderer r;
-    render::DebugOptions o;
-    o.cull_few_lights = few_lights;
-    o.cull_stage_timers = true;
-    r.setDebugOptions(o);
-    r.setScene(s);
-    const render::FrameStats stats = r.render(w, h2);
-    *few_ran = std::any_of(stats.passes.begin(), stats.passes.end(),
-                           [](const auto& p) { return p.first == "light_cull_few"; });
-    return r.readHdr();
+    return s;
   };
   static_assert(render::kCullFewCoveringLights > render::kCullFewLights);
-  bool few = false, staged = true;
-  const auto large = culled(30.0f, render::kCullFewLights, &few);
-  const auto large_staged = culled(30.0f, 0, &staged);
-  EXPECT_TRUE(few) << "lights that cover the screen: one dispatch";
-  EXPECT_FALSE(staged);
-  EXPECT_EQ(large.px, large_staged.px);
-  const auto small = culled(0.4f, render::kCullFewLights, &few);
-  EXPECT_FALSE(few) << "small lights: the stages";
+  const CulledFrame large = cullFrame(lightsOfRange(30.0f), w, h2, render::kCullFewLights);
+  const CulledFrame large_staged = cullFrame(lightsOfRange(30.0f), w, h2, 0);
+  EXPECT_TRUE(large.few_ran) << "lights that cover the screen: one dispatch";
+  EXPECT_FALSE(large_staged.few_ran);
+  EXPECT_EQ(large.hdr.px, large_staged.hdr.px);
+  const CulledFrame small = cullFrame(lightsOfRange(0.4f), w, h2, render::kCullFewLights);
+  EXPECT_FALSE(small.few_ran) << "small lights: the stages";
   double mean = 0.0;
-  for (const auto& p : small.px) mean += p.x;
+  for (const auto& p : small.hdr.px) mean += p.x;
   EXPECT_GT(mean, 0.0) << "the small lights should light the plane";
 }
 

@@ -193,14 +193,13 @@ void LightCulling::dispatch(gl::PassBindings& b, const Plan& p, GLuint program, 
 // Every stage once: the few-lights dispatch, or the staged path.
 void LightCulling::cull(const PassContext& ctx, gl::PassBindings& b, const Plan& p,
                         bool stage_timers) const {
-  auto stage = [&](const char* name) { return stageProgram(ctx, name); };
   b.storage(HV_BINDING_TILE_INDICES, indices_.id());
   if (p.few) {
     const uint32_t zero = 0;  // the list's total, for the groups' reservations
     glClearNamedBufferSubData(indices_.id(), GL_R32UI, 0, sizeof zero, GL_RED_INTEGER,
                               GL_UNSIGNED_INT, &zero);
     const StageTimer t(ctx.timer, stage_timers, "light_cull_few");
-    dispatch(b, p, stage("light_cull_few"), 1, false);
+    dispatch(b, p, stageProgram(ctx, "light_cull_few"), 1, false);
   } else {
     stages(ctx, b, p, stage_timers);
   }
