@@ -58,7 +58,27 @@ bool headline(const eval::MethodSummary& m) {
          m.method.find("D beckmann") == std::string::npos;
 }
 
+std::string straddlingGoalRows(const eval::SphereAccuracy& sphere) {
+  return goalRow("sphere `ltc` specular straddling the horizon, within 15% (bias)",
+                 eval::checkStraddlingGoal(sphere, eval::kSphereLtc, 0.15), 0.15) +
+         goalRow("sphere `ltc` specular straddling the horizon, within 10% (bias)",
+                 eval::checkStraddlingGoal(sphere, eval::kSphereLtc, 0.10), 0.10) +
+         goalRow("sphere `representative_point` (default) straddling, within 15% (bias)",
+                 eval::checkStraddlingGoal(sphere, eval::kSphereRp, 0.15), 0.15);
+}
+
 }  // namespace
+
+std::string sphereGoalsMarkdown(const eval::SphereAccuracy& sphere) {
+  std::ostringstream md;
+  md << "## Sphere lights: goals\n\n"
+     << headerRow({"goal", "configurations within", "worst peak", "worst bias", ""})
+     << goalRow(
+            "sphere `ltc` specular within 5%, roughness 0.05-1, r/d 0.01-0.5, above the horizon",
+            eval::checkSphereGoal(sphere, eval::kSphereLtc, 0.05, 0.5f), 0.05)
+     << straddlingGoalRows(sphere) << "\n";
+  return md.str();
+}
 
 std::string summaryMarkdown(const eval::SphereAccuracy& sphere, const eval::TubeAccuracy& tube,
                             const eval::PointLightAccuracy& point,
@@ -93,6 +113,7 @@ std::string summaryMarkdown(const eval::SphereAccuracy& sphere, const eval::Tube
             eval::checkSphereGoal(sphere, eval::kSphereLtc, 0.05, 0.5f), 0.05)
      << goalRow("sphere `representative_point` (default), same grid",
                 eval::checkSphereGoal(sphere, eval::kSphereRp, 0.05, 0.5f), 0.05)
+     << straddlingGoalRows(sphere)
      << goalRow("tube `ltc` specular within 10%, length 0.25-2, radius 0.01-0.2, both orientations",
                 eval::checkTubeGoal(tube, eval::kTubeLtc, false, 0.10), 0.10)
      << goalRow("tube eq. 19 + normalization (default), same grid",

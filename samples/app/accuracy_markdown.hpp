@@ -26,6 +26,8 @@ std::string summaryMarkdown(const eval::SphereAccuracy& sphere, const eval::Tube
                             const eval::AmbientAccuracy& ambient);
 std::string pointLightMarkdown(const eval::PointLightAccuracy& a);
 std::string sphereMarkdown(const eval::SphereAccuracy& a);
+// The sphere goals alone (`halfvec accuracy --only spheres`): above the horizon and straddling it.
+std::string sphereGoalsMarkdown(const eval::SphereAccuracy& sphere);
 std::string tubeMarkdown(const eval::TubeAccuracy& a);
 std::string directionalMarkdown(const eval::SphereAccuracy& a);
 // The error budget: the table's prediction and the budget's choices over the sphere sweep.

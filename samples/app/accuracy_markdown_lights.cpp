@@ -61,9 +61,10 @@ std::string sphereStraddlingTable(const eval::SphereAccuracy& a) {
         "representative point (default) / ltc\n\n"
         "Here the reference only sees the part of the sphere above the horizon, which can be a "
         "sliver: the representative point still lights the surface, so its relative errors grow "
-        "without bound as the visible part shrinks; `ltc` integrates the sphere's cone, whose "
-        "part below the surface its lobe barely reaches, and clips in cosine space with the "
-        "sphere-cap approximation (\"no light\": the sphere is entirely below).\n\n";
+        "without bound as the visible part shrinks; `ltc` integrates the part of the sphere's "
+        "cone above the surface (cut at the horizon in world space, docs/lights.md, "
+        "\"Straddling spheres\") and clips it in cosine space with the sphere-cap approximation "
+        "(\"no light\": the sphere is entirely below).\n\n";
   std::vector<std::string> head{"roughness, elevation \\ r/d"};
   for (float rad : a.grid.radius) head.push_back(num(rad));
   md << headerRow(head);

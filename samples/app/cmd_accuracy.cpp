@@ -49,7 +49,9 @@ Options:
   --threads N       CPU threads (default: all cores)
   --only SECTION    measure and write only that section (minutes, not hours): shadows (the
                     shadow filters against the traced reference), occlusion (screen-space AO),
-                    directional (the directional-light sweep) or clearcoat (the clear coat)
+                    directional (the directional-light sweep), clearcoat (the clear coat),
+                    budget (the error budget's prediction) or spheres (the sphere sweep and its
+                    goals, straddling spheres included)
   -h, --help        this text
 )";
 
@@ -73,10 +75,10 @@ Options parseArgs(const Args& args) {
     } else if (a == "--only") {
       o.only = optionValue(args, i);
       if (o.only != "shadows" && o.only != "occlusion" && o.only != "directional" &&
-          o.only != "clearcoat" && o.only != "budget") {
+          o.only != "clearcoat" && o.only != "budget" && o.only != "spheres") {
         throw UsageError{
-            "--only: expected 'shadows', 'occlusion', 'directional', 'clearcoat' or 'budget', got "
-            "'" +
+            "--only: expected 'shadows', 'occlusion', 'directional', 'clearcoat', 'budget' or "
+            "'spheres', got '" +
             o.only + "'"};
       }
     } else {
@@ -139,6 +141,11 @@ Measured measure(const eval::AccuracyOptions& o, const std::string& only) {
     m.budget = eval::measureBudget(o);
     return m;
   }
+  if (only == "spheres") {
+    step("sphere lights");
+    m.sphere = eval::measureSphereLights(o);
+    return m;
+  }
   step("point lights");
   m.point = eval::measurePointLights(o);
   step("sphere lights");
@@ -195,6 +202,10 @@ std::string document(const Options& o, const Measured& m, double secs, const std
   }
   if (o.only == "budget") {
     md << budgetMarkdown(m.budget);
+    return md.str();
+  }
+  if (o.only == "spheres") {
+    md << sphereGoalsMarkdown(m.sphere) << sphereMarkdown(m.sphere);
     return md.str();
   }
   md << summaryMarkdown(m.sphere, m.tube, m.point, m.ambient) << pointLightMarkdown(m.point)

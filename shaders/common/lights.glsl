@@ -288,8 +288,21 @@ vec3 sphereSpecularRepresentativePoint(Surface s, ShadingPoint sp, vec3 Lc, floa
 }
 #endif
 
-#if HV_HAS_SPHERE_LIGHTS
+#if (HV_HAS_SPHERE_LIGHTS || HV_HAS_DIRECTIONAL_LIGHTS) && \
+    (HV_SPHERE_SPECULAR == HV_SPHERE_SPECULAR_LTC || HV_SPHERE_BUDGET)
+// The sphere's LTC specular (ltc_lights.glsl): over its whole cone, or for a sphere straddling the
+// surface's horizon over the part above it (ltcSphereSpecularAbove). Arguments as
+// ltcSphereSpecular's; a directional light's disk is the sphere at distance 1.
+vec3 sphereLtcSpecular(Surface s, ShadingPoint sp, vec3 Lc, vec3 L, float d2, float radius,
+                       float falloff) {
+  if (ltcSphereSpecularStraddles(s.N, Lc, d2, radius)) {
+    return ltcSphereSpecularAbove(s, sp, Lc, L, d2, radius, falloff);
+  }
+  return ltcSphereSpecular(s, sp, Lc, L, d2, radius, falloff);
+}
+#endif
 
+#if HV_HAS_SPHERE_LIGHTS
 // What a sphere light's methods share at one shading point: the direction to its center, the
 // falloff (with a spot's cone) and the diffuse term.
 struct SphereTerms {
@@ -347,6 +360,27 @@ vec2 sphereLightPredictedError(GpuLight light, Surface s, ShadingPoint sp) {
 }
 #endif
 
+#if HV_SPHERE_SPECULAR == HV_SPHERE_SPECULAR_LTC
+// The tiled light pass's two parts of evaluateSphereLightAt (light_shade.comp): the light's
+// radiance with the whole cone's LTC and whether the sphere straddles the horizon; and what the
+// cut at the horizon changes in that radiance (0 where it does not straddle). The pass shades
+// every pair with the first and the straddling pairs with the second, in a loop of their own: on
+// a SIMD CPU implementation (llvmpipe) the cut's polygon inside the loop over lights doubled the
+// many-lights pass even where no pair straddles (docs/lights.md, "Straddling spheres").
+vec3 evaluateSphereLightWholeAt(GpuLight light, Surface s, ShadingPoint sp, HV_OUT(bool) straddles) {
+  SphereTerms t = sphereTerms(light, s, sp);
+  straddles = ltcSphereSpecularStraddles(s.N, t.Lc, t.d2, t.radius);
+  vec3 specular = ltcSphereSpecular(s, sp, t.Lc, t.L, t.d2, t.radius, t.falloff);
+  return combineTerms(s, vec3(light.color_inv_range), t.diffuse, specular);
+}
+vec3 sphereLightStraddleCorrection(GpuLight light, Surface s, ShadingPoint sp) {
+  SphereTerms t = sphereTerms(light, s, sp);
+  vec3 cut = ltcSphereSpecularCut(s, sp, t.Lc, t.L, t.d2, t.radius, t.falloff);
+  bool straddles = ltcSphereSpecularStraddles(s.N, t.Lc, t.d2, t.radius);
+  return combineTerms(s, vec3(light.color_inv_range), vec3(0.0f), straddles ? cut : vec3(0.0f));
+}
+#endif
+
 #if HV_SPHERE_BUDGET
 // The budget's parts (error_budget.glsl): the light's radiance with the representative point's
 // specular and whether the budget takes the LTC for it; and what the LTC changes in that
@@ -361,25 +395,25 @@ vec3 evaluateSphereLightRpAt(GpuLight light, Surface s, ShadingPoint sp, HV_OUT(
 vec3 sphereLightLtcCorrection(GpuLight light, Surface s, ShadingPoint sp) {
   SphereTerms t = sphereTerms(light, s, sp);
   vec3 rp = sphereSpecularRepresentativePoint(s, sp, t.Lc, t.d2, t.radius, t.falloff);
-  vec3 ltc = ltcSphereSpecular(s, sp, t.Lc, t.L, t.d2, t.radius, t.falloff);
+  vec3 ltc = sphereLtcSpecular(s, sp, t.Lc, t.L, t.d2, t.radius, t.falloff);
   return combineTerms(s, vec3(light.color_inv_range), vec3(0.0f), ltc - rp);
 }
 #endif
 
 // Sphere light: the diffuse of sphereTerms; specular from the representative point
 // (sphereSpecularRepresentativePoint) or, with HV_SPHERE_SPECULAR_LTC, the pixel's LTC over the
-// sphere's cone (ltcSphereSpecular, ltc_lights.glsl), or with a budget the LTC where it asks for
+// sphere's cone cut at the horizon (sphereLtcSpecular), or with a budget the LTC where it asks for
 // it (sphereNeedsLtc).
 vec3 evaluateSphereLightAt(GpuLight light, Surface s, ShadingPoint sp) {
   SphereTerms t = sphereTerms(light, s, sp);
 #if HV_SPHERE_SPECULAR == HV_SPHERE_SPECULAR_LTC
-  vec3 specular = ltcSphereSpecular(s, sp, t.Lc, t.L, t.d2, t.radius, t.falloff);
+  vec3 specular = sphereLtcSpecular(s, sp, t.Lc, t.L, t.d2, t.radius, t.falloff);
 #else
   vec3 specular = sphereSpecularRepresentativePoint(s, sp, t.Lc, t.d2, t.radius, t.falloff);
 #if HV_SPHERE_BUDGET
   if (sphereNeedsLtc(s, sp.R, sp.NoV, t.L, sphereSinSigma(t), t.diffuse, specular,
                      HV_MAX_ERROR)) {
-    specular = ltcSphereSpecular(s, sp, t.Lc, t.L, t.d2, t.radius, t.falloff);
+    specular = sphereLtcSpecular(s, sp, t.Lc, t.L, t.d2, t.radius, t.falloff);
   }
 #endif
 #endif
@@ -501,12 +535,12 @@ vec3 evaluateDirectionalLightAt(GpuLight light, Surface s, ShadingPoint sp) {
 #endif
   vec3 diffuse = diffuseTerm(s, sp, L, cos_factor);
 #if HV_SPHERE_SPECULAR == HV_SPHERE_SPECULAR_LTC
-  vec3 specular = ltcSphereSpecular(s, sp, L, L, 1.0f, sin_sigma, 1.0f);
+  vec3 specular = sphereLtcSpecular(s, sp, L, L, 1.0f, sin_sigma, 1.0f);
 #else
   vec3 specular = sphereSpecularRepresentativePoint(s, sp, L, 1.0f, sin_sigma, 1.0f);
 #if HV_SPHERE_BUDGET
   if (sphereNeedsLtc(s, sp.R, sp.NoV, L, sin_sigma, diffuse, specular, HV_MAX_ERROR)) {
-    specular = ltcSphereSpecular(s, sp, L, L, 1.0f, sin_sigma, 1.0f);
+    specular = sphereLtcSpecular(s, sp, L, L, 1.0f, sin_sigma, 1.0f);
   }
 #endif
 #endif

@@ -224,6 +224,96 @@ float ltcSphereIntegral(Ltc l, vec3 c, float r) {
   return mix(outside, 1.0f, dot(c, c) <= r * r);  // a select (bool mix)
 }
 
+// ---- A sphere straddling the surface's horizon ----
+//
+// The lobe is 0 below the surface, but the LTC's clamped cosine is 0 only below its own horizon in
+// cosine space (the image of the cosine's hemisphere, not the surface's): for a sphere that
+// straddles the surface's horizon, the clip in cosine space keeps the part of the sphere below
+// the surface wherever the LTC leaks there (a sliver of a rough lobe's light: many times the
+// reference). The horizon is cut in world space, where it is a plane: on the tangent plane at
+// unit distance along the sphere's direction, the silhouette is a disk of radius tan(sigma) and
+// the surface's horizon a chord of it. The smaller of the two segments the chord makes is a
+// polygon (HV_LTC_SEGMENT_ARC_POINTS points on its arc, the chord closing it) whose vector form
+// factor comes from Lambert's formula in cosine space (Heitz et al. 2016 eq. 11), scaled by the
+// segment's area over the polygon's (exact as the segment shrinks); the part above the surface
+// is that polygon where it is the smaller segment, else the cone's exact F less it. Cutting off
+// the larger segment's polygon instead (the part below from the whole disk) leaves the polygon's
+// error on a sliver above: the polygon, not the circle, decides a sliver's area. The part above
+// is then clipped in cosine space as any region (horizonClippedIntegral). F of the part above is
+// continuous where a sphere starts to straddle (the segment above is the whole disk, F). Measured:
+// docs/lights.md, "Straddling spheres".
+#define HV_LTC_SEGMENT_ARC_POINTS 8
+
+// A sphere (center c relative to the shading point, radius r) that straddles the horizon of N
+// from outside: the cases ltcSphereIntegralAbove is for.
+bool ltcSphereStraddles(vec3 N, vec3 c, float r) {
+  float h = dot(N, c);
+  return h * h < r * r && dot(c, c) > r * r;
+}
+
+// One polygon edge's part of 2 pi F (Lambert's formula), for the cosine-space images a, b.
+vec3 ltcEdgeFormFactor(vec3 a, vec3 b) {
+  vec3 u = safeNormalize(a);
+  vec3 v = safeNormalize(b);
+  return cross(u, v) * edgeWeight(dot(u, v));
+}
+
+// The area of the segment of a unit disk beyond a chord at half-angle phi (the chord's distance
+// from the center cos(phi)) over that of the polygon of n points on its arc (n - 1 chords) and
+// the chord: (phi - sin phi cos phi) / ((n - 1) sin(2 phi / (n - 1)) / 2 - sin(2 phi) / 2). Both
+// vanish as phi^3; below phi = 0.05, where float cancels, their ratio's limit 1 / (1 - (n-1)^-2).
+float ltcSegmentAreaRatio(float phi) {
+  float m = float(HV_LTC_SEGMENT_ARC_POINTS - 1);
+  float seg = phi - sin(phi) * cos(phi);
+  float poly = 0.5f * (m * sin(2.0f * phi / m) - sin(2.0f * phi));
+  return phi < 0.05f ? 1.0f / (1.0f - 1.0f / (m * m)) : seg / max(poly, 1e-30f);
+}
+
+// The vector form factor, in the cosine space of l and oriented as the whole cone's
+// (ltcSphereFormFactor), of the part above the surface of normal N of the sphere (c, r as
+// above) that straddles it (see above).
+vec3 ltcAboveFormFactor(Ltc l, vec3 N, vec3 c, float r) {
+  float d2 = max(dot(c, c), 1e-30f);
+  vec3 cn = c * inversesqrt(d2);
+  float t = r * inversesqrt(max(d2 - r * r, 1e-30f));  // tan(sigma): the disk's radius
+  vec3 e1;
+  vec3 e2;
+  tangentFrame(cn, e1, e2);
+  vec3 up = N - cn * dot(N, cn);  // toward the disk's highest point over the surface
+  float up2 = dot(up, up);
+  e1 = up2 > 1e-12f ? up * inversesqrt(up2) : e1;
+  e2 = cross(cn, e1);  // e1, e2, cn right-handed: angles turn counter-clockwise about cn
+  // The chord: N . (cn + y e1) = 0 at y0 = -N.cn / |up| along e1.
+  float y0 = clamp(-dot(N, cn) * inversesqrt(max(up2, 1e-30f)), -t, t);
+  bool above_smaller = y0 >= 0.0f;
+  float phi = acos(min(abs(y0) / max(t, 1e-30f), 1.0f));  // the segment's half-angle
+  vec3 axis = above_smaller ? e1 : -e1;                    // toward the smaller segment's arc
+  vec3 side = above_smaller ? e2 : -e2;
+  // The arc's points from angle -phi to phi about axis (counter-clockwise about cn), turned by
+  // a rotation of step 2 phi / (n - 1).
+  float step_angle = 2.0f * phi / float(HV_LTC_SEGMENT_ARC_POINTS - 1);
+  vec2 rot = vec2(cos(phi), -sin(phi));
+  vec2 turn = vec2(cos(step_angle), sin(step_angle));
+  vec3 first = ltcToCosine(l, cn + (axis * rot.x + side * rot.y) * t);
+  vec3 prev = first;
+  vec3 F = vec3(0.0f);
+  for (int k = 1; k < HV_LTC_SEGMENT_ARC_POINTS; ++k) {
+    rot = vec2(rot.x * turn.x - rot.y * turn.y, rot.x * turn.y + rot.y * turn.x);
+    vec3 p = ltcToCosine(l, cn + (axis * rot.x + side * rot.y) * t);
+    F += ltcEdgeFormFactor(prev, p);
+    prev = p;
+  }
+  F += ltcEdgeFormFactor(prev, first);  // the chord, back along the horizon
+  F *= (0.5f * INV_PI) * ltcSegmentAreaRatio(phi);
+  return above_smaller ? F : ltcSphereFormFactor(l, c, r) - F;
+}
+
+// ltcSphereIntegral for a sphere that straddles the horizon of N (ltcSphereStraddles): its part
+// above the surface alone (ltcAboveFormFactor).
+float ltcSphereIntegralAbove(Ltc l, vec3 N, vec3 c, float r) {
+  return horizonClippedIntegral(ltcAboveFormFactor(l, N, c, r));
+}
+
 // ---- Capsule (tube light): the cylinder's silhouette plus the two end caps ----
 //
 // Seen from the shading point, the cylinder of radius r around the segment p1 p2 fills the wedge

@@ -148,6 +148,74 @@ vec3 ltcSphereSpecular(Surface s, ShadingPoint sp, vec3 Lc, vec3 L, float d2, fl
 #endif
   return specular;
 }
+
+#if HV_LTC_LIGHT_CORRECTION
+// The light correction's cone (ltcCorrection) over the part of a sphere straddling the horizon
+// that lies above it: a band of the silhouette disk (tangent plane at unit distance, radius
+// t = tan(sigma)) from the horizon's chord (y0 along the disk's upward direction) to its top; its
+// centroid as the direction, half its height as the tangent of the cone's radius, and the disk
+// segment's share of the sphere's solid angle. The centroid, not the band's middle: near the
+// horizon the lobe grows about linearly with the height over it (its N.L), so its mean over the
+// segment is its value at the segment's centroid (4 t / (3 pi) over the chord of a half disk, not
+// t / 2: the tiny spheres centred on the horizon were 10-66% too bright with the middle).
+vec3 ltcBandCorrection(Surface s, ShadingPoint sp, vec3 L, float sin2, float I) {
+  float t = sqrt(sin2 / max(1.0f - sin2, 1e-8f));
+  float NoL = dot(s.N, L);
+  vec3 up = s.N - L * NoL;
+  float up_len = sqrt(max(dot(up, up), 1e-16f));
+  float y0 = clamp(-NoL / up_len, -t, t);
+  float half_band = 0.5f * (t - y0);
+  float chord = sqrt(max(t * t - y0 * y0, 0.0f));
+  float area = t * t * acos(y0 / t) - y0 * chord;
+  float yc = 2.0f * chord * chord * chord / (3.0f * max(area, 1e-30f));
+  vec3 center = normalize(L + up * (yc / up_len));
+  float segment = area / (PI * t * t);
+  float omega = sphereSolidAngle(sin2) * segment;
+  float band2 = half_band * half_band / (1.0f + half_band * half_band);
+  return ltcCorrection(s, sp, center, vec3(0.0f), band2, omega, I);
+}
+#endif
+
+// ltcSphereSpecular for a sphere that straddles the surface's horizon (ltcSphereSpecularStraddles
+// below): the part below the surface cut off (ltcSphereIntegralAbove), and the light correction
+// taken over the part above (ltcBandCorrection).
+vec3 ltcSphereSpecularAbove(Surface s, ShadingPoint sp, vec3 Lc, vec3 L, float d2, float radius,
+                            float falloff) {
+  float d2c = max(d2, max(radius * radius, HV_MIN_LIGHT_DIST2));
+  float r_eff = max(radius, 1e-4f * sqrt(d2c));
+  float I = ltcSphereIntegralAbove(sp.ltc, s.N, Lc, r_eff);
+  vec3 specular = sp.ltc_spec * (I * falloff * d2c / (PI * r_eff * r_eff));
+#if HV_LTC_LIGHT_CORRECTION
+  specular = specular * ltcBandCorrection(s, sp, L, r_eff * r_eff / d2c, I);
+#endif
+  return specular;
+}
+
+// ltcSphereSpecularAbove - ltcSphereSpecular for a straddling sphere, the cone's form factor
+// computed once (the tiled light pass's second part, lights.glsl).
+vec3 ltcSphereSpecularCut(Surface s, ShadingPoint sp, vec3 Lc, vec3 L, float d2, float radius,
+                          float falloff) {
+  float d2c = max(d2, max(radius * radius, HV_MIN_LIGHT_DIST2));
+  float r_eff = max(radius, 1e-4f * sqrt(d2c));
+  float I_whole = horizonClippedIntegral(ltcSphereFormFactor(sp.ltc, Lc, r_eff));
+  float I_above = ltcSphereIntegralAbove(sp.ltc, s.N, Lc, r_eff);
+  vec3 scale = sp.ltc_spec * (falloff * d2c / (PI * r_eff * r_eff));
+#if HV_LTC_LIGHT_CORRECTION
+  float sin2 = r_eff * r_eff / d2c;
+  return scale * (I_above * ltcBandCorrection(s, sp, L, sin2, I_above) -
+                  I_whole * ltcCorrection(s, sp, L, vec3(0.0f), sin2, sphereSolidAngle(sin2),
+                                          I_whole));
+#else
+  return scale * (I_above - I_whole);
+#endif
+}
+
+// Whether ltcSphereSpecular leaves out what ltcSphereSpecularAbove cuts off: the sphere, at the
+// radius both shade it with, straddles the horizon of N from outside.
+bool ltcSphereSpecularStraddles(vec3 N, vec3 Lc, float d2, float radius) {
+  float d2c = max(d2, max(radius * radius, HV_MIN_LIGHT_DIST2));
+  return ltcSphereStraddles(N, Lc, max(radius, 1e-4f * sqrt(d2c)));
+}
 #endif
 
 #if HV_TUBE_DIFFUSE == HV_TUBE_DIFFUSE_LTC || HV_TUBE_SPECULAR == HV_TUBE_SPECULAR_LTC

@@ -164,8 +164,19 @@ vec3 probeLight(GpuLight l) { return l.color_inv_range.rgb * step(0.0, l.positio
 #else
 #define HV_VIS(j) 1.0
 #endif
-// The budget's deferred LTC loop (the sphere loop below) in the tiled pass when it shades.
-#define HV_BUDGET_LOOPS (HV_SPHERE_BUDGET && HV_HAS_SPHERE_LIGHTS && HV_LIGHT_PROBE == 0)
+// The sphere loop in two parts (below) in the tiled pass when it shades: with an error budget,
+// the representative point everywhere and the LTC where the budget asks for it; with `ltc`, the
+// whole cone everywhere and the cut at the horizon where a sphere straddles it (lights.glsl).
+#define HV_SPHERE_SPLIT_LOOPS                                                                \
+  ((HV_SPHERE_BUDGET || HV_SPHERE_SPECULAR == HV_SPHERE_SPECULAR_LTC) && HV_HAS_SPHERE_LIGHTS && \
+   HV_LIGHT_PROBE == 0)
+#if HV_SPHERE_BUDGET
+#define HV_SPHERE_FIRST evaluateSphereLightRpAt
+#define HV_SPHERE_SECOND sphereLightLtcCorrection
+#else
+#define HV_SPHERE_FIRST evaluateSphereLightWholeAt
+#define HV_SPHERE_SECOND sphereLightStraddleCorrection
+#endif
 #ifndef HV_SUN_SHADOW_OF
 #define HV_SUN_SHADOW_OF(l)
 #endif
@@ -274,13 +285,15 @@ void main() {
   }
 #endif
 #if HV_HAS_SPHERE_LIGHTS && HV_LIGHT_PROBE != 2
-#if HV_BUDGET_LOOPS
-  // The error budget (error_budget.glsl): every sphere shaded with the representative point,
-  // each pixel's pairs that the budget sends to the LTC marked in a bit mask, then corrected by a
-  // loop over the marked lights alone. A SIMD CPU implementation runs an `if` body whether or not
-  // a lane takes it (see the top), so a per-pair branch (or any loop holding one) would cost the
-  // LTC everywhere; a loop ends when no lane has a marked light left. The spheres go 32 at a time
-  // (one mask word per pixel: registers, where arrays indexed at run time would go to memory).
+#if HV_SPHERE_SPLIT_LOOPS
+  // Every sphere shaded with the first part (HV_SPHERE_FIRST: the representative point with an
+  // error budget, error_budget.glsl; the whole cone's LTC with `ltc`), each pixel's pairs that
+  // need the second (the LTC where the budget asks for it; the cut at the horizon where a sphere
+  // straddles it) marked in a bit mask, then corrected by a loop over the marked lights alone. A
+  // SIMD CPU implementation runs an `if` body whether or not a lane takes it (see the top), so a
+  // per-pair branch (or any loop holding one) would cost the second part everywhere; a loop ends
+  // when no lane has a marked light left. The spheres go 32 at a time (one mask word per pixel:
+  // registers, where arrays indexed at run time would go to memory).
   if (end_point < end_sphere) {
     uint chunk = end_point;
     do {
@@ -300,12 +313,22 @@ void main() {
         uint bit = 1u << (i - chunk);
         for (int j = 0; j < HV_LIGHT_PIXELS; ++j) {
           bool need;
-          sum[j] += evaluateSphereLightRpAt(l, s[j], sp[j], need) * HV_VIS(j);
+          sum[j] += HV_SPHERE_FIRST(l, s[j], sp[j], need) * HV_VIS(j);
           ltc_marks[j] |= (need && lit[j]) ? bit : 0u;
         }
-#if HV_HAS_CLEAR_COAT
+#if HV_HAS_CLEAR_COAT && HV_SPHERE_BUDGET
         if (any_coat) {
           for (int j = 0; j < HV_LIGHT_PIXELS; ++j) coat_sum[j] += HV_EVAL_SPHERE(l, cs, csp, j);
+        }
+#elif HV_HAS_CLEAR_COAT
+        // The coat's lobe in the same two parts, its pairs marked in the same mask (the second
+        // part is 0 for the lobe of the two that does not straddle).
+        if (any_coat) {
+          for (int j = 0; j < HV_LIGHT_PIXELS; ++j) {
+            bool need;
+            coat_sum[j] += HV_SPHERE_FIRST(l, cs[j], csp[j], need) * HV_VIS(j);
+            ltc_marks[j] |= (need && lit[j] && coat[j] > 0.0) ? bit : 0u;
+          }
         }
 #endif
       } while (++i < chunk_end);
@@ -321,8 +344,16 @@ void main() {
 #endif
         for (int j = 0; j < HV_LIGHT_PIXELS; ++j) {
           bool marked = ((ltc_marks[j] >> uint(b)) & 1u) != 0u;
-          sum[j] += marked ? sphereLightLtcCorrection(l, s[j], sp[j]) * HV_VIS(j) : vec3(0.0);
+          sum[j] += marked ? HV_SPHERE_SECOND(l, s[j], sp[j]) * HV_VIS(j) : vec3(0.0);
         }
+#if HV_HAS_CLEAR_COAT && !HV_SPHERE_BUDGET
+        if (any_coat) {
+          for (int j = 0; j < HV_LIGHT_PIXELS; ++j) {
+            bool marked = ((ltc_marks[j] >> uint(b)) & 1u) != 0u;
+            coat_sum[j] += marked ? HV_SPHERE_SECOND(l, cs[j], csp[j]) * HV_VIS(j) : vec3(0.0);
+          }
+        }
+#endif
       }
       chunk = chunk_end;
     } while (chunk < end_sphere);

@@ -516,6 +516,17 @@ GoalCheck checkSphereGoal(const SphereAccuracy& a, int method, double tol, float
   return c;
 }
 
+GoalCheck checkStraddlingGoal(const SphereAccuracy& a, int method, double tol) {
+  GoalCheck c;
+  for (const SphereSweepRow& r : a.rows) {
+    if (r.above()) continue;
+    TermError t = r.specular[size_t(method)];
+    t.peak = 1.0;  // a bias-only goal
+    checkTerm(t, sphereWhere(r), tol, c);
+  }
+  return c;
+}
+
 GoalCheck checkTubeGoal(const TubeAccuracy& a, int method, bool diffuse, double tol) {
   GoalCheck c;
   for (const TubeSweepRow& r : a.rows) {

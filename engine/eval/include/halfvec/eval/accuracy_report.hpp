@@ -146,5 +146,8 @@ struct GoalCheck {
 };
 GoalCheck checkSphereGoal(const SphereAccuracy& a, int method, double tol, float max_radius);
 GoalCheck checkTubeGoal(const TubeAccuracy& a, int method, bool diffuse, double tol);
+// Spheres straddling the horizon (elevation < asin(r/d), some of the sphere above it): the
+// specular's bias over the views within tol (the peak view can lie below the surface).
+GoalCheck checkStraddlingGoal(const SphereAccuracy& a, int method, double tol);
 
 }  // namespace hv::eval
