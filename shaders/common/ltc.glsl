@@ -239,9 +239,10 @@ float ltcSphereIntegral(Ltc l, vec3 c, float r) {
 // is that polygon where it is the smaller segment, else the cone's exact F less it. Cutting off
 // the larger segment's polygon instead (the part below from the whole disk) leaves the polygon's
 // error on a sliver above: the polygon, not the circle, decides a sliver's area. The part above
-// is then clipped in cosine space as any region (horizonClippedIntegral). F of the part above is
-// continuous where a sphere starts to straddle (the segment above is the whole disk, F). Measured:
-// docs/lights.md, "Straddling spheres".
+// is then clipped at the cosine space's horizon: exactly, as a polygon, where it is the smaller
+// segment; as any region (horizonClippedIntegral) where it is the cone less the segment below.
+// Where a sphere starts to straddle (the segment below vanishes) the second is the whole cone's
+// integral. Measured: docs/lights.md, "Straddling spheres".
 #define HV_LTC_SEGMENT_ARC_POINTS 8
 
 // A sphere (center c relative to the shading point, radius r) that straddles the horizon of N
@@ -269,10 +270,12 @@ float ltcSegmentAreaRatio(float phi) {
   return phi < 0.05f ? 1.0f / (1.0f - 1.0f / (m * m)) : seg / max(poly, 1e-30f);
 }
 
-// The vector form factor, in the cosine space of l and oriented as the whole cone's
-// (ltcSphereFormFactor), of the part above the surface of normal N of the sphere (c, r as
-// above) that straddles it (see above).
-vec3 ltcAboveFormFactor(Ltc l, vec3 N, vec3 c, float r) {
+// The part above the surface of normal N of the sphere (c, r as above) that straddles it (see
+// above): its clamped cosine's integral in the cosine space of l. Where the part above is the
+// smaller segment, its polygon is clipped at the cosine space's horizon (z = 0) and integrated
+// exactly (the z of its vector form factor); else the cone's exact F less the segment below's
+// polygon, clipped as any region (horizonClippedIntegral).
+float ltcSphereIntegralAbove(Ltc l, vec3 N, vec3 c, float r) {
   float d2 = max(dot(c, c), 1e-30f);
   vec3 cn = c * inversesqrt(d2);
   float t = r * inversesqrt(max(d2 - r * r, 1e-30f));  // tan(sigma): the disk's radius
@@ -290,28 +293,40 @@ vec3 ltcAboveFormFactor(Ltc l, vec3 N, vec3 c, float r) {
   vec3 axis = above_smaller ? e1 : -e1;                    // toward the smaller segment's arc
   vec3 side = above_smaller ? e2 : -e2;
   // The arc's points from angle -phi to phi about axis (counter-clockwise about cn), turned by
-  // a rotation of step 2 phi / (n - 1).
+  // a rotation of step 2 phi / (n - 1); the chord closes the polygon.
   float step_angle = 2.0f * phi / float(HV_LTC_SEGMENT_ARC_POINTS - 1);
   vec2 rot = vec2(cos(phi), -sin(phi));
   vec2 turn = vec2(cos(step_angle), sin(step_angle));
   vec3 first = ltcToCosine(l, cn + (axis * rot.x + side * rot.y) * t);
   vec3 prev = first;
   vec3 F = vec3(0.0f);
-  for (int k = 1; k < HV_LTC_SEGMENT_ARC_POINTS; ++k) {
-    rot = vec2(rot.x * turn.x - rot.y * turn.y, rot.x * turn.y + rot.y * turn.x);
-    vec3 p = ltcToCosine(l, cn + (axis * rot.x + side * rot.y) * t);
+  // The same polygon clipped at z = 0: the edges' parts above, and the horizon's part between
+  // where the boundary goes down and where it comes back up.
+  vec3 Fc = vec3(0.0f);
+  vec3 x_down = vec3(0.0f);
+  vec3 x_up = vec3(0.0f);
+  for (int k = 1; k <= HV_LTC_SEGMENT_ARC_POINTS; ++k) {
+    vec3 p = first;
+    if (k < HV_LTC_SEGMENT_ARC_POINTS) {
+      rot = vec2(rot.x * turn.x - rot.y * turn.y, rot.x * turn.y + rot.y * turn.x);
+      p = ltcToCosine(l, cn + (axis * rot.x + side * rot.y) * t);
+    }
     F += ltcEdgeFormFactor(prev, p);
+    float h0 = prev.z;
+    float h1 = p.z;
+    vec3 x = prev + (p - prev) * (h0 / (h0 - h1 + (h0 == h1 ? 1e-30f : 0.0f)));
+    vec3 a = h0 > 0.0f ? prev : x;
+    vec3 b = h1 > 0.0f ? p : x;
+    Fc += (h0 > 0.0f || h1 > 0.0f) ? ltcEdgeFormFactor(a, b) : vec3(0.0f);
+    x_down = (h0 > 0.0f && h1 <= 0.0f) ? x : x_down;
+    x_up = (h0 <= 0.0f && h1 > 0.0f) ? x : x_up;
     prev = p;
   }
-  F += ltcEdgeFormFactor(prev, first);  // the chord, back along the horizon
-  F *= (0.5f * INV_PI) * ltcSegmentAreaRatio(phi);
-  return above_smaller ? F : ltcSphereFormFactor(l, c, r) - F;
-}
-
-// ltcSphereIntegral for a sphere that straddles the horizon of N (ltcSphereStraddles): its part
-// above the surface alone (ltcAboveFormFactor).
-float ltcSphereIntegralAbove(Ltc l, vec3 N, vec3 c, float r) {
-  return horizonClippedIntegral(ltcAboveFormFactor(l, N, c, r));
+  bool cut = dot(x_down, x_down) > 0.0f && dot(x_up, x_up) > 0.0f;
+  Fc += cut ? ltcEdgeFormFactor(x_down, x_up) : vec3(0.0f);
+  float scale = (0.5f * INV_PI) * ltcSegmentAreaRatio(phi);
+  return above_smaller ? max(Fc.z * scale, 0.0f)
+                       : horizonClippedIntegral(ltcSphereFormFactor(l, c, r) - F * scale);
 }
 
 // ---- Capsule (tube light): the cylinder's silhouette plus the two end caps ----

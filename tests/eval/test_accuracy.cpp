@@ -325,10 +325,10 @@ TEST(AccuracyFindings, SphereErrorBounds) {
 }
 
 // Spheres straddling the horizon, `ltc`: the part below the surface is cut off in world space
-// (ltc.glsl, ltcAboveFormFactor) and the light correction taken over the part above, at its
+// (ltc.glsl, ltcSphereIntegralAbove) and the light correction taken over the part above, at its
 // centroid (ltc_lights.glsl, ltcBandCorrection). The clip in cosine space alone kept the sphere's
 // part below the surface where the LTC leaks there: on this subset (1024 samples) a mean |bias|
-// of 3.4 and a worst of 39 (+3900%); the bounds are 1.5 times what the cut measured, 0.375 and
+// of 3.4 and a worst of 39 (+3900%); the bounds are 1.5 times what the cut measured, 0.372 and
 // 3.17 (docs/lights.md, "Straddling spheres").
 TEST(AccuracyFindings, StraddlingSpheresCutAtTheSurface) {
   SphereSweepGrid g;
@@ -346,7 +346,7 @@ TEST(AccuracyFindings, StraddlingSpheresCutAtTheSurface) {
     ++n;
   }
   std::printf("straddling spheres, ltc: mean |bias| %.3f, worst %.3f over %d\n", sum / n, worst, n);
-  EXPECT_LT(sum / n, 0.375 * 1.5);
+  EXPECT_LT(sum / n, 0.372 * 1.5);
   EXPECT_LT(worst, 3.17 * 1.5);
 }
 

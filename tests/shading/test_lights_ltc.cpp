@@ -198,7 +198,7 @@ TEST(LtcLights, InsideTheSphereTheWholeHemisphereEmits) {
 // relative + 1e-6. The difference is first order in the length (a sphere of r 0.05 crossing the
 // horizon at roughness 0.3: -2.6% at length 1e-3, -0.26% at 1e-4, -0.026% at 1e-5). The specular
 // of a sphere crossing the horizon cuts off its part below the surface in world space
-// (ltcAboveFormFactor) and a capsule's does not yet: there only the diffuse is compared
+// (ltcSphereIntegralAbove) and a capsule's does not yet: there only the diffuse is compared
 // (docs/lights.md, "Straddling spheres").
 TEST(LtcLights, LengthToZeroGivesTheSphere) {
   for (float rough : {0.05f, 0.3f, 1.0f}) {
