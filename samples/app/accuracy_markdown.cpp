@@ -33,14 +33,6 @@ std::string headerRow(const std::vector<std::string>& cells) {
   return s + "\n";
 }
 
-namespace {
-
-std::string summaryRow(const eval::MethodSummary& m) {
-  return row({m.light + " " + m.term, m.method, std::to_string(m.count), pct(m.median),
-              pct(m.worst) + " (" + spct(m.worst_bias) + ")", fmtNum("%.2f", m.peak_worst),
-              m.where});
-}
-
 std::string goalRow(const std::string& goal, const eval::GoalCheck& c, double tol) {
   const bool met = c.count > 0 && c.within == c.count;
   return row({goal, std::to_string(c.within) + " of " + std::to_string(c.count),
@@ -50,6 +42,14 @@ std::string goalRow(const std::string& goal, const eval::GoalCheck& c, double to
               met ? "met"
                   : (c.worst_peak <= 2.0 * tol && c.worst_bias <= 2.0 * tol ? "missed (within 2x)"
                                                                             : "missed")});
+}
+
+namespace {
+
+std::string summaryRow(const eval::MethodSummary& m) {
+  return row({m.light + " " + m.term, m.method, std::to_string(m.count), pct(m.median),
+              pct(m.worst) + " (" + spct(m.worst_bias) + ")", fmtNum("%.2f", m.peak_worst),
+              m.where});
 }
 
 // The summary lines of the methods a reader compares first.

@@ -13,6 +13,8 @@ namespace hv::app {
 
 // Formatting shared by the writers.
 std::string fmtNum(const char* f, double v);
+// A goals table's row: configurations within tol, the worst peak and bias, met or missed.
+std::string goalRow(const std::string& goal, const eval::GoalCheck& c, double tol);
 std::string pct(double v);   // "12.3%"
 std::string spct(double v);  // "+12.3%"
 std::string num(double v);   // "%g"
@@ -29,6 +31,8 @@ std::string sphereMarkdown(const eval::SphereAccuracy& a);
 // The sphere goals alone (`halfvec accuracy --only spheres`): above the horizon and straddling it.
 std::string sphereGoalsMarkdown(const eval::SphereAccuracy& sphere);
 std::string tubeMarkdown(const eval::TubeAccuracy& a);
+// Capsules straddling the horizon (`halfvec accuracy --only tubes` and the full report).
+std::string tubeStraddlingMarkdown(const eval::TubeStraddlingAccuracy& a);
 std::string directionalMarkdown(const eval::SphereAccuracy& a);
 // The error budget: the table's prediction and the budget's choices over the sphere sweep.
 std::string budgetMarkdown(const eval::BudgetAccuracy& a);

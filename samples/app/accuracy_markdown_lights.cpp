@@ -293,6 +293,33 @@ std::string directionalMarkdown(const eval::SphereAccuracy& a) {
   return md.str();
 }
 
+std::string tubeStraddlingMarkdown(const eval::TubeStraddlingAccuracy& a) {
+  std::ostringstream md;
+  md << "### Specular of capsules straddling the horizon: bias, ltc (representative point), "
+        "across / along the plane of incidence\n\n"
+        "The tube sweep with the capsule's axis (parallel to the surface) at elevation 5, 0 and "
+        "-5 degrees, with the radii whose capsule crosses the surface plane there; the reference "
+        "sees only its part above the surface. "
+     << fmtNum("%.1f", a.seconds) << " s.\n\n"
+     << headerRow({"goal", "configurations within", "worst peak", "worst bias", ""})
+     << goalRow("tube `ltc` specular straddling the horizon, within 15% (bias)",
+                eval::checkTubeStraddlingGoal(a, eval::kTubeLtc, 0.15), 0.15)
+     << goalRow("tube `ltc` specular straddling the horizon, within 10% (bias)",
+                eval::checkTubeStraddlingGoal(a, eval::kTubeLtc, 0.10), 0.10)
+     << goalRow("tube eq. 19 + normalization (default) straddling, within 15% (bias)",
+                eval::checkTubeStraddlingGoal(a, eval::kTubeRp, 0.15), 0.15)
+     << "\n";
+  for (const eval::TubeAccuracy& e : a.elevations) {
+    md << tubeTable(e, "Elevation " + num(e.grid.elevation_deg) + " degrees",
+                    [](const TubeSweepRow& r) {
+                      return spct(r.specular[eval::kTubeLtc].bias) + " (" +
+                             spct(r.specular[eval::kTubeRp].bias) + ")";
+                    },
+                    {false, true});
+  }
+  return md.str();
+}
+
 std::string tubeMarkdown(const eval::TubeAccuracy& a) {
   std::ostringstream md;
   double max_noise = 0.0;

@@ -50,8 +50,9 @@ Options:
   --only SECTION    measure and write only that section (minutes, not hours): shadows (the
                     shadow filters against the traced reference), occlusion (screen-space AO),
                     directional (the directional-light sweep), clearcoat (the clear coat),
-                    budget (the error budget's prediction) or spheres (the sphere sweep and its
-                    goals, straddling spheres included)
+                    budget (the error budget's prediction), spheres (the sphere sweep and its
+                    goals, straddling spheres included) or tubes (the tube sweep and capsules
+                    straddling the horizon)
   -h, --help        this text
 )";
 
@@ -75,10 +76,10 @@ Options parseArgs(const Args& args) {
     } else if (a == "--only") {
       o.only = optionValue(args, i);
       if (o.only != "shadows" && o.only != "occlusion" && o.only != "directional" &&
-          o.only != "clearcoat" && o.only != "budget" && o.only != "spheres") {
+          o.only != "clearcoat" && o.only != "budget" && o.only != "spheres" && o.only != "tubes") {
         throw UsageError{
-            "--only: expected 'shadows', 'occlusion', 'directional', 'clearcoat', 'budget' or "
-            "'spheres', got '" +
+            "--only: expected 'shadows', 'occlusion', 'directional', 'clearcoat', 'budget', "
+            "'spheres' or 'tubes', got '" +
             o.only + "'"};
       }
     } else {
@@ -107,6 +108,7 @@ struct Measured {
   eval::BudgetAccuracy budget;
   eval::ClearCoatAccuracy clear_coat;
   eval::TubeAccuracy tube;
+  eval::TubeStraddlingAccuracy tube_straddling;
   eval::AmbientAccuracy ambient;
   eval::ShadowAccuracy shadows;
   std::vector<eval::SceneAccuracy> scenes;
@@ -146,6 +148,13 @@ Measured measure(const eval::AccuracyOptions& o, const std::string& only) {
     m.sphere = eval::measureSphereLights(o);
     return m;
   }
+  if (only == "tubes") {
+    step("tube lights");
+    m.tube = eval::measureTubeLights(o);
+    step("tube lights straddling the horizon");
+    m.tube_straddling = eval::measureTubeStraddling(o);
+    return m;
+  }
   step("point lights");
   m.point = eval::measurePointLights(o);
   step("sphere lights");
@@ -156,6 +165,7 @@ Measured measure(const eval::AccuracyOptions& o, const std::string& only) {
   m.budget = eval::measureBudget(o);
   step("tube lights");
   m.tube = eval::measureTubeLights(o);
+  m.tube_straddling = eval::measureTubeStraddling(o);
   step("clear coat");
   m.clear_coat = eval::measureClearCoat(o);
   step("ambient");
@@ -208,10 +218,15 @@ std::string document(const Options& o, const Measured& m, double secs, const std
     md << sphereGoalsMarkdown(m.sphere) << sphereMarkdown(m.sphere);
     return md.str();
   }
+  if (o.only == "tubes") {
+    md << tubeMarkdown(m.tube) << tubeStraddlingMarkdown(m.tube_straddling);
+    return md.str();
+  }
   md << summaryMarkdown(m.sphere, m.tube, m.point, m.ambient) << pointLightMarkdown(m.point)
      << sphereMarkdown(m.sphere) << budgetMarkdown(m.budget) << directionalMarkdown(m.directional)
-     << tubeMarkdown(m.tube) << otherBrdfMarkdown(m.sphere, m.tube)
-     << clearCoatMarkdown(m.clear_coat) << ambientMarkdown(m.ambient) << shadowsMarkdown(m.shadows)
+     << tubeMarkdown(m.tube) << tubeStraddlingMarkdown(m.tube_straddling)
+     << otherBrdfMarkdown(m.sphere, m.tube) << clearCoatMarkdown(m.clear_coat)
+     << ambientMarkdown(m.ambient) << shadowsMarkdown(m.shadows)
      << scenesMarkdown(m.scenes, fs::path(o.out).stem().string()) << occlusionMarkdown(m.occlusion);
   return md.str();
 }

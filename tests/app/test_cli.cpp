@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <set>
 
 #include <nlohmann/json.hpp>
@@ -49,6 +50,29 @@ TEST(Cli, AccuracyOnlyNeedsItsOwnOutput) {
     EXPECT_NE(err.find("--out"), std::string::npos) << err;
   }
   EXPECT_EQ(hv::app::runCli({"accuracy", "--out", ""}), 2);
+}
+
+// The sphere and tube sections alone (--quick: small grids, seconds) carry the straddling goals:
+// the spheres' and the capsules' counts within 10% and 15% bias, each over a table of its own.
+TEST(Cli, AccuracySpheresAndTubesReportTheStraddlingGoals) {
+  for (const char* section : {"spheres", "tubes"}) {
+    const fs::path out = tmp(std::string("accuracy_") + section + ".md");
+    fs::remove(out);
+    ASSERT_EQ(hv::app::runCli({"accuracy", "--only", section, "--quick", "--out", out.string()}), 0)
+        << section;
+    std::ifstream f(out);
+    const std::string md((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    const std::string light = std::string(section) == "spheres" ? "sphere" : "tube";
+    for (const char* tol : {"within 10% (bias)", "within 15% (bias)"}) {
+      EXPECT_NE(md.find(light + " `ltc` specular straddling the horizon, " + tol),
+                std::string::npos)
+          << section << ": " << tol;
+    }
+    EXPECT_NE(md.find(std::string(section) == "spheres" ? "Specular of spheres straddling"
+                                                        : "Specular of capsules straddling"),
+              std::string::npos)
+        << section;
+  }
 }
 
 TEST(Cli, BadSceneFailsAndWritesNothing) {

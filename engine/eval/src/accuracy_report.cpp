@@ -397,6 +397,38 @@ TubeAccuracy measureTubeLights(const AccuracyOptions& o) {
   return a;
 }
 
+TubeStraddlingAccuracy measureTubeStraddling(const AccuracyOptions& o) {
+  TubeStraddlingAccuracy s;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (float e : {5.0f, 0.0f, -5.0f}) {
+    TubeAccuracy a;
+    a.grid.threads = o.threads;
+    a.grid.elevation_deg = e;
+    a.grid.samples = o.quick ? 256 : 4096;
+    if (o.quick) {
+      a.grid.roughness = {0.2f, 0.6f};
+      a.grid.length = {0.5f, 2.0f};
+    }
+    const float h = std::abs(std::sin(glm::radians(e)));  // the axis's height at distance 1
+    std::vector<float> radii;
+    for (float r : {0.01f, 0.05f, 0.2f}) {
+      if (h < r) radii.push_back(r);
+    }
+    a.grid.radius = radii;
+    const auto t1 = std::chrono::steady_clock::now();
+    a.rows = sweepTube(a.grid);
+    // A capsule along the plane of incidence long enough to pass over the shading point holds
+    // it (the axis |sin e| from it): the shading point inside the light, no straddling case.
+    std::erase_if(a.rows, [e](const TubeSweepRow& r) {
+      return r.along && 0.5f * r.length >= std::cos(glm::radians(e)) - r.radius;
+    });
+    a.seconds = secondsSince(t1);
+    s.elevations.push_back(std::move(a));
+  }
+  s.seconds = secondsSince(t0);
+  return s;
+}
+
 AmbientAccuracy measureAmbient(const AccuracyOptions& o) {
   AmbientAccuracy a;
   const std::vector<float> roughness =
@@ -523,6 +555,18 @@ GoalCheck checkStraddlingGoal(const SphereAccuracy& a, int method, double tol) {
     TermError t = r.specular[size_t(method)];
     t.peak = 1.0;  // a bias-only goal
     checkTerm(t, sphereWhere(r), tol, c);
+  }
+  return c;
+}
+
+GoalCheck checkTubeStraddlingGoal(const TubeStraddlingAccuracy& a, int method, double tol) {
+  GoalCheck c;
+  for (const TubeAccuracy& e : a.elevations) {
+    for (const TubeSweepRow& r : e.rows) {
+      TermError t = r.specular[size_t(method)];
+      t.peak = 1.0;  // a bias-only goal
+      checkTerm(t, tubeWhere(r) + ", elevation " + num(e.grid.elevation_deg), tol, c);
+    }
   }
   return c;
 }

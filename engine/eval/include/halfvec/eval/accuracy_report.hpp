@@ -60,6 +60,14 @@ struct TubeAccuracy {
   double seconds = 0.0;
 };
 TubeAccuracy measureTubeLights(const AccuracyOptions& o);
+// Capsules straddling the horizon: the tube sweep at elevations 5, 0 and -5 degrees, each with
+// the radii whose capsule there crosses the surface plane (|sin e| < r; the axis is parallel to
+// the surface, so the whole capsule straddles it).
+struct TubeStraddlingAccuracy {
+  std::vector<TubeAccuracy> elevations;  // grid.elevation_deg, grid.radius: those that straddle
+  double seconds = 0.0;
+};
+TubeStraddlingAccuracy measureTubeStraddling(const AccuracyOptions& o);
 
 // ---- The error budget (error_fit.hpp): the table's prediction and the budget's choice over the
 // sphere sweep, per budget (the trade report's max_error values) ----
@@ -149,5 +157,7 @@ GoalCheck checkTubeGoal(const TubeAccuracy& a, int method, bool diffuse, double 
 // Spheres straddling the horizon (elevation < asin(r/d), some of the sphere above it): the
 // specular's bias over the views within tol (the peak view can lie below the surface).
 GoalCheck checkStraddlingGoal(const SphereAccuracy& a, int method, double tol);
+// The same for capsules (bias of the specular over the views, every straddling configuration).
+GoalCheck checkTubeStraddlingGoal(const TubeStraddlingAccuracy& a, int method, double tol);
 
 }  // namespace hv::eval
