@@ -481,34 +481,79 @@ vec3 tubeSpecularRepresentativePoint(Surface s, ShadingPoint sp, vec3 Lc, vec3 L
 // identity LTC (ltcTubeIrradiance, ltc_lights.glsl); specular: the representative point
 // (tubeSpecularRepresentativePoint) or, with HV_TUBE_SPECULAR_LTC, the pixel's LTC over the
 // capsule (ltcTubeSpecular).
-vec3 evaluateTubeLightAt(GpuLight light, Surface s, ShadingPoint sp) {
-  float radius = light.position_radius.w;
-  float len = light.axis_length.w;
-  vec3 Lc = vec3(light.position_radius) - sp.P;
-  vec3 Ld = vec3(light.axis_length) * len;  // segment vector L1 - L0
-  vec3 L0 = Lc - 0.5f * Ld;
-  vec3 L1 = Lc + 0.5f * Ld;
-  float ld2 = dot(Ld, Ld);
+// What a tube light's terms share at one shading point: the segment's center and ends relative
+// to it, the squared distance to its closest point, the falloff window there and the diffuse term.
+struct TubeTerms {
+  vec3 Lc;  // the segment's center
+  vec3 Ld;  // L1 - L0
+  vec3 L0;
+  vec3 L1;
+  float ld2;  // |Ld|^2
+  float dp2;  // squared distance to the closest segment point
+  float window;
+  float radius;
+  float len;
+  vec3 diffuse;  // the diffuse term (diffuseTerm), before combineTerms
+};
+
+TubeTerms tubeTerms(GpuLight light, Surface s, ShadingPoint sp) {
+  TubeTerms t;
+  t.radius = light.position_radius.w;
+  t.len = light.axis_length.w;
+  t.Lc = vec3(light.position_radius) - sp.P;
+  t.Ld = vec3(light.axis_length) * t.len;  // segment vector L1 - L0
+  t.L0 = t.Lc - 0.5f * t.Ld;
+  t.L1 = t.Lc + 0.5f * t.Ld;
+  t.ld2 = dot(t.Ld, t.Ld);
   // Closest point of the segment to P: the window distance and the diffuse direction. 1e-30
   // guards 0/0 for len = 0 (then t = 0 and L0 = Lc: the sphere light).
-  float tp = saturate(-dot(L0, Ld) / max(ld2, 1e-30f));
-  vec3 Lp = L0 + tp * Ld;
-  float dp2 = dot(Lp, Lp);
-  float window = falloffWindow(dp2, light.color_inv_range.w);
-  vec3 Ldiff = Lp * inversesqrt(max(dp2, 1e-30f));  // safeNormalize(Lp) reusing dp2
+  float tp = saturate(-dot(t.L0, t.Ld) / max(t.ld2, 1e-30f));
+  vec3 Lp = t.L0 + tp * t.Ld;
+  t.dp2 = dot(Lp, Lp);
+  t.window = falloffWindow(t.dp2, light.color_inv_range.w);
+  vec3 Ldiff = Lp * inversesqrt(max(t.dp2, 1e-30f));  // safeNormalize(Lp) reusing dp2
 #if HV_TUBE_DIFFUSE == HV_TUBE_DIFFUSE_LTC
-  float irradiance = ltcTubeIrradiance(s, L0, L1, dp2, radius, len, window);
+  float irradiance = ltcTubeIrradiance(s, t.L0, t.L1, t.dp2, t.radius, t.len, t.window);
 #else
-  float irradiance = tubeIrradianceKaris(s, L0, L1, radius, window);
+  float irradiance = tubeIrradianceKaris(s, t.L0, t.L1, t.radius, t.window);
 #endif
-  vec3 diffuse = diffuseTerm(s, sp, Ldiff, irradiance);
-#if HV_TUBE_SPECULAR == HV_TUBE_SPECULAR_LTC
-  vec3 specular = ltcTubeSpecular(s, sp, Lc, Ld, L0, L1, dp2, radius, len, window);
-#else
-  vec3 specular = tubeSpecularRepresentativePoint(s, sp, Lc, L0, Ld, ld2, radius, len, window);
-#endif
-  return combineTerms(s, vec3(light.color_inv_range), diffuse, specular);
+  t.diffuse = diffuseTerm(s, sp, Ldiff, irradiance);
+  return t;
 }
+
+vec3 evaluateTubeLightAt(GpuLight light, Surface s, ShadingPoint sp) {
+  TubeTerms t = tubeTerms(light, s, sp);
+#if HV_TUBE_SPECULAR == HV_TUBE_SPECULAR_LTC
+  vec3 specular = ltcTubeSpecular(s, sp, t.Lc, t.Ld, t.L0, t.L1, t.dp2, t.radius, t.len, t.window);
+#else
+  vec3 specular =
+      tubeSpecularRepresentativePoint(s, sp, t.Lc, t.L0, t.Ld, t.ld2, t.radius, t.len, t.window);
+#endif
+  return combineTerms(s, vec3(light.color_inv_range), t.diffuse, specular);
+}
+
+#if HV_TUBE_SPECULAR == HV_TUBE_SPECULAR_LTC
+// The tiled light pass's two parts of evaluateTubeLightAt (light_shade.comp), as the sphere's
+// (evaluateSphereLightWholeAt): the light's radiance with the whole capsule's LTC and whether
+// the capsule straddles the horizon; and what the cut at the horizon changes in it.
+vec3 evaluateTubeLightWholeAt(GpuLight light, Surface s, ShadingPoint sp, HV_OUT(bool) straddles) {
+  TubeTerms t = tubeTerms(light, s, sp);
+  straddles = ltcTubeSpecularStraddles(s, t.L0, t.L1, t.dp2, t.radius);
+  vec3 specular = ltcTubeSpecularOver(s, sp, t.Lc, t.Ld, t.L0, t.L1, t.dp2, t.radius, t.len,
+                                      t.window, false);
+  return combineTerms(s, vec3(light.color_inv_range), t.diffuse, specular);
+}
+vec3 tubeLightStraddleCorrection(GpuLight light, Surface s, ShadingPoint sp) {
+  TubeTerms t = tubeTerms(light, s, sp);
+  vec3 above = ltcTubeSpecularOver(s, sp, t.Lc, t.Ld, t.L0, t.L1, t.dp2, t.radius, t.len,
+                                   t.window, true);
+  vec3 whole = ltcTubeSpecularOver(s, sp, t.Lc, t.Ld, t.L0, t.L1, t.dp2, t.radius, t.len,
+                                   t.window, false);
+  bool straddles = ltcTubeSpecularStraddles(s, t.L0, t.L1, t.dp2, t.radius);
+  return combineTerms(s, vec3(light.color_inv_range), vec3(0.0f),
+                      straddles ? above - whole : vec3(0.0f));
+}
+#endif
 vec3 evaluateTubeLight(GpuLight light, Surface s, vec3 P, vec3 V) {
   return evaluateTubeLightAt(light, s, makeShadingPoint(s, P, V));
 }

@@ -270,12 +270,32 @@ float ltcSegmentAreaRatio(float phi) {
   return phi < 0.05f ? 1.0f / (1.0f - 1.0f / (m * m)) : seg / max(poly, 1e-30f);
 }
 
-// The part above the surface of normal N of the sphere (c, r as above) that straddles it (see
-// above): its clamped cosine's integral in the cosine space of l. Where the part above is the
-// smaller segment, its polygon is clipped at the cosine space's horizon (z = 0) and integrated
-// exactly (the z of its vector form factor); else the cone's exact F less the segment below's
-// polygon, clipped as any region (horizonClippedIntegral).
-float ltcSphereIntegralAbove(Ltc l, vec3 N, vec3 c, float r) {
+// One edge a -> b (cosine-space images) of a convex polygon clipped at a plane, ha and hb the
+// ends' heights over it (> 0: kept): the kept part's share of 2 pi F (ltcEdgeFormFactor); the
+// points where the boundary leaves the kept side and comes back go to x_down and x_up, whose
+// edge along the plane closes the clipped polygon (ltcClosingEdge). The crossing's parameter
+// along the edge is the same for a linear image of it, so world-space heights serve for
+// cosine-space points.
+vec3 ltcClippedEdge(vec3 a, vec3 b, float ha, float hb, HV_INOUT(vec3) x_down,
+                    HV_INOUT(vec3) x_up) {
+  vec3 x = a + (b - a) * (ha / (ha - hb + (ha == hb ? 1e-30f : 0.0f)));
+  x_down = (ha > 0.0f && hb <= 0.0f) ? x : x_down;
+  x_up = (ha <= 0.0f && hb > 0.0f) ? x : x_up;
+  vec3 a_kept = ha > 0.0f ? a : x;
+  vec3 b_kept = hb > 0.0f ? b : x;
+  return (ha > 0.0f || hb > 0.0f) ? ltcEdgeFormFactor(a_kept, b_kept) : vec3(0.0f);
+}
+vec3 ltcClosingEdge(vec3 x_down, vec3 x_up) {
+  bool cut = dot(x_down, x_down) > 0.0f && dot(x_up, x_up) > 0.0f;
+  return cut ? ltcEdgeFormFactor(x_down, x_up) : vec3(0.0f);
+}
+
+// The part above the surface of normal N of the sphere (c, r as above; straddling it, wholly
+// above or wholly below: the segment is then the whole disk or nothing): its vector form factor
+// in the cosine space of l, oriented as the whole cone's; and, where the part above is the
+// smaller segment (the center at or below the surface), its clamped cosine's integral exactly:
+// the polygon clipped at the cosine space's horizon (z = 0), in I_exact (-1 elsewhere).
+vec3 ltcSphereAboveFormFactor(Ltc l, vec3 N, vec3 c, float r, HV_OUT(float) I_exact) {
   float d2 = max(dot(c, c), 1e-30f);
   vec3 cn = c * inversesqrt(d2);
   float t = r * inversesqrt(max(d2 - r * r, 1e-30f));  // tan(sigma): the disk's radius
@@ -300,9 +320,7 @@ float ltcSphereIntegralAbove(Ltc l, vec3 N, vec3 c, float r) {
   vec3 first = ltcToCosine(l, cn + (axis * rot.x + side * rot.y) * t);
   vec3 prev = first;
   vec3 F = vec3(0.0f);
-  // The same polygon clipped at z = 0: the edges' parts above, and the horizon's part between
-  // where the boundary goes down and where it comes back up.
-  vec3 Fc = vec3(0.0f);
+  vec3 Fc = vec3(0.0f);  // the same polygon clipped at z = 0
   vec3 x_down = vec3(0.0f);
   vec3 x_up = vec3(0.0f);
   for (int k = 1; k <= HV_LTC_SEGMENT_ARC_POINTS; ++k) {
@@ -312,21 +330,22 @@ float ltcSphereIntegralAbove(Ltc l, vec3 N, vec3 c, float r) {
       p = ltcToCosine(l, cn + (axis * rot.x + side * rot.y) * t);
     }
     F += ltcEdgeFormFactor(prev, p);
-    float h0 = prev.z;
-    float h1 = p.z;
-    vec3 x = prev + (p - prev) * (h0 / (h0 - h1 + (h0 == h1 ? 1e-30f : 0.0f)));
-    vec3 a = h0 > 0.0f ? prev : x;
-    vec3 b = h1 > 0.0f ? p : x;
-    Fc += (h0 > 0.0f || h1 > 0.0f) ? ltcEdgeFormFactor(a, b) : vec3(0.0f);
-    x_down = (h0 > 0.0f && h1 <= 0.0f) ? x : x_down;
-    x_up = (h0 <= 0.0f && h1 > 0.0f) ? x : x_up;
+    Fc += ltcClippedEdge(prev, p, prev.z, p.z, x_down, x_up);
     prev = p;
   }
-  bool cut = dot(x_down, x_down) > 0.0f && dot(x_up, x_up) > 0.0f;
-  Fc += cut ? ltcEdgeFormFactor(x_down, x_up) : vec3(0.0f);
+  Fc += ltcClosingEdge(x_down, x_up);
   float scale = (0.5f * INV_PI) * ltcSegmentAreaRatio(phi);
-  return above_smaller ? max(Fc.z * scale, 0.0f)
-                       : horizonClippedIntegral(ltcSphereFormFactor(l, c, r) - F * scale);
+  I_exact = above_smaller ? max(Fc.z * scale, 0.0f) : -1.0f;
+  return above_smaller ? F * scale : ltcSphereFormFactor(l, c, r) - F * scale;
+}
+
+// ltcSphereIntegral for a sphere that straddles the horizon of N (ltcSphereStraddles): the
+// integral over its part above the surface (ltcSphereAboveFormFactor), exact where that part is
+// the smaller segment, else clipped as any region (horizonClippedIntegral).
+float ltcSphereIntegralAbove(Ltc l, vec3 N, vec3 c, float r) {
+  float I_exact;
+  vec3 F = ltcSphereAboveFormFactor(l, N, c, r, I_exact);
+  return I_exact >= 0.0f ? I_exact : horizonClippedIntegral(F);
 }
 
 // ---- Capsule (tube light): the cylinder's silhouette plus the two end caps ----
@@ -372,20 +391,10 @@ vec3 capCentroidOffset(vec3 c, vec3 a, float t) {
   return ap * (0.42441318f * t * inversesqrt(max(dot(ap, ap), 1e-30f)));
 }
 
-// Vector form factor (cosine space) of the capsule under the LTC l: segment p1 -> p2 relative to
-// the shading point (outside the capsule), radius r.
-vec3 ltcCapsuleFormFactor(Ltc l, vec3 p1, vec3 p2, float r) {
-  vec3 w = capsuleHalfWidth(p1, p2, r);
-  // Wound counter-clockwise as seen from the origin, in world space and so in cosine space (a
-  // linear map of positive determinant keeps the orientation): with w along p1 x (p2 - p1), the
-  // triple product of p1 - w, p2 - w, p2 + w is 2 (p1 x p2).w >= 0. A test of F against the
-  // capsule's direction in cosine space picked the side instead, and failed where the map's
-  // stretch shows the rectangle nearly edge-on (grazing views: the sign flipped with the scene's
-  // orientation, docs/lights.md).
-  vec3 F = quadFormFactor(ltcToCosine(l, p1 - w), ltcToCosine(l, p2 - w), ltcToCosine(l, p2 + w),
-                          ltcToCosine(l, p1 + w));
-  vec3 F1 = ltcSphereFormFactor(l, p1, r);
-  vec3 F2 = ltcSphereFormFactor(l, p2, r);
+// The capsule's vector form factor from its facing rectangle's (F) and its end spheres' (F1 at
+// p1, F2 at p2): each cap adds the fraction of its sphere beyond the end line, and the capsule's
+// integral is at least either sphere's.
+vec3 ltcCapsuleWithCaps(Ltc l, vec3 F, vec3 F1, vec3 F2, vec3 p1, vec3 p2, float r) {
   vec3 a = p2 - p1;
   float d1 = dot(p1, p1);
   float d2 = dot(p2, p2);
@@ -402,6 +411,69 @@ vec3 ltcCapsuleFormFactor(Ltc l, vec3 p1, vec3 p2, float r) {
   // (a cap in the lobe or one in its tail: up to 32% between orientations of the same scene).
   vec3 Fcap = mix(F1, F2, bvec3(dot(F2, F2) > dot(F1, F1)));
   return mix(F, Fcap, bvec3(dot(F, F) < dot(Fcap, Fcap)));
+}
+
+// Vector form factor (cosine space) of the capsule under the LTC l: segment p1 -> p2 relative to
+// the shading point (outside the capsule), radius r.
+vec3 ltcCapsuleFormFactor(Ltc l, vec3 p1, vec3 p2, float r) {
+  vec3 w = capsuleHalfWidth(p1, p2, r);
+  // Wound counter-clockwise as seen from the origin, in world space and so in cosine space (a
+  // linear map of positive determinant keeps the orientation): with w along p1 x (p2 - p1), the
+  // triple product of p1 - w, p2 - w, p2 + w is 2 (p1 x p2).w >= 0. A test of F against the
+  // capsule's direction in cosine space picked the side instead, and failed where the map's
+  // stretch shows the rectangle nearly edge-on (grazing views: the sign flipped with the scene's
+  // orientation, docs/lights.md).
+  vec3 F = quadFormFactor(ltcToCosine(l, p1 - w), ltcToCosine(l, p2 - w), ltcToCosine(l, p2 + w),
+                          ltcToCosine(l, p1 + w));
+  return ltcCapsuleWithCaps(l, F, ltcSphereFormFactor(l, p1, r), ltcSphereFormFactor(l, p2, r),
+                            p1, p2, r);
+}
+
+// Whether the capsule (p1, p2, r relative to the shading point) crosses the plane of the surface
+// of normal N, the shading point outside it: ltcCapsuleAboveFormFactor's case.
+bool ltcCapsuleStraddles(vec3 N, vec3 p1, vec3 p2, float r) {
+  float h1 = dot(N, p1);
+  float h2 = dot(N, p2);
+  vec3 a = p2 - p1;
+  float u = clamp(-dot(p1, a) / max(dot(a, a), 1e-30f), 0.0f, 1.0f);
+  vec3 q = p1 + a * u;  // the axis's point closest to the shading point
+  return min(h1, h2) < r && max(h1, h2) > -r && dot(q, q) > r * r;
+}
+
+// The part of the capsule above the surface of normal N (a capsule straddling it, as the sphere's
+// case above: the LTC leaks below the surface): the facing rectangle clipped at the surface's
+// plane in world space (Sutherland-Hodgman against one plane: the edges' parts above, closed
+// along the plane), each end sphere's part above (ltcSphereAboveFormFactor), combined as the
+// whole capsule's.
+vec3 ltcCapsuleAboveFormFactor(Ltc l, vec3 N, vec3 p1, vec3 p2, float r) {
+  vec3 w = capsuleHalfWidth(p1, p2, r);
+  vec3 q0 = p1 - w;
+  vec3 q1 = p2 - w;
+  vec3 q2 = p2 + w;
+  vec3 q3 = p1 + w;  // wound as ltcCapsuleFormFactor's
+  float h0 = dot(N, q0);
+  float h1 = dot(N, q1);
+  float h2 = dot(N, q2);
+  float h3 = dot(N, q3);
+  vec3 c0 = ltcToCosine(l, q0);
+  vec3 c1 = ltcToCosine(l, q1);
+  vec3 c2 = ltcToCosine(l, q2);
+  vec3 c3 = ltcToCosine(l, q3);
+  vec3 x_down = vec3(0.0f);
+  vec3 x_up = vec3(0.0f);
+  vec3 F = ltcClippedEdge(c0, c1, h0, h1, x_down, x_up) + ltcClippedEdge(c1, c2, h1, h2, x_down, x_up) +
+           ltcClippedEdge(c2, c3, h2, h3, x_down, x_up) + ltcClippedEdge(c3, c0, h3, h0, x_down, x_up);
+  F = (F + ltcClosingEdge(x_down, x_up)) * (0.5f * INV_PI);
+  float unused;
+  vec3 F1 = ltcSphereAboveFormFactor(l, N, p1, r, unused);
+  vec3 F2 = ltcSphereAboveFormFactor(l, N, p2, r, unused);
+  return ltcCapsuleWithCaps(l, F, F1, F2, p1, p2, r);
+}
+
+// The integral of the LTC over the part of a straddling capsule above the surface, clipped at the
+// horizon in cosine space.
+float ltcCapsuleIntegralAbove(Ltc l, vec3 N, vec3 p1, vec3 p2, float r) {
+  return horizonClippedIntegral(ltcCapsuleAboveFormFactor(l, N, p1, p2, r));
 }
 
 // Integral of the LTC over the capsule, clipped at the horizon in cosine space.

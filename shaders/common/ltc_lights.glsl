@@ -150,27 +150,35 @@ vec3 ltcSphereSpecular(Surface s, ShadingPoint sp, vec3 Lc, vec3 L, float d2, fl
 }
 
 #if HV_LTC_LIGHT_CORRECTION
-// The light correction's cone (ltcCorrection) over the part of a sphere straddling the horizon
-// that lies above it: a band of the silhouette disk (tangent plane at unit distance, radius
-// t = tan(sigma)) from the horizon's chord (y0 along the disk's upward direction) to its top; its
-// centroid as the direction, half its height as the tangent of the cone's radius, and the disk
-// segment's share of the sphere's solid angle. The centroid, not the band's middle: near the
-// horizon the lobe grows about linearly with the height over it (its N.L), so its mean over the
-// segment is its value at the segment's centroid (4 t / (3 pi) over the chord of a half disk, not
-// t / 2: the tiny spheres centred on the horizon were 10-66% too bright with the middle).
-vec3 ltcBandCorrection(Surface s, ShadingPoint sp, vec3 L, float sin2, float I) {
-  float t = sqrt(sin2 / max(1.0f - sin2, 1e-8f));
-  float NoL = dot(s.N, L);
-  vec3 up = s.N - L * NoL;
+// The part above the surface of a silhouette disk (tangent plane at unit distance along L,
+// radius t = tan(sigma)) that the surface's horizon cuts along a chord (y0 along the disk's
+// upward direction): the direction of its centroid, and its share of the disk's area. The
+// centroid, not the part's middle: near the horizon the lobe grows about linearly with the height
+// over it (its N.L), so its mean over the segment is its value at the segment's centroid
+// (4 t / (3 pi) over the chord of a half disk, not t / 2: the tiny spheres centred on the
+// horizon were 10-66% too bright with the middle).
+vec3 ltcBandCentroid(vec3 N, vec3 L, float t, HV_OUT(float) share, HV_OUT(float) half_band) {
+  float NoL = dot(N, L);
+  vec3 up = N - L * NoL;
   float up_len = sqrt(max(dot(up, up), 1e-16f));
   float y0 = clamp(-NoL / up_len, -t, t);
-  float half_band = 0.5f * (t - y0);
   float chord = sqrt(max(t * t - y0 * y0, 0.0f));
   float area = t * t * acos(y0 / t) - y0 * chord;
   float yc = 2.0f * chord * chord * chord / (3.0f * max(area, 1e-30f));
-  vec3 center = normalize(L + up * (yc / up_len));
-  float segment = area / (PI * t * t);
-  float omega = sphereSolidAngle(sin2) * segment;
+  share = area / (PI * t * t);
+  half_band = 0.5f * (t - y0);
+  return normalize(L + up * (yc / up_len));
+}
+
+// The light correction's cone (ltcCorrection) over the part of a sphere straddling the horizon
+// that lies above it (ltcBandCentroid): its centroid as the direction, half its height as the
+// tangent of the cone's radius, and its share of the sphere's solid angle.
+vec3 ltcBandCorrection(Surface s, ShadingPoint sp, vec3 L, float sin2, float I) {
+  float t = sqrt(sin2 / max(1.0f - sin2, 1e-8f));
+  float share;
+  float half_band;
+  vec3 center = ltcBandCentroid(s.N, L, t, share, half_band);
+  float omega = sphereSolidAngle(sin2) * share;
   float band2 = half_band * half_band / (1.0f + half_band * half_band);
   return ltcCorrection(s, sp, center, vec3(0.0f), band2, omega, I);
 }
@@ -249,25 +257,51 @@ float ltcTubeIrradiance(Surface s, vec3 L0, vec3 L1, float dp2, float radius, fl
 #if HV_LTC_TABLE && HV_TUBE_SPECULAR == HV_TUBE_SPECULAR_LTC
 // Tube light specular (HV_TUBE_SPECULAR_LTC): the pixel's LTC integrated over the capsule, times
 // the emitter radiance L_e = I / (pi r^2 + pi r len / 2) (docs/lights.md). Lc: the segment's
-// center, Ld = L1 - L0, and the rest as ltcTubeIrradiance.
-vec3 ltcTubeSpecular(Surface s, ShadingPoint sp, vec3 Lc, vec3 Ld, vec3 L0, vec3 L1, float dp2,
-                     float radius, float len, float window) {
+// center, Ld = L1 - L0, and the rest as ltcTubeIrradiance. above: over the part of the capsule
+// above the surface (a capsule straddling the horizon, ltcCapsuleAboveFormFactor), else over the
+// whole capsule; the callers pass a constant, so each compiles one of the two.
+vec3 ltcTubeSpecularOver(Surface s, ShadingPoint sp, vec3 Lc, vec3 Ld, vec3 L0, vec3 L1,
+                         float dp2, float radius, float len, float window, bool above) {
   float dp2c = ltcCapsuleDist2(dp2, radius);
   float r_eff = ltcCapsuleRadius(radius, dp2c);
-  float I = ltcCapsuleIntegral(sp.ltc, L0, L1, r_eff);
+  float I = above ? ltcCapsuleIntegralAbove(sp.ltc, s.N, L0, L1, r_eff)
+                  : ltcCapsuleIntegral(sp.ltc, L0, L1, r_eff);
   vec3 specular = sp.ltc_spec * (ltcCapsuleEmit(window, dp2c, r_eff, len) * I);
 #if HV_LTC_LIGHT_CORRECTION
   // As the sphere's (ltcSphereSpecular), around the capsule's center, its two points also
   // spread along the axis at +-1/sqrt(3) of the half-length (the two-point Gauss rule of a
   // segment), with the capsule's solid angle (at most (pi r^2 + 2 r len) / d^2, d the closest
-  // segment point) and integral. len = 0 gives the sphere's correction exactly.
+  // segment point) and integral. len = 0 gives the sphere's correction exactly. Over the part
+  // above the surface: around the centroid of the cross-section's part above it, with that
+  // part's share of the solid angle (ltcBandCentroid, as a straddling sphere's).
   float sin2 = r_eff * r_eff / dp2c;
   float omega = sphereSolidAngle(sin2) + 2.0f * r_eff * len / dp2c;
   float inv_lc = inversesqrt(max(dot(Lc, Lc), 1e-30f));
-  specular = specular * ltcCorrection(s, sp, Lc * inv_lc, (0.57735027f * 0.5f * inv_lc) * Ld,
-                                      sin2, omega, I);
+  vec3 c = Lc * inv_lc;
+  if (above) {
+    float share;
+    float half_band;
+    c = ltcBandCentroid(s.N, c, sqrt(sin2 / max(1.0f - sin2, 1e-8f)), share, half_band);
+    omega *= share;
+  }
+  specular = specular * ltcCorrection(s, sp, c, (0.57735027f * 0.5f * inv_lc) * Ld, sin2, omega, I);
 #endif
   return specular;
+}
+
+// Whether the capsule, at the radius the LTC shades it with, straddles the surface's horizon
+// (ltcCapsuleStraddles): the pairs ltcTubeSpecularOver(..., true) is for.
+bool ltcTubeSpecularStraddles(Surface s, vec3 L0, vec3 L1, float dp2, float radius) {
+  return ltcCapsuleStraddles(s.N, L0, L1, ltcCapsuleRadius(radius, ltcCapsuleDist2(dp2, radius)));
+}
+
+// The tube's specular, over the part above the surface where it straddles the horizon.
+vec3 ltcTubeSpecular(Surface s, ShadingPoint sp, vec3 Lc, vec3 Ld, vec3 L0, vec3 L1, float dp2,
+                     float radius, float len, float window) {
+  if (ltcTubeSpecularStraddles(s, L0, L1, dp2, radius)) {
+    return ltcTubeSpecularOver(s, sp, Lc, Ld, L0, L1, dp2, radius, len, window, true);
+  }
+  return ltcTubeSpecularOver(s, sp, Lc, Ld, L0, L1, dp2, radius, len, window, false);
 }
 #endif
 

@@ -164,12 +164,15 @@ vec3 probeLight(GpuLight l) { return l.color_inv_range.rgb * step(0.0, l.positio
 #else
 #define HV_VIS(j) 1.0
 #endif
-// The sphere loop in two parts (below) in the tiled pass when it shades: with an error budget,
-// the representative point everywhere and the LTC where the budget asks for it; with `ltc`, the
-// whole cone everywhere and the cut at the horizon where a sphere straddles it (lights.glsl).
+// The sphere and tube loops in two parts (HV_SPLIT_LOOP, below) in the tiled pass when it shades:
+// spheres with an error budget, the representative point everywhere and the LTC where the budget
+// asks for it; spheres and tubes with `ltc`, the whole light everywhere and the cut at the
+// horizon where the light straddles it (lights.glsl).
 #define HV_SPHERE_SPLIT_LOOPS                                                                \
   ((HV_SPHERE_BUDGET || HV_SPHERE_SPECULAR == HV_SPHERE_SPECULAR_LTC) && HV_HAS_SPHERE_LIGHTS && \
    HV_LIGHT_PROBE == 0)
+#define HV_TUBE_SPLIT_LOOPS \
+  (HV_TUBE_SPECULAR == HV_TUBE_SPECULAR_LTC && HV_HAS_TUBE_LIGHTS && HV_LIGHT_PROBE == 0)
 #if HV_SPHERE_BUDGET
 #define HV_SPHERE_FIRST evaluateSphereLightRpAt
 #define HV_SPHERE_SECOND sphereLightLtcCorrection
@@ -177,6 +180,92 @@ vec3 probeLight(GpuLight l) { return l.color_inv_range.rgb * step(0.0, l.positio
 #define HV_SPHERE_FIRST evaluateSphereLightWholeAt
 #define HV_SPHERE_SECOND sphereLightStraddleCorrection
 #endif
+// The split loop's parts that depend on the build: each light's shadow kept for its second part
+// (a filter is costly), and the coat lobe: in the same two parts, its pairs marked in the same
+// mask (the second part is 0 for a lobe that does not need it; HV_SPLIT_COAT_*), or whole in the
+// first loop (the budget's spheres: HV_SPLIT_COAT_WHOLE_SPHERE).
+#if HV_SHADOWS
+#define HV_SPLIT_VIS_DECL vec4 chunk_vis[32];
+#define HV_SPLIT_VIS_KEEP(k) chunk_vis[k] = vis;
+#define HV_SPLIT_VIS_LOAD(b) vec4 vis = chunk_vis[b];
+#else
+#define HV_SPLIT_VIS_DECL
+#define HV_SPLIT_VIS_KEEP(k)
+#define HV_SPLIT_VIS_LOAD(b)
+#endif
+#if HV_HAS_CLEAR_COAT
+#define HV_SPLIT_COAT_FIRST(FIRST, l, bit)                                 \
+  if (any_coat) {                                                          \
+    for (int j = 0; j < HV_LIGHT_PIXELS; ++j) {                            \
+      bool need;                                                           \
+      coat_sum[j] += FIRST(l, cs[j], csp[j], need) * HV_VIS(j);            \
+      ltc_marks[j] |= (need && lit[j] && coat[j] > 0.0) ? bit : 0u;        \
+    }                                                                      \
+  }
+#define HV_SPLIT_COAT_SECOND(SECOND, l, b)                                           \
+  if (any_coat) {                                                                    \
+    for (int j = 0; j < HV_LIGHT_PIXELS; ++j) {                                      \
+      bool marked = ((ltc_marks[j] >> uint(b)) & 1u) != 0u;                          \
+      coat_sum[j] += marked ? SECOND(l, cs[j], csp[j]) * HV_VIS(j) : vec3(0.0);      \
+    }                                                                                \
+  }
+#define HV_SPLIT_COAT_WHOLE_SPHERE(FIRST, l, bit)                                             \
+  if (any_coat) {                                                                             \
+    for (int j = 0; j < HV_LIGHT_PIXELS; ++j) coat_sum[j] += HV_EVAL_SPHERE(l, cs, csp, j);   \
+  }
+#else
+#define HV_SPLIT_COAT_FIRST(FIRST, l, bit)
+#define HV_SPLIT_COAT_SECOND(SECOND, l, b)
+#define HV_SPLIT_COAT_WHOLE_SPHERE(FIRST, l, bit)
+#endif
+#define HV_SPLIT_COAT_NONE(SECOND, l, b)
+// The tile list's lights BEGIN .. END - 1 of one type in two parts. Every light shaded with the
+// first part (FIRST(l, s, sp, need): the representative point with an error budget,
+// error_budget.glsl; the whole light with `ltc`), each pixel's pairs that need the second (the
+// LTC where the budget asks for it; the cut at the horizon where a light straddles it) marked in
+// a bit mask, then corrected by a loop over the marked lights alone (SECOND(l, s, sp), added). A
+// SIMD CPU implementation runs an `if` body whether or not a lane takes it (see the top), so a
+// per-pair branch (or any loop holding one) would cost the second part everywhere; a loop ends
+// when no lane has a marked light left. The lights go 32 at a time (one mask word per pixel:
+// registers, where arrays indexed at run time would go to memory); the marked lights lowest
+// first, a lane leaving the loop when its marks are used up.
+#define HV_SPLIT_LOOP(BEGIN, END, FIRST, SECOND, COAT_FIRST, COAT_SECOND)          \
+  if (BEGIN < END) {                                                              \
+    uint chunk = BEGIN;                                                           \
+    do {                                                                          \
+      uint chunk_end = min(END, chunk + 32u);                                     \
+      uint ltc_marks[HV_LIGHT_PIXELS];                                            \
+      for (int j = 0; j < HV_LIGHT_PIXELS; ++j) ltc_marks[j] = 0u;                \
+      HV_SPLIT_VIS_DECL                                                           \
+      uint i = chunk;                                                             \
+      do {                                                                        \
+        GpuLight l = tileLight(i);                                                \
+        HV_SHADOW_OF(l);                                                          \
+        HV_SPLIT_VIS_KEEP(i - chunk)                                              \
+        uint bit = 1u << (i - chunk);                                             \
+        for (int j = 0; j < HV_LIGHT_PIXELS; ++j) {                               \
+          bool need;                                                              \
+          sum[j] += FIRST(l, s[j], sp[j], need) * HV_VIS(j);                      \
+          ltc_marks[j] |= (need && lit[j]) ? bit : 0u;                            \
+        }                                                                         \
+        COAT_FIRST(FIRST, l, bit)                                                 \
+      } while (++i < chunk_end);                                                  \
+      uint marks = ltc_marks[0];                                                  \
+      for (int j = 1; j < HV_LIGHT_PIXELS; ++j) marks |= ltc_marks[j];            \
+      while (marks != 0u) {                                                       \
+        int b = findLSB(marks);                                                   \
+        marks &= marks - 1u;                                                      \
+        GpuLight l = tileLight(chunk + uint(b));                                  \
+        HV_SPLIT_VIS_LOAD(b)                                                      \
+        for (int j = 0; j < HV_LIGHT_PIXELS; ++j) {                               \
+          bool marked = ((ltc_marks[j] >> uint(b)) & 1u) != 0u;                   \
+          sum[j] += marked ? SECOND(l, s[j], sp[j]) * HV_VIS(j) : vec3(0.0);      \
+        }                                                                         \
+        COAT_SECOND(SECOND, l, b)                                                 \
+      }                                                                           \
+      chunk = chunk_end;                                                          \
+    } while (chunk < END);                                                        \
+  }
 #ifndef HV_SUN_SHADOW_OF
 #define HV_SUN_SHADOW_OF(l)
 #endif
@@ -285,79 +374,12 @@ void main() {
   }
 #endif
 #if HV_HAS_SPHERE_LIGHTS && HV_LIGHT_PROBE != 2
-#if HV_SPHERE_SPLIT_LOOPS
-  // Every sphere shaded with the first part (HV_SPHERE_FIRST: the representative point with an
-  // error budget, error_budget.glsl; the whole cone's LTC with `ltc`), each pixel's pairs that
-  // need the second (the LTC where the budget asks for it; the cut at the horizon where a sphere
-  // straddles it) marked in a bit mask, then corrected by a loop over the marked lights alone. A
-  // SIMD CPU implementation runs an `if` body whether or not a lane takes it (see the top), so a
-  // per-pair branch (or any loop holding one) would cost the second part everywhere; a loop ends
-  // when no lane has a marked light left. The spheres go 32 at a time (one mask word per pixel:
-  // registers, where arrays indexed at run time would go to memory).
-  if (end_point < end_sphere) {
-    uint chunk = end_point;
-    do {
-      uint chunk_end = min(end_sphere, chunk + 32u);
-      uint ltc_marks[HV_LIGHT_PIXELS];
-      for (int j = 0; j < HV_LIGHT_PIXELS; ++j) ltc_marks[j] = 0u;
-#if HV_SHADOWS
-      vec4 chunk_vis[32];  // each light's shadow, kept for its correction (a filter is costly)
-#endif
-      uint i = chunk;
-      do {
-        GpuLight l = tileLight(i);
-        HV_SHADOW_OF(l);
-#if HV_SHADOWS
-        chunk_vis[i - chunk] = vis;
-#endif
-        uint bit = 1u << (i - chunk);
-        for (int j = 0; j < HV_LIGHT_PIXELS; ++j) {
-          bool need;
-          sum[j] += HV_SPHERE_FIRST(l, s[j], sp[j], need) * HV_VIS(j);
-          ltc_marks[j] |= (need && lit[j]) ? bit : 0u;
-        }
-#if HV_HAS_CLEAR_COAT && HV_SPHERE_BUDGET
-        if (any_coat) {
-          for (int j = 0; j < HV_LIGHT_PIXELS; ++j) coat_sum[j] += HV_EVAL_SPHERE(l, cs, csp, j);
-        }
-#elif HV_HAS_CLEAR_COAT
-        // The coat's lobe in the same two parts, its pairs marked in the same mask (the second
-        // part is 0 for the lobe of the two that does not straddle).
-        if (any_coat) {
-          for (int j = 0; j < HV_LIGHT_PIXELS; ++j) {
-            bool need;
-            coat_sum[j] += HV_SPHERE_FIRST(l, cs[j], csp[j], need) * HV_VIS(j);
-            ltc_marks[j] |= (need && lit[j] && coat[j] > 0.0) ? bit : 0u;
-          }
-        }
-#endif
-      } while (++i < chunk_end);
-      // The marked lights, lowest first: a lane leaves the loop when its marks are used up.
-      uint marks = ltc_marks[0];
-      for (int j = 1; j < HV_LIGHT_PIXELS; ++j) marks |= ltc_marks[j];
-      while (marks != 0u) {
-        int b = findLSB(marks);
-        marks &= marks - 1u;
-        GpuLight l = tileLight(chunk + uint(b));
-#if HV_SHADOWS
-        vec4 vis = chunk_vis[b];
-#endif
-        for (int j = 0; j < HV_LIGHT_PIXELS; ++j) {
-          bool marked = ((ltc_marks[j] >> uint(b)) & 1u) != 0u;
-          sum[j] += marked ? HV_SPHERE_SECOND(l, s[j], sp[j]) * HV_VIS(j) : vec3(0.0);
-        }
-#if HV_HAS_CLEAR_COAT && !HV_SPHERE_BUDGET
-        if (any_coat) {
-          for (int j = 0; j < HV_LIGHT_PIXELS; ++j) {
-            bool marked = ((ltc_marks[j] >> uint(b)) & 1u) != 0u;
-            coat_sum[j] += marked ? HV_SPHERE_SECOND(l, cs[j], csp[j]) * HV_VIS(j) : vec3(0.0);
-          }
-        }
-#endif
-      }
-      chunk = chunk_end;
-    } while (chunk < end_sphere);
-  }
+#if HV_SPHERE_SPLIT_LOOPS && HV_SPHERE_BUDGET
+  HV_SPLIT_LOOP(end_point, end_sphere, HV_SPHERE_FIRST, HV_SPHERE_SECOND, HV_SPLIT_COAT_WHOLE_SPHERE,
+                HV_SPLIT_COAT_NONE)
+#elif HV_SPHERE_SPLIT_LOOPS
+  HV_SPLIT_LOOP(end_point, end_sphere, HV_SPHERE_FIRST, HV_SPHERE_SECOND, HV_SPLIT_COAT_FIRST,
+                HV_SPLIT_COAT_SECOND)
 #else
   if (end_point < end_sphere) {
     uint i = end_point;
@@ -369,7 +391,10 @@ void main() {
   }
 #endif
 #endif
-#if HV_HAS_TUBE_LIGHTS && HV_LIGHT_PROBE != 2
+#if HV_TUBE_SPLIT_LOOPS
+  HV_SPLIT_LOOP(end_sphere, end, evaluateTubeLightWholeAt, tubeLightStraddleCorrection,
+                HV_SPLIT_COAT_FIRST, HV_SPLIT_COAT_SECOND)
+#elif HV_HAS_TUBE_LIGHTS && HV_LIGHT_PROBE != 2
   if (end_sphere < end) {
     uint i = end_sphere;
     do {

@@ -197,9 +197,11 @@ TEST(LtcLights, InsideTheSphereTheWholeHemisphereEmits) {
 // (exact for Lambert), including spheres crossing the horizon for the diffuse. Tolerance 2e-3
 // relative + 1e-6. The difference is first order in the length (a sphere of r 0.05 crossing the
 // horizon at roughness 0.3: -2.6% at length 1e-3, -0.26% at 1e-4, -0.026% at 1e-5). The specular
-// of a sphere crossing the horizon cuts off its part below the surface in world space
-// (ltcSphereIntegralAbove) and a capsule's does not yet: there only the diffuse is compared
-// (docs/lights.md, "Straddling spheres").
+// of a sphere or capsule crossing the horizon is shaded over its part above the surface, but not
+// alike: the sphere's smaller segment is clipped at the cosine horizon exactly
+// (ltcSphereIntegralAbove) and its correction spread over the part's height, the capsule's caps
+// clipped as any region and its correction spread over the cross-section: there only the diffuse
+// is compared (docs/lights.md, "Straddling spheres").
 TEST(LtcLights, LengthToZeroGivesTheSphere) {
   for (float rough : {0.05f, 0.3f, 1.0f}) {
     const specular::Surface ss =
