@@ -429,15 +429,21 @@ vec3 ltcCapsuleFormFactor(Ltc l, vec3 p1, vec3 p2, float r) {
                             p1, p2, r);
 }
 
+// Whether the capsule of segment p1 -> p2 (relative to the shading point) and radius r holds the
+// shading point: the segment's closest point within r.
+bool capsuleHoldsOrigin(vec3 p1, vec3 p2, float r) {
+  vec3 a = p2 - p1;
+  float u = clamp(-dot(p1, a) / max(dot(a, a), 1e-30f), 0.0f, 1.0f);
+  vec3 q = p1 + a * u;
+  return dot(q, q) <= r * r;
+}
+
 // Whether the capsule (p1, p2, r relative to the shading point) crosses the plane of the surface
 // of normal N, the shading point outside it: ltcCapsuleAboveFormFactor's case.
 bool ltcCapsuleStraddles(vec3 N, vec3 p1, vec3 p2, float r) {
   float h1 = dot(N, p1);
   float h2 = dot(N, p2);
-  vec3 a = p2 - p1;
-  float u = clamp(-dot(p1, a) / max(dot(a, a), 1e-30f), 0.0f, 1.0f);
-  vec3 q = p1 + a * u;  // the axis's point closest to the shading point
-  return min(h1, h2) < r && max(h1, h2) > -r && dot(q, q) > r * r;
+  return min(h1, h2) < r && max(h1, h2) > -r && !capsuleHoldsOrigin(p1, p2, r);
 }
 
 // The part of the capsule above the surface of normal N (a capsule straddling it, as the sphere's
@@ -477,8 +483,13 @@ float ltcCapsuleIntegralAbove(Ltc l, vec3 N, vec3 p1, vec3 p2, float r) {
 }
 
 // Integral of the LTC over the capsule, clipped at the horizon in cosine space.
+// Inside the capsule the whole hemisphere emits: 1, the normalized LTC's integral over it (as the
+// sphere's, ltcSphereIntegral; a select). The facing rectangle seen from inside is bounded at
+// 1e4 r wide (capsuleHalfWidth), nearly antipodal edges whose form factor float does not hold:
+// the shading there read 1-2% of the hemisphere's (LtcLights.InsideTheCapsuleTheWholeHemisphereEmits).
 float ltcCapsuleIntegral(Ltc l, vec3 p1, vec3 p2, float r) {
-  return horizonClippedIntegral(ltcCapsuleFormFactor(l, p1, p2, r));
+  float outside = horizonClippedIntegral(ltcCapsuleFormFactor(l, p1, p2, r));
+  return mix(outside, 1.0f, capsuleHoldsOrigin(p1, p2, r));
 }
 
 // The same with the identity LTC about N (the clamped cosine: irradiance / pi), in world space:
@@ -508,7 +519,8 @@ float capsuleCosineIntegral(vec3 N, vec3 p1, vec3 p2, float r) {
   float f2n = dot(F, F);
   float inv_f = inversesqrt(max(f2n, 1e-30f));
   float f = min(f2n * inv_f, 1.0f);
-  return f * sphereHorizonFactor(dot(F, N) * inv_f, f);
+  // Inside the capsule: the whole hemisphere (as ltcCapsuleIntegral).
+  return mix(f * sphereHorizonFactor(dot(F, N) * inv_f, f), 1.0f, capsuleHoldsOrigin(p1, p2, r));
 }
 
 #endif

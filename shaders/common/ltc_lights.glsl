@@ -284,7 +284,10 @@ vec3 ltcTubeSpecularOver(Surface s, ShadingPoint sp, vec3 Lc, vec3 Ld, vec3 L0, 
     c = ltcBandCentroid(s.N, c, sqrt(sin2 / max(1.0f - sin2, 1e-8f)), share, half_band);
     omega *= share;
   }
-  specular = specular * ltcCorrection(s, sp, c, (0.57735027f * 0.5f * inv_lc) * Ld, sin2, omega, I);
+  // Inside the capsule the integral is exact (ltcCapsuleIntegral): no correction there.
+  specular = specular * mix(ltcCorrection(s, sp, c, (0.57735027f * 0.5f * inv_lc) * Ld, sin2,
+                                          omega, I),
+                            vec3(1.0f), bvec3(capsuleHoldsOrigin(L0, L1, r_eff)));
 #endif
   return specular;
 }

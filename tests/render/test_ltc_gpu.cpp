@@ -115,8 +115,10 @@ TEST(LtcGpu, MatchesSharedCpuCode) {
 // surface is cut off in world space (sphereLtcSpecular, ltcTubeSpecular; docs/lights.md,
 // "Straddling spheres"). The tiled light pass takes the cut in a loop of its own after the whole
 // light (light_shade.comp, HV_SPLIT_LOOP), brute force per pair; both give the shared code's
-// radiance (the whole light plus what the cut changes), tolerance as above. The cut must matter
-// here: the whole light alone is off by more than 10% at some pixels.
+// radiance (the whole light plus what the cut changes), tolerance as above; so do the pixels
+// inside the light, under its axis, where the whole hemisphere emits (ltcCapsuleIntegral: the
+// GPU and the CPU read up to 23% apart there before that rule). The cut must matter here: the
+// whole light alone is off by more than 10% at some pixels.
 TEST(LtcGpu, StraddlingLightsCutAsTheSharedCpuCode) {
   testContext();
   for (LightType type : {LightType::Sphere, LightType::Tube}) {
@@ -162,14 +164,6 @@ TEST(LtcGpu, StraddlingLightsCutAsTheSharedCpuCode) {
           const ltc::Surface surf = ltc::makeSurface(g.normal[i], g.base_color[i], g.metallic[i],
                                                      g.roughness[i], g.cavity[i]);
           const ltc::ShadingPoint sp = ltc::makeShadingPoint(surf, P, V);
-          // Inside the light (the floor under its axis) no cut applies: the whole hemisphere
-          // emits. There a capsule's facing rectangle is up to 1e4 r wide and the GPU and the
-          // CPU differ by up to 23% (not the cut's code: the pixels take the whole light in both).
-          const glm::vec3 Ld = glm::normalize(l.axis) * l.length;
-          const glm::vec3 L0 = l.position - P - 0.5f * Ld;
-          const float tp =
-              glm::clamp(-glm::dot(L0, Ld) / std::max(glm::dot(Ld, Ld), 1e-30f), 0.0f, 1.0f);
-          if (glm::length(L0 + tp * Ld) <= 1.01f * l.radius) continue;
           bool straddles = false;
           glm::vec3 cpu, whole;
           if (type == LightType::Sphere) {
@@ -188,8 +182,9 @@ TEST(LtcGpu, StraddlingLightsCutAsTheSharedCpuCode) {
           ++checked;
         }
       }
-      EXPECT_GT(checked, 150) << what;
+      EXPECT_GT(checked, 200) << what;
       EXPECT_GT(straddling, checked / 2) << what << ": the light should straddle most horizons";
+      EXPECT_LT(straddling, checked) << what << ": the floor under the light's axis lies inside it";
       EXPECT_GT(cut_matters, 20) << what << ": the cut should change the radiance by over 10%";
       std::printf("%s: %d pixels, %d straddling, %d changed by the cut over 10%%\n", what.c_str(),
                   checked, straddling, cut_matters);

@@ -192,6 +192,51 @@ TEST(LtcLights, InsideTheSphereTheWholeHemisphereEmits) {
   }
 }
 
+// Inside a capsule light, likewise: the whole hemisphere emits at the capsule's radiance
+// L_e = I / (pi r (r + len / 2)) (ltcCapsuleEmit), so the `ltc` specular is ltc_spec L_e and the
+// `ltc` diffuse the Lambert surface's diffuse_color L_e (irradiance pi L_e), with no light
+// correction. The facing rectangle of a capsule seen from inside is bounded at 1e4 r wide
+// (capsuleHalfWidth), whose form factor float holds poorly: the GPU and the CPU read up to 23%
+// apart there before the rule (LtcGpu.StraddlingLightsCutAsTheSharedCpuCode). Tolerance 1e-5
+// relative.
+TEST(LtcLights, InsideTheCapsuleTheWholeHemisphereEmits) {
+  const float r = 0.5f, len = 2.0f;
+  for (float rough : {0.05f, 0.3f, 0.7f, 1.0f}) {
+    const specular::Surface s =
+        specular::makeSurface({0, 0, 1}, glm::vec3(0.8f, 0.6f, 0.4f), 1.0f, rough, 1.0f);
+    const diffuse::Surface sd =
+        diffuse::makeSurface({0, 0, 1}, glm::vec3(0.8f, 0.6f, 0.4f), 0.0f, rough, 1.0f);
+    for (glm::vec3 axis : {glm::vec3(1, 0, 0), glm::normalize(glm::vec3(1, 1, 0.3f))}) {
+      // The axis over, through and under the shading point; the shading point in an end cap,
+      // 0.2 beyond the segment's end.
+      for (glm::vec3 center : {glm::vec3(0.0f, 0.0f, 0.3f), glm::vec3(0.3f, -0.2f, 0.1f),
+                               glm::vec3(0.0f, 0.1f, -0.4f), axis * (0.5f * len + 0.2f)}) {
+        const glm::vec3 q =
+            center - axis * glm::clamp(glm::dot(center, axis), -0.5f * len, 0.5f * len);
+        ASSERT_LT(glm::length(q), r) << "the shading point should lie inside the capsule";
+        const hv::Light light = lightAt(hv::LightType::Tube, center, r, len, axis);
+        const auto ls = toVariant<specular::GpuLight>(light);
+        const auto ld = toVariant<diffuse::GpuLight>(light);
+        const float emit = 2.0f / (kPi * r * (r + 0.5f * len));  // intensity 2 (lightAt)
+        for (float view_el : {5.0f, 40.0f, 90.0f}) {
+          const glm::vec3 V = dirAt(view_el, 30.0f);
+          const glm::vec3 got = specular::evaluateTubeLight(ls, s, glm::vec3(0.0f), V);
+          const glm::vec3 want = specular::makeShadingPoint(s, glm::vec3(0.0f), V).ltc_spec * emit;
+          const glm::vec3 got_d = diffuse::evaluateTubeLight(ld, sd, glm::vec3(0.0f), V);
+          const glm::vec3 want_d = sd.diffuse_color * emit;
+          for (int k = 0; k < 3; ++k) {
+            EXPECT_NEAR(got[k], want[k], 1e-5f * want[k])
+                << "specular, roughness " << rough << " center " << center.x << "," << center.y
+                << "," << center.z << " view elevation " << view_el;
+            EXPECT_NEAR(got_d[k], want_d[k], 1e-5f * want_d[k])
+                << "diffuse, center " << center.x << "," << center.y << "," << center.z;
+          }
+        }
+      }
+    }
+  }
+}
+
 // length -> 0 gives the sphere: the LTC capsule of length 1e-5 against the LTC sphere of the same
 // radius (specular), and its identity-LTC diffuse against the horizon-correct sphere diffuse
 // (exact for Lambert), including spheres crossing the horizon for the diffuse. Tolerance 2e-3

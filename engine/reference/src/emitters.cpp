@@ -126,12 +126,56 @@ LightSample sampleDirectional(const Light& light, glm::vec2 u) {
   return ls;
 }
 
+// Inside a capsule light (the closest point of its segment within its radius) every direction
+// sees the emitter, as inside a sphere: the shading point is taken as on its surface (L_e at
+// the window distance; docs/lights.md). The engine's `ltc` modes shade it so
+// (ltcCapsuleIntegral); before, a ray from inside met only back faces and the point was dark.
+bool insideCapsule(const Light& light, const glm::vec3& P) {
+  return light.radius > 0.0f && windowDistance2(light, P) <= light.radius * light.radius;
+}
+
+// Where the ray P + t L (L unit) from inside the capsule leaves it: the capsule is convex and
+// the distance from the ray's point to the segment convex in t, so the exit is the one root of
+// distance = r beyond P, found by bisection in double (for visibility rays, whose occluders
+// inside the light count).
+float capsuleExitDistance(const Light& light, const glm::vec3& P, const glm::vec3& L) {
+  const double len = std::max(light.length, 0.0f), r = light.radius;
+  const glm::dvec3 axis = glm::normalize(glm::dvec3(light.axis));
+  const glm::dvec3 pa = glm::dvec3(light.position) - axis * (0.5 * len);
+  auto dist = [&](double t) {
+    const glm::dvec3 x = glm::dvec3(P) + glm::dvec3(L) * t;
+    const double s = std::clamp(glm::dot(x - pa, axis), 0.0, len);
+    return glm::length(x - (pa + axis * s));
+  };
+  double lo = 0.0, hi = len + 2.0 * r;  // the capsule's diameter bounds the chord
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (dist(mid) <= r ? lo : hi) = mid;
+  }
+  return float(lo);
+}
+
+// A uniform direction of the whole sphere (inside an emitter), pdf 1 / (4 pi).
+glm::vec3 uniformSphereDirection(glm::vec2 u) {
+  const float z = 1.0f - 2.0f * u.x;
+  const float s = std::sqrt(std::max(0.0f, 1.0f - z * z));
+  const float phi = 2.0f * kPi * u.y;
+  return {s * std::cos(phi), s * std::sin(phi), z};
+}
+
 LightSample sampleTube(const Light& light, const RenderSettings& settings, const glm::vec3& P,
                        glm::vec2 u) {
   LightSample ls;
   const float r = light.radius;
   const float len = std::max(light.length, 0.0f);
   if (r <= 0.0f) return ls;
+  if (insideCapsule(light, P)) {
+    ls.L = uniformSphereDirection(u);
+    ls.pdf = 1.0f / (4.0f * kPi);
+    ls.radiance = emitterRadiance(light, settings, windowDistance2(light, P));
+    ls.distance = capsuleExitDistance(light, P, ls.L);
+    return ls;
+  }
   const glm::vec3 axis = glm::normalize(light.axis);
   const float a_cyl = 2.0f * kPi * r * len;
   const float a_caps = 4.0f * kPi * r * r;
@@ -185,6 +229,7 @@ float capsulePdf(const Light& light, const glm::vec3& Pf, const glm::vec3& Lf) {
   const double r = light.radius;
   const double len = std::max(light.length, 0.0f);
   if (r <= 0.0) return 0.0f;
+  if (insideCapsule(light, Pf)) return 1.0f / (4.0f * kPi);  // sampleTube's uniform directions
   const glm::dvec3 P(Pf), L(glm::normalize(glm::dvec3(Lf)));
   const glm::dvec3 axis = glm::normalize(glm::dvec3(light.axis));
   const glm::dvec3 A = glm::dvec3(light.position) - axis * (0.5 * len);
@@ -321,6 +366,12 @@ LightSample evalLight(const Light& light, const RenderSettings& settings, const 
     return ls;
   }
   if (light.type != LightType::Tube) return ls;
+  if (insideCapsule(light, P)) {  // every direction (sampleTube)
+    ls.pdf = 1.0f / (4.0f * kPi);
+    ls.radiance = emitterRadiance(light, settings, windowDistance2(light, P));
+    ls.distance = capsuleExitDistance(light, P, L);
+    return ls;
+  }
   // Front hit of the ray P + t L on the capsule (segment pa-pb, radius r): the cylinder's body,
   // else the cap sphere on the side the infinite cylinder's hit falls (Quilez's capsule test), in
   // double: the quadratic cancels badly near the silhouette, where cos_e is small.
