@@ -143,12 +143,10 @@ TEST(LtcGpu, StraddlingLightsCutAsTheSharedCpuCode) {
       s.settings.sphere_specular = SphereSpecular::Ltc;
       s.settings.tube_specular = TubeSpecular::Ltc;
       s.settings.culling = culling;
-      render::Renderer r;
-      r.setScene(s);
       const int w = 64, h = 64;
-      r.render(w, h);
-      const auto g = r.readGBuffer();
-      const auto hdr = r.readHdr();
+      const RenderedFrame f = renderFrame(s, w, h);
+      const auto& g = f.g;
+      const auto& hdr = f.hdr;
       const auto frame = render::makeFrameBlock(s, w, h);
       const ltc::GpuLight gl = packLight(l);
       const std::string what =
