@@ -62,3 +62,27 @@ inline hv::Scene planeScene(const hv::Material& m, float size = 10.0f) {
   s.environment.color = glm::vec3(0.0f);
   return s;
 }
+
+// planeScene of a rough grey metal (roughness 0.35) seen low over the plane (grazing views), and
+// a light centred 0.05 m over it with radius 0.3 (a capsule of length 0.6 along the plane): it
+// straddles the horizon of every floor pixel outside it (the horizon-cut tests).
+inline hv::Scene straddlingLightScene(hv::LightType type) {
+  hv::Material m;
+  m.base_color = {0.9f, 0.9f, 0.9f};
+  m.metallic = 1.0f;
+  m.roughness = 0.35f;
+  hv::Scene s = planeScene(m);
+  s.camera.position = {0.0f, 0.5f, 1.6f};
+  s.camera.target = {0.0f, 0.0f, -1.0f};
+  s.camera.up = {0.0f, 1.0f, 0.0f};
+  hv::Light l;
+  l.type = type;
+  l.position = {0.1f, 0.05f, -0.6f};
+  l.intensity = 3.0f;
+  l.radius = 0.3f;
+  l.length = type == hv::LightType::Tube ? 0.6f : 0.0f;
+  l.axis = glm::normalize(glm::vec3(1, 0, 0.5f));  // parallel to the plane
+  l.range = 8.0f;
+  s.lights = {l};
+  return s;
+}

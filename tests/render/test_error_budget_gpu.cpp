@@ -144,21 +144,8 @@ TEST(ErrorBudgetGpu, MatchesSharedCpuCode) {
 TEST(ErrorBudgetGpu, StraddlingSphereTakesTheCutLtc) {
   testContext();
   for (Culling culling : {Culling::Tiled, Culling::BruteForce}) {
-    Material m;
-    m.base_color = {0.9f, 0.9f, 0.9f};
-    m.metallic = 1.0f;
-    m.roughness = 0.35f;
-    Scene s = planeScene(m);
-    s.camera.position = {0.0f, 0.5f, 1.6f};
-    s.camera.target = {0.0f, 0.0f, -1.0f};
-    s.camera.up = {0.0f, 1.0f, 0.0f};
-    Light l;
-    l.type = LightType::Sphere;
-    l.position = {0.1f, 0.05f, -0.6f};  // centre 0.05 m over the plane, radius 0.3
-    l.intensity = 3.0f;
-    l.radius = 0.3f;
-    l.range = 8.0f;
-    s.lights = {l};
+    Scene s = straddlingLightScene(LightType::Sphere);
+    const Light l = s.lights[0];
     s.settings.max_error = 0.05f;
     s.settings.culling = culling;
     budget::g_max_error = 0.05f;

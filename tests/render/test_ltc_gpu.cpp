@@ -123,23 +123,8 @@ TEST(LtcGpu, StraddlingLightsCutAsTheSharedCpuCode) {
   testContext();
   for (LightType type : {LightType::Sphere, LightType::Tube}) {
     for (Culling culling : {Culling::Tiled, Culling::BruteForce}) {
-      Material m;
-      m.base_color = {0.9f, 0.9f, 0.9f};
-      m.metallic = 1.0f;
-      m.roughness = 0.35f;
-      Scene s = planeScene(m);
-      s.camera.position = {0.0f, 0.5f, 1.6f};  // low over the plane: grazing views
-      s.camera.target = {0.0f, 0.0f, -1.0f};
-      s.camera.up = {0.0f, 1.0f, 0.0f};
-      Light l;
-      l.type = type;
-      l.position = {0.1f, 0.05f, -0.6f};  // centre 0.05 m over the plane, radius 0.3: straddles
-      l.intensity = 3.0f;
-      l.radius = 0.3f;
-      l.length = type == LightType::Tube ? 0.6f : 0.0f;
-      l.axis = glm::normalize(glm::vec3(1, 0, 0.5f));  // parallel to the plane
-      l.range = 8.0f;
-      s.lights.push_back(l);
+      Scene s = straddlingLightScene(type);
+      const Light l = s.lights[0];
       s.settings.sphere_specular = SphereSpecular::Ltc;
       s.settings.tube_specular = TubeSpecular::Ltc;
       s.settings.culling = culling;
