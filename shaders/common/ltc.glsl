@@ -292,10 +292,12 @@ vec3 ltcClosingEdge(vec3 x_down, vec3 x_up) {
 
 // The part above the surface of normal N of the sphere (c, r as above; straddling it, wholly
 // above or wholly below: the segment is then the whole disk or nothing): its vector form factor
-// in the cosine space of l, oriented as the whole cone's; and, where the part above is the
-// smaller segment (the center at or below the surface), its clamped cosine's integral exactly:
-// the polygon clipped at the cosine space's horizon (z = 0), in I_exact (-1 elsewhere).
-vec3 ltcSphereAboveFormFactor(Ltc l, vec3 N, vec3 c, float r, HV_OUT(float) I_exact) {
+// in the cosine space of l, oriented as the whole cone's (F_cone: ltcSphereFormFactor(l, c, r),
+// which the callers also need); and, where the part above is the smaller segment (the center at
+// or below the surface), its clamped cosine's integral exactly: the polygon clipped at the
+// cosine space's horizon (z = 0), in I_exact (-1 elsewhere).
+vec3 ltcSphereAboveFormFactor(Ltc l, vec3 N, vec3 c, float r, vec3 F_cone,
+                              HV_OUT(float) I_exact) {
   float d2 = max(dot(c, c), 1e-30f);
   vec3 cn = c * inversesqrt(d2);
   float t = r * inversesqrt(max(d2 - r * r, 1e-30f));  // tan(sigma): the disk's radius
@@ -336,15 +338,15 @@ vec3 ltcSphereAboveFormFactor(Ltc l, vec3 N, vec3 c, float r, HV_OUT(float) I_ex
   Fc += ltcClosingEdge(x_down, x_up);
   float scale = (0.5f * INV_PI) * ltcSegmentAreaRatio(phi);
   I_exact = above_smaller ? max(Fc.z * scale, 0.0f) : -1.0f;
-  return above_smaller ? F * scale : ltcSphereFormFactor(l, c, r) - F * scale;
+  return above_smaller ? F * scale : F_cone - F * scale;
 }
 
 // ltcSphereIntegral for a sphere that straddles the horizon of N (ltcSphereStraddles): the
 // integral over its part above the surface (ltcSphereAboveFormFactor), exact where that part is
 // the smaller segment, else clipped as any region (horizonClippedIntegral).
-float ltcSphereIntegralAbove(Ltc l, vec3 N, vec3 c, float r) {
+float ltcSphereIntegralAbove(Ltc l, vec3 N, vec3 c, float r, vec3 F_cone) {
   float I_exact;
-  vec3 F = ltcSphereAboveFormFactor(l, N, c, r, I_exact);
+  vec3 F = ltcSphereAboveFormFactor(l, N, c, r, F_cone, I_exact);
   return I_exact >= 0.0f ? I_exact : horizonClippedIntegral(F);
 }
 
@@ -471,8 +473,8 @@ vec3 ltcCapsuleAboveFormFactor(Ltc l, vec3 N, vec3 p1, vec3 p2, float r) {
            ltcClippedEdge(c2, c3, h2, h3, x_down, x_up) + ltcClippedEdge(c3, c0, h3, h0, x_down, x_up);
   F = (F + ltcClosingEdge(x_down, x_up)) * (0.5f * INV_PI);
   float unused;
-  vec3 F1 = ltcSphereAboveFormFactor(l, N, p1, r, unused);
-  vec3 F2 = ltcSphereAboveFormFactor(l, N, p2, r, unused);
+  vec3 F1 = ltcSphereAboveFormFactor(l, N, p1, r, ltcSphereFormFactor(l, p1, r), unused);
+  vec3 F2 = ltcSphereAboveFormFactor(l, N, p2, r, ltcSphereFormFactor(l, p2, r), unused);
   return ltcCapsuleWithCaps(l, F, F1, F2, p1, p2, r);
 }
 

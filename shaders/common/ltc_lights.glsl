@@ -191,7 +191,7 @@ vec3 ltcSphereSpecularAbove(Surface s, ShadingPoint sp, vec3 Lc, vec3 L, float d
                             float falloff) {
   float d2c = max(d2, max(radius * radius, HV_MIN_LIGHT_DIST2));
   float r_eff = max(radius, 1e-4f * sqrt(d2c));
-  float I = ltcSphereIntegralAbove(sp.ltc, s.N, Lc, r_eff);
+  float I = ltcSphereIntegralAbove(sp.ltc, s.N, Lc, r_eff, ltcSphereFormFactor(sp.ltc, Lc, r_eff));
   vec3 specular = sp.ltc_spec * (I * falloff * d2c / (PI * r_eff * r_eff));
 #if HV_LTC_LIGHT_CORRECTION
   specular = specular * ltcBandCorrection(s, sp, L, r_eff * r_eff / d2c, I);
@@ -205,8 +205,9 @@ vec3 ltcSphereSpecularCut(Surface s, ShadingPoint sp, vec3 Lc, vec3 L, float d2,
                           float falloff) {
   float d2c = max(d2, max(radius * radius, HV_MIN_LIGHT_DIST2));
   float r_eff = max(radius, 1e-4f * sqrt(d2c));
-  float I_whole = horizonClippedIntegral(ltcSphereFormFactor(sp.ltc, Lc, r_eff));
-  float I_above = ltcSphereIntegralAbove(sp.ltc, s.N, Lc, r_eff);
+  vec3 F = ltcSphereFormFactor(sp.ltc, Lc, r_eff);
+  float I_whole = horizonClippedIntegral(F);
+  float I_above = ltcSphereIntegralAbove(sp.ltc, s.N, Lc, r_eff, F);
   vec3 scale = sp.ltc_spec * (falloff * d2c / (PI * r_eff * r_eff));
 #if HV_LTC_LIGHT_CORRECTION
   float sin2 = r_eff * r_eff / d2c;
