@@ -65,6 +65,10 @@
 #define HV_IBL_DIRECTION_DOMINANT 0
 #define HV_IBL_DIRECTION_REFLECT 1
 
+// ibl_specular (HV_IBL_SPECULAR): split_sum, sampled
+#define HV_IBL_SPECULAR_SPLIT_SUM 0
+#define HV_IBL_SPECULAR_SAMPLED 1
+
 // ao (HV_AO): none, gtao
 #define HV_AO_NONE 0
 #define HV_AO_GTAO 1

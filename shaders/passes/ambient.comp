@@ -3,6 +3,8 @@
 // radiance cube and the environment BRDF (table, or Karis's analytic approximation), diffuse from
 // SH9 (or an irradiance cube), Cavity on ambient diffuse (and, as an option, through Lagarde &
 // de Rousiers 2014's specular occlusion). Background pixels show the environment.
+// HV_IBL_SPECULAR (settings.ibl_specular): split_sum reads one prefiltered texel per lobe; sampled
+// averages the cube over samples of the pixel's own lobe (ibl.glsl, sampledAmbientSpecular).
 // The bake already applied the environment's intensity and rotation: the cubes are world-space.
 #include "../common/frame.glsl"
 #include "../common/gbuffer.glsl"
@@ -226,13 +228,15 @@ void main() {
     Surface open_s = s;
     open_s.cavity = 1.0;
     vec3 diffuse = ambientDiffuse(open_s, E) * diffuse_vis;
-    vec3 specular = ambientSpecular(s, radiance, ab, NoV, HV_ENERGY_COMPENSATION != 0, false) *
+    vec3 specular = ambientSpecularFromCube(t_radiance, s, V, radiance, ab, NoV, u_env.x,
+                                            HV_ENERGY_COMPENSATION != 0, false) *
                     specular_vis;
 #define HV_COAT_OCCLUSION(cs, NoVc, Rc) coatSpecularOcclusion(cs, NoVc, Rc, ao, vis)
 #else
     vec3 diffuse = ambientDiffuse(s, E);
-    vec3 specular = ambientSpecular(s, radiance, ab, NoV, HV_ENERGY_COMPENSATION != 0,
-                                    HV_SPECULAR_OCCLUSION != 0);
+    vec3 specular = ambientSpecularFromCube(t_radiance, s, V, radiance, ab, NoV, u_env.x,
+                                            HV_ENERGY_COMPENSATION != 0,
+                                            HV_SPECULAR_OCCLUSION != 0);
 #define HV_COAT_OCCLUSION(cs, NoVc, Rc) 1.0
 #endif
 #if HV_HAS_CLEAR_COAT
@@ -254,8 +258,9 @@ void main() {
       float scale = coatBaseScale(ct.z, Nc, V);
       diffuse *= scale;
       specular = specular * scale +
-                 ambientSpecular(cs, coat_radiance, abc, NoVc, HV_ENERGY_COMPENSATION != 0,
-                                 HV_AO == 0 && HV_SPECULAR_OCCLUSION != 0) *
+                 ambientSpecularFromCube(t_radiance, cs, V, coat_radiance, abc, NoVc, u_env.x,
+                                         HV_ENERGY_COMPENSATION != 0,
+                                         HV_AO == 0 && HV_SPECULAR_OCCLUSION != 0) *
                      (ct.z * HV_COAT_OCCLUSION(cs, NoVc, Rc));
     }
 #endif

@@ -58,8 +58,9 @@ layout(std140, binding = HV_UBO_ENVIRONMENT) uniform EnvironmentBlock {
 #undef HV_BLOCK_ARRAY
 #undef HV_BLOCK_MEMBER
 
-// The split-sum specular of surface s seen from V (ambient.comp's: along the prefiltered
-// direction, with the environment BRDF, energy compensation and the cavity's specular occlusion).
+// The ambient specular of surface s seen from V (ambient.comp's: along the prefiltered direction,
+// or sampled over the lobe (settings.ibl_specular), with the environment BRDF, energy compensation
+// and the cavity's specular occlusion).
 vec3 ambientSpecularOf(Surface s, vec3 V) {
   float NoV = clamp(dot(s.N, V), 1e-4, 1.0);
   vec3 R = reflect(-V, s.N);
@@ -70,8 +71,8 @@ vec3 ambientSpecularOf(Surface s, vec3 V) {
 #else
   vec2 ab = texture(t_env_brdf, vec2(NoV, s.roughness)).rg;
 #endif
-  return ambientSpecular(s, radiance, ab, NoV, HV_ENERGY_COMPENSATION != 0,
-                         HV_SPECULAR_OCCLUSION != 0);
+  return ambientSpecularFromCube(t_radiance, s, V, radiance, ab, NoV, u_env.x,
+                                 HV_ENERGY_COMPENSATION != 0, HV_SPECULAR_OCCLUSION != 0);
 }
 
 // Ambient light of surface s seen from V: ambient.comp's surface path (split-sum specular along

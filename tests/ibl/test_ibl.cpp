@@ -180,6 +180,112 @@ TEST(IblMath, AmbientTermsCombineAsTheirParts) {
                    g::specularIBL(prefiltered, metal.f0, ab) * ec * so));
 }
 
+// The lobe samples of ibl_specular: sampled (ibl.glsl, iblLobeSample). Averaged over many
+// samples, each sample's weight over G1(V) is the visible-normal estimator of Karis 2013 eq. 8's
+// two integrals (Heitz 2018: f NoL / pdf = F G2 / G1(V)), so the sums match the env BRDF
+// integrated with the exact height-correlated V; every direction is above the horizon where it
+// has weight, the pattern is symmetric about the plane of incidence, and the mips widen with the
+// roughness and narrow as the samples grow in number.
+TEST(IblMath, LobeSamplesIntegrateTheEnvBrdf) {
+  hv::BrdfConfig exact;
+  exact.v = hv::VisibilityTerm::SmithGGXCorrelated;
+  const glm::vec3 N = glm::normalize(glm::vec3(0.3f, 0.2f, 0.9f));
+  for (float r : {0.25f, 0.5f, 0.75f, 1.0f})
+    for (float nov : {0.05f, 0.2f, 0.5f, 0.95f}) {
+      const float alpha = r * r;
+      // V at N.V = nov, in some plane through N.
+      glm::vec3 T, B;
+      g::tangentFrame(N, T, B);
+      const glm::vec3 V = nov * N + std::sqrt(1.0f - nov * nov) * glm::normalize(T + 0.5f * B);
+      g::iblLobeFrame(N, V, nov, T, B);
+      EXPECT_NEAR(glm::dot(T, N), 0.0f, 1e-5f);
+      const uint32_t n = 4096;
+      const float g1 = 2.0f * nov / (nov + g::smithGgxRoot(alpha, nov));  // Smith G1(V)
+      double a = 0.0, b = 0.0;
+      for (uint32_t i = 0; i < n; ++i) {
+        glm::vec2 w;
+        const glm::vec4 l = g::iblLobeSample(i, n, N, T, B, nov, alpha, 256.0f, 5.0f, w);
+        EXPECT_NEAR(glm::length(glm::vec3(l)), 1.0f, 1e-4f);
+        if (w.x > 0.0f || w.y > 0.0f) {
+          EXPECT_GT(glm::dot(glm::vec3(l), N), 0.0f);
+        }
+        a += w.x / g1;
+        b += w.y / g1;
+      }
+      const glm::vec2 ref = hv::integrateEnvBrdfAt(nov, r, 8192, exact);
+      EXPECT_NEAR(float(a / n), ref.x, 0.01f + 0.01f * ref.x)
+          << "roughness " << r << " NoV " << nov;
+      EXPECT_NEAR(float(b / n), ref.y, 0.005f + 0.01f * ref.y)
+          << "roughness " << r << " NoV " << nov;
+    }
+  // The 16-sample pattern at a grazing view: mirror pairs about the plane of incidence (T, N).
+  const glm::vec3 Nz(0.0f, 0.0f, 1.0f), V = glm::normalize(glm::vec3(0.95f, 0.0f, 0.1f));
+  glm::vec3 T, B;
+  g::iblLobeFrame(Nz, V, V.z, T, B);
+  std::vector<glm::vec4> pattern;
+  auto lodMean = [&](float alpha, uint32_t n) {
+    double sum = 0.0;
+    for (uint32_t i = 0; i < n; ++i) {
+      glm::vec2 w;
+      sum += g::iblLobeSample(i, n, Nz, T, B, V.z, alpha, 256.0f, 5.0f, w).w;
+    }
+    return sum / n;
+  };
+  for (uint32_t i = 0; i < g::kIblLobeSamples; ++i) {
+    glm::vec2 w;
+    pattern.push_back(
+        g::iblLobeSample(i, g::kIblLobeSamples, Nz, T, B, V.z, 0.5f, 256.0f, 5.0f, w));
+    EXPECT_GE(pattern.back().w, 0.0f);
+    EXPECT_LE(pattern.back().w, 5.0f);
+  }
+  for (const glm::vec4& p : pattern) {
+    bool mirrored = false;
+    for (const glm::vec4& q : pattern)
+      mirrored = mirrored || (std::abs(p.x - q.x) < 1e-4f && std::abs(p.y + q.y) < 1e-4f &&
+                              std::abs(p.z - q.z) < 1e-4f);
+    EXPECT_TRUE(mirrored) << p.x << " " << p.y << " " << p.z;
+  }
+  EXPECT_LT(lodMean(0.0625f, 16), lodMean(0.5625f, 16));
+  EXPECT_LT(lodMean(0.5625f, 64), lodMean(0.5625f, 16));
+}
+
+// Where the samples take over from the split sum: not at all face on (N.V >= 0.4) or for a narrow
+// lobe (roughness <= 0.25), wholly at grazing angles on rough surfaces, monotonic between.
+TEST(IblMath, SampledWeightOnlyAtGrazingAnglesOnRoughSurfaces) {
+  EXPECT_EQ(g::iblSampledWeight(0.4f, 1.0f), 0.0f);
+  EXPECT_EQ(g::iblSampledWeight(0.9f, 1.0f), 0.0f);
+  EXPECT_EQ(g::iblSampledWeight(0.01f, 0.25f), 0.0f);
+  EXPECT_EQ(g::iblSampledWeight(0.01f, 0.045f), 0.0f);
+  EXPECT_FLOAT_EQ(g::iblSampledWeight(0.2f, 0.45f), 1.0f);
+  EXPECT_FLOAT_EQ(g::iblSampledWeight(1e-4f, 1.0f), 1.0f);
+  float previous = 0.0f;
+  for (float nov = 0.4f; nov >= 0.0f; nov -= 0.01f) {
+    const float w = g::iblSampledWeight(nov, 0.7f);
+    EXPECT_GE(w, previous);
+    previous = w;
+  }
+}
+
+// The sampled specular's two averages: a uniform environment gives exactly the split sum
+// (f0 scale + bias) x L, and with no weight at all the split sum's own radiance is used.
+TEST(IblMath, SampledSpecularOfAUniformEnvironmentIsTheSplitSum) {
+  const glm::vec3 f0(0.9f, 0.6f, 0.3f), L(2.0f, 1.0f, 0.5f);
+  const glm::vec2 ab(0.45f, 0.08f);
+  g::IblLobeSum sum{glm::vec3(0.0f), glm::vec3(0.0f), 0.0f, 0.0f};
+  EXPECT_EQ(g::sampledSpecularIBL(sum, L, f0, ab), g::specularIBL(L, f0, ab));
+  for (float wa : {0.3f, 0.0f, 1.7f}) g::addLobeSample(sum, L, glm::vec2(wa, 0.1f * wa + 0.01f));
+  const glm::vec3 s = g::sampledSpecularIBL(sum, glm::vec3(100.0f), f0, ab);
+  const glm::vec3 split = g::specularIBL(L, f0, ab);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(s[c], split[c], 1e-6f);
+  // The F0 part and the Fresnel part average apart: radiance seen only by the bias's weights
+  // reaches only the bias's term.
+  g::IblLobeSum split_parts{glm::vec3(0.0f), glm::vec3(0.0f), 0.0f, 0.0f};
+  g::addLobeSample(split_parts, glm::vec3(1.0f), glm::vec2(1.0f, 0.0f));
+  g::addLobeSample(split_parts, glm::vec3(3.0f), glm::vec2(0.0f, 1.0f));
+  const glm::vec3 parts = g::sampledSpecularIBL(split_parts, glm::vec3(0.0f), f0, ab);
+  EXPECT_NEAR(parts.x, f0.x * ab.x * 1.0f + 3.0f * ab.y, 1e-6f);
+}
+
 TEST(Ibl, FurnaceUniform) {
   hv::Environment env;
   env.kind = hv::EnvironmentKind::Uniform;

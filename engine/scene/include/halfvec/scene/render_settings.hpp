@@ -111,6 +111,12 @@ HV_SETTING_ENUM(Irradiance, HV_IRRADIANCES);
   V(Dominant, "dominant", HV_IBL_DIRECTION_DOMINANT) \
   V(Reflect, "reflect", HV_IBL_DIRECTION_REFLECT)
 HV_SETTING_ENUM(IblDirection, HV_IBL_DIRECTIONS);
+// ibl_specular: the split sum's one prefiltered texel (Karis 2013 eq. 8), or the radiance
+// averaged over samples of the pixel's own lobe times the same env BRDF (docs/ibl.md).
+#define HV_IBL_SPECULARS(V)                           \
+  V(SplitSum, "split_sum", HV_IBL_SPECULAR_SPLIT_SUM) \
+  V(Sampled, "sampled", HV_IBL_SPECULAR_SAMPLED)
+HV_SETTING_ENUM(IblSpecular, HV_IBL_SPECULARS);
 // tone_map: Reinhard per channel (Reinhard et al. 2002, eq. 3), on luminance, none (clamp),
 // Khronos PBR Neutral, ACES (Narkowicz's fit).
 #define HV_TONE_MAPS(V)                                                     \
@@ -296,6 +302,11 @@ struct SettingInfo {
     (SettingInfo{.feature = SettingFeature::AmbientIbl, .define = "HV_IBL_DIRECTION",              \
                  .pass = SettingPass::Ambient, .trade = true, .trade_group = "environment",        \
                  .label = "IBL direction"}))                                                       \
+  /* split sum (Karis 2013 eq. 8) or the lobe's mean radiance from 16 samples; docs/ibl.md */       \
+  X(IblSpecular, ibl_specular, IblSpecular::SplitSum, "ibl_specular",                              \
+    (SettingInfo{.feature = SettingFeature::AmbientIbl, .define = "HV_IBL_SPECULAR",               \
+                 .pass = SettingPass::Ambient, .trade = true, .trade_group = "environment",        \
+                 .label = "IBL specular"}))                                                        \
   X(bool, specular_occlusion, false, "specular_occlusion",                                         \
     (SettingInfo{.feature = SettingFeature::AmbientIbl, .define = "HV_SPECULAR_OCCLUSION",         \
                  .pass = SettingPass::Ambient, .superseded_by = Supersede::Gtao,                   \
