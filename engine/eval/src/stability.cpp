@@ -82,6 +82,7 @@ struct Option {
   bool shadows = false;    // the light casts shadows (the spheres shadow each other)
   bool occlusion = false;  // the screen-space AO scene (addOcclusionScene)
   bool coat = false;       // every sphere under a full clear coat of the spheres' roughness
+  bool sky = false;        // lit by the procedural sky (a sun in the environment) as well
 };
 
 // What screen-space AO needs to meet its edge cases: an environment to occlude, a floor the
@@ -207,6 +208,15 @@ void addClearCoatOptions(std::vector<Option>& o) {
                false, true, true});
 }
 
+// The lobe-sampled ambient specular (ibl.glsl, sampledAmbientSpecular) under the procedural sky,
+// whose sun is the brightest texel any lookup meets: on the bare spheres (roughness 0 and 1, N.V
+// down to 0 at their outlines) and under a clear coat (the coat's lobe sampled too).
+void addIblOptions(std::vector<Option>& o) {
+  auto sampled = [](RenderSettings& s) { s.ibl_specular = IblSpecular::Sampled; };
+  o.push_back({"sky, ibl_specular=sampled", sampled, false, false, false, true});
+  o.push_back({"clear coat, sky, ibl_specular=sampled", sampled, false, false, true, true});
+}
+
 // The error budget (error_budget.glsl): a budget that takes the LTC almost everywhere, one that
 // splits pixels between the methods, and one that almost never does; on the clear coat's lobe
 // too (its own Surface, the same choice).
@@ -229,7 +239,8 @@ std::vector<Option> ciSubset(const std::vector<Option>& all) {
         x.name == "tube_specular=smallest_angle_eq18" || x.name == "d=beckmann" ||
         x.name == "diffuse=burley" || x.name == "ltc (all three)" ||
         x.name == "shadows, shadow_filter=pcss" || x.name == "ao=gtao, ao_specular=cone" ||
-        x.name == "clear coat, ltc (all three)" || x.name == "max_error=0.05") {
+        x.name == "clear coat, ltc (all three)" || x.name == "max_error=0.05" ||
+        x.name == "sky, ibl_specular=sampled") {
       keep.push_back(x);
     }
   }
@@ -243,6 +254,7 @@ std::vector<Option> options(bool small) {
   addShadowOptions(o);
   addOcclusionOptions(o);
   addClearCoatOptions(o);
+  addIblOptions(o);
   addBudgetOptions(o);
   return small ? ciSubset(o) : o;
 }
@@ -261,6 +273,11 @@ std::vector<StabilityRow> runStabilitySweep(
         for (float roughness : {0.0f, 1.0f}) {
           Scene scene = baseScene(roughness);
           if (opt.occlusion) addOcclusionScene(scene);
+          if (opt.sky) {
+            scene.environment.kind = EnvironmentKind::Sky;
+            scene.environment.cube_size = 32;
+            scene.environment.prefilter_samples = 16;
+          }
           if (opt.coat) {
             for (Material& m : scene.materials) {
               m.model = ShadingModel::ClearCoat;
