@@ -81,7 +81,7 @@ namespace {
 
 // Each feature of the scene that makes settings change code, with why its settings are not
 // varied where the scene lacks it (null where it has it).
-using Absences = std::array<std::pair<SettingFeature, const char*>, 5>;
+using Absences = std::array<std::pair<SettingFeature, const char*>, 6>;
 
 Absences absentFeatures(const Scene& scene) {
   bool sphere = false, tube = false, shadowed = false;
@@ -97,7 +97,9 @@ Absences absentFeatures(const Scene& scene) {
            {SettingFeature::SphereLights, sphere ? nullptr : "no sphere or directional lights"},
            {SettingFeature::TubeLights, tube ? nullptr : "no tube lights"},
            {SettingFeature::AmbientIbl, env ? nullptr : "no environment"},
-           {SettingFeature::ShadowedLights, shadowed ? nullptr : "no shadowed lights"}}};
+           {SettingFeature::ShadowedLights, shadowed ? nullptr : "no shadowed lights"},
+           {SettingFeature::SkyEnvironment,
+            scene.environment.kind == EnvironmentKind::Sky ? nullptr : "no procedural sky"}}};
 }
 
 // One row per other value of each approximation option of the settings table

@@ -225,7 +225,7 @@ fs::path cachePath(const Environment& env, const BakeOptions& opt, const BakeSiz
     const SkyParams& s = opt.sky;
     key << "|sky" << vecKey(s.zenith) << vecKey(s.horizon) << vecKey(s.sun_color)
         << vecKey(glm::vec3(s.sun_elevation_deg, s.sun_azimuth_deg, s.sun_angular_radius_deg))
-        << vecKey(glm::vec3(s.sun_to_sky, s.ground_albedo, 0.0f));
+        << vecKey(glm::vec3(s.sun_to_sky, s.ground_albedo, 0.0f)) << (s.sun_disk ? "" : "|nosun");
   }
   if (env.kind == EnvironmentKind::HdrFile) {
     std::error_code ec;

@@ -228,7 +228,7 @@ glm::vec3 skyRadiance(const SkyParams& s, glm::vec3 dir, float e_sky) {
   const glm::vec3 sun_dir = skySunDirection(s);
   const float cos_r = std::cos(glm::radians(s.sun_angular_radius_deg));
   const float sun_omega = 2.0f * kPi * (1.0f - cos_r);
-  const bool in_sun = glm::dot(dir, sun_dir) >= cos_r;
+  const bool in_sun = s.sun_disk && glm::dot(dir, sun_dir) >= cos_r;
   if (!in_sun && dir.y >= 0.0f) return dome(dir.y);
   const float e_sun = s.sun_to_sky * e_sky;  // normal illuminance of the sun
   const glm::vec3 sun_chroma = s.sun_color / std::max(luminance(s.sun_color), 1e-6f);
@@ -239,6 +239,29 @@ glm::vec3 skyRadiance(const SkyParams& s, glm::vec3 dir, float e_sky) {
   const glm::vec3 e = sky_mean / std::max(luminance(sky_mean), 1e-6f) * e_sky +
                       sun_chroma * e_sun * std::max(sun_dir.y, 0.0f);
   return s.ground_albedo / kPi * e;
+}
+
+glm::vec3 skySunWorldDirection(const Environment& env, const SkyParams& sky) {
+  const float a = glm::radians(env.rotation_deg), c = std::cos(a), sn = std::sin(a);
+  const glm::vec3 d = skySunDirection(sky);
+  return glm::normalize(glm::vec3(c * d.x + sn * d.z, d.y, -sn * d.x + c * d.z));
+}
+
+Light skySunLight(const Environment& env, const SkyParams& sky) {
+  const float cos_r = std::cos(glm::radians(sky.sun_angular_radius_deg));
+  const float sin_r = std::sin(glm::radians(sky.sun_angular_radius_deg));
+  // The disk's radiance as skyRadiance has it, and the illuminance a disk of that radiance and
+  // half-angle r gives at normal incidence: L pi sin^2 r (the projected solid angle).
+  const float e_sun = sky.sun_to_sky * skyDomeIlluminance(sky);
+  const float radiance = e_sun / (2.0f * kPi * (1.0f - cos_r));
+  Light l;
+  l.type = LightType::Directional;
+  l.direction = -skySunWorldDirection(env, sky);
+  l.color = sky.sun_color / std::max(luminance(sky.sun_color), 1e-6f);
+  l.intensity = radiance * kPi * sin_r * sin_r * env.intensity;
+  l.angular_diameter =
+      std::min(2.0f * glm::radians(sky.sun_angular_radius_deg), kMaxAngularDiameter);
+  return l;
 }
 
 glm::vec3 EnvSource::radiance(glm::vec3 dir) const {

@@ -68,14 +68,10 @@ Context makeContext(const Scene& scene, const GBufferReadback& gb, const Referen
       ctx.env_dist = std::make_unique<reference_detail::EnvDistribution>(ctx.env);
     }
     if (scene.environment.kind == EnvironmentKind::Sky) {
-      // EnvSource::radiance looks up the unrotated sky at R(-rotation) dir: rotate the sun by +.
-      const glm::vec3 d = skySunDirection(opt.sky);
-      const float a = glm::radians(scene.environment.rotation_deg), c = std::cos(a),
-                  sn = std::sin(a);
-      ctx.sun_dir = glm::normalize(glm::vec3(c * d.x + sn * d.z, d.y, -sn * d.x + c * d.z));
+      ctx.sun_dir = skySunWorldDirection(scene.environment, opt.sky);
       ctx.sun_cos = std::cos(glm::radians(opt.sky.sun_angular_radius_deg));
       ctx.sun_pdf = 1.0f / (6.2831853f * (1.0f - ctx.sun_cos));
-      ctx.has_sun = std::isfinite(ctx.sun_pdf);
+      ctx.has_sun = opt.sky.sun_disk && std::isfinite(ctx.sun_pdf);
     }
   }
   if (opt.visibility) ctx.vis = std::make_unique<reference_detail::SceneVisibility>(scene);

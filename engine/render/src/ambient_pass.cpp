@@ -1,6 +1,7 @@
 // Ambient pass and the environment's GPU resources. In: G-buffer, the IBL bake (prefiltered
 // radiance cube, env BRDF table, SH9, irradiance cube). Out: ambient light added to the HDR target,
 // the environment drawn on background pixels.
+#include "halfvec/render/rendered_lights.hpp"
 #include "passes.hpp"
 #include "pipeline_state.hpp"
 
@@ -46,6 +47,7 @@ GpuEnvironment::GpuEnvironment(const Scene& scene) {
     BakeOptions opt;
     opt.brdf = BrdfConfig::fromSettings(scene.settings);
     opt.irradiance_size = scene.settings.irradiance == Irradiance::Cubemap ? 32 : 0;
+    opt.sky.sun_disk = !skySunIsLight(scene);  // else the light pass draws it (GpuScene)
     const IblBake bake = bakeEnvironment(scene.environment, opt);
     timings_ = bake.timings;
     radiance_ = uploadCube("prefiltered radiance", bake.radiance);

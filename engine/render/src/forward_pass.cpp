@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <functional>
 
+#include "halfvec/render/rendered_lights.hpp"
 #include "passes.hpp"
 #include "pipeline_state.hpp"
 #include "shadow_pass.hpp"
@@ -42,9 +43,10 @@ std::vector<uint32_t> ForwardPass::lightsReaching(const Scene& scene, const GpuS
   for (int i = 0; i < 3; ++i) h += glm::abs(a[i]) * d.half_extent[i];
   std::vector<uint32_t> out;
   const auto& spheres = gpu.lightCullSpheres();
+  const std::vector<Light> lights = renderedLights(scene);
   for (size_t i = 0; i < spheres.size(); ++i) {
     // A directional light reaches every surface (it has no culling sphere).
-    if (i < scene.lights.size() && scene.lights[i].type == LightType::Directional) {
+    if (i < lights.size() && lights[i].type == LightType::Directional) {
       out.push_back(uint32_t(i));
       continue;
     }

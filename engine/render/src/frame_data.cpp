@@ -4,6 +4,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "halfvec/render/rendered_lights.hpp"
 #include "halfvec/shading/shading.hpp"
 
 namespace hv::render {
@@ -83,7 +84,7 @@ FrameBlock makeFrameBlock(const Scene& scene, int width, int height) {
   const uint32_t tx = (width + kTileSize - 1) / kTileSize;
   const uint32_t ty = (height + kTileHeight - 1) / kTileHeight;
   f.viewport = glm::uvec4(width, height, tx, ty);
-  f.light_count = static_cast<uint32_t>(scene.lights.size());
+  f.light_count = static_cast<uint32_t>(renderedLights(scene).size());
   f.output = glm::vec4(scene.settings.exposure, scene.settings.dither ? 1.0f : 0.0f,
                        scene.environment.intensity, glm::radians(scene.environment.rotation_deg));
   f.frame_params = glm::vec4(c.near_plane, scene.settings.max_error, 0, 0);

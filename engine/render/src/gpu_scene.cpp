@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "halfvec/render/frame_data.hpp"
+#include "halfvec/render/rendered_lights.hpp"
 #include "halfvec/shading/light_gpu.hpp"
 
 namespace hv::render {
@@ -111,12 +112,13 @@ void GpuScene::updateMaterials(const Scene& scene) {
 }
 
 void GpuScene::updateLights(const Scene& scene) {
+  const std::vector<Light> lights = renderedLights(scene);
   std::vector<GpuLight> packed;
-  packed.reserve(scene.lights.size());
+  packed.reserve(lights.size());
   cull_spheres_.clear();
   directional_ = glm::uvec4(0u);
   int directional = 0;
-  for (const Light& l : scene.lights) {
+  for (const Light& l : lights) {
     if (l.type == LightType::Directional && directional < int(kMaxDirectionalLights)) {
       directional_[directional++] = uint32_t(packed.size() + 1);
     }

@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "halfvec/render/frame_data.hpp"
+#include "halfvec/render/rendered_lights.hpp"
 #include "halfvec/render/shadows.hpp"
 #include "halfvec/scene/enums.hpp"
 #include "halfvec/shading/brdf.hpp"
@@ -39,6 +40,8 @@ bool featurePresent(SettingFeature f, const VariantKey& k) {
       return k.shadows;
     case SettingFeature::ScreenSpaceAo:
       return k.ao;
+    case SettingFeature::SkyEnvironment:
+      return k.environment == EnvironmentKind::Sky;
   }
   return true;
 }
@@ -60,6 +63,8 @@ std::string featureAbsentReason(SettingFeature f, const VariantKey& k) {
       return "no shadowed lights";
     case SettingFeature::ScreenSpaceAo:
       return k.ambientIbl() ? "ao is none" : "no ambient IBL";
+    case SettingFeature::SkyEnvironment:
+      return "the environment is not the procedural sky";
   }
   return "";
 }
@@ -81,6 +86,8 @@ const char* featureInvalid(SettingFeature f) {
       return "shadow options without shadowed lights";
     case SettingFeature::ScreenSpaceAo:
       return "ambient occlusion options without ao: gtao";
+    case SettingFeature::SkyEnvironment:
+      return "sky options without the procedural sky";
   }
   return "";
 }
@@ -155,9 +162,10 @@ RenderSettings canonicalSettings(const RenderSettings& s, const VariantKey& key)
 CullingChoice chooseCulling(const Scene& scene) {
   CullingChoice c;
   // Directional lights are in no tile list (every lit pixel shades them): the others count.
+  const std::vector<Light> lights = renderedLights(scene);
   size_t directional = 0;
-  for (const Light& l : scene.lights) directional += l.type == LightType::Directional;
-  c.lights = scene.lights.size() - directional;
+  for (const Light& l : lights) directional += l.type == LightType::Directional;
+  c.lights = lights.size() - directional;
   if (c.lights == 0) {  // directional lights only: no culling pass, the brute-force loop
     if (directional) c.culling = Culling::BruteForce;
     c.why = directional ? "no lights to cull (directional lights only: every pixel shades them)"
@@ -215,7 +223,7 @@ std::string VariantKey::text() const {
 VariantKey deriveVariantKey(const Scene& scene) {
   VariantKey k;
   k.uber = scene.settings.uber;
-  for (const Light& l : scene.lights) {
+  for (const Light& l : renderedLights(scene)) {
     // A spot is shaded as its shape (lightShape) times its cone.
     k.point_lights |= lightShape(l) == LightType::Point;
     k.sphere_lights |= lightShape(l) == LightType::Sphere;
@@ -275,9 +283,10 @@ std::vector<std::string> validateKey(const VariantKey& k) {
   if (!k.hasEnvironment() && s.irradiance == Irradiance::Cubemap) {
     bad.push_back("irradiance cubemap without an environment");
   }
-  for (SettingFeature f : {SettingFeature::Lights, SettingFeature::SphereLights,
-                           SettingFeature::TubeLights, SettingFeature::AmbientIbl,
-                           SettingFeature::ShadowedLights, SettingFeature::ScreenSpaceAo}) {
+  for (SettingFeature f :
+       {SettingFeature::Lights, SettingFeature::SphereLights, SettingFeature::TubeLights,
+        SettingFeature::AmbientIbl, SettingFeature::ShadowedLights, SettingFeature::ScreenSpaceAo,
+        SettingFeature::SkyEnvironment}) {
     if (featurePresent(f, k)) continue;
     bool changed = false;
     forEachSetting([&](const auto& row) {
@@ -344,7 +353,8 @@ std::string materialList(const Scene& scene, const std::vector<size_t>& ids) {
 
 // Lights of shape t (lightShape: a spot counts as its point or sphere), or spots for t = Spot.
 size_t countLights(const Scene& scene, LightType t) {
-  return size_t(std::count_if(scene.lights.begin(), scene.lights.end(), [&](const Light& l) {
+  const std::vector<Light> lights = renderedLights(scene);
+  return size_t(std::count_if(lights.begin(), lights.end(), [&](const Light& l) {
     return t == LightType::Spot ? l.type == t : lightShape(l) == t;
   }));
 }

@@ -41,6 +41,10 @@ struct SkyParams {
   float sun_angular_radius_deg = 0.2666f;
   float sun_to_sky = 5.0f;  // E_sun,normal / E_sky,horizontal
   float ground_albedo = 0.2f;
+  // false: the sun's disk is left out of the sky (the dome shows there), because it is drawn as
+  // a directional light instead (RenderSettings::sky_sun, skySunLight); the ground it lights
+  // stays.
+  bool sun_disk = true;
 };
 
 // Radiance of an environment in a world direction, before intensity / rotation.
@@ -63,6 +67,14 @@ float skyDomeIlluminance(const SkyParams& sky);
 glm::vec3 skyRadiance(const SkyParams& sky, glm::vec3 dir, float dome_illuminance);
 glm::vec3 skyRadiance(const SkyParams& sky, glm::vec3 dir);
 glm::vec3 skySunDirection(const SkyParams& sky);
+// The direction towards the sun in the world: skySunDirection turned with the environment's
+// rotation (EnvSource::radiance looks the unrotated sky up at R(-rotation) dir).
+glm::vec3 skySunWorldDirection(const Environment& env, const SkyParams& sky);
+// The sky's sun as a directional light of the same disk, radiance and color (docs/ibl.md, "The
+// sky's sun as a light"): travelling along -(the sun's direction rotated with the environment),
+// angular diameter twice the sun's radius, illuminance at normal incidence that of the disk of
+// the sky's sun radiance times the environment's intensity. No shadows.
+Light skySunLight(const Environment& env, const SkyParams& sky = {});
 
 // Equirectangular mapping: u = atan2(d.x, -d.z) / (2 pi) + 0.5, v = acos(d.y) / pi (v = 0 at +Y,
 // the top row); the image center (u = 0.5) looks down -Z.

@@ -117,6 +117,10 @@ HV_SETTING_ENUM(IblDirection, HV_IBL_DIRECTIONS);
   V(SplitSum, "split_sum", HV_IBL_SPECULAR_SPLIT_SUM) \
   V(Sampled, "sampled", HV_IBL_SPECULAR_SAMPLED)
 HV_SETTING_ENUM(IblSpecular, HV_IBL_SPECULARS);
+// sky_sun: the procedural sky's sun in the prefiltered environment, or left out of it and drawn
+// as a directional light of the same disk (docs/ibl.md, "The sky's sun as a light").
+#define HV_SKY_SUNS(V) V(Environment, "environment", 0) V(Light, "light", 1)
+HV_SETTING_ENUM(SkySun, HV_SKY_SUNS);
 // tone_map: Reinhard per channel (Reinhard et al. 2002, eq. 3), on luminance, none (clamp),
 // Khronos PBR Neutral, ACES (Narkowicz's fit).
 #define HV_TONE_MAPS(V)                                                     \
@@ -164,6 +168,7 @@ enum class SettingFeature : uint8_t {
   AmbientIbl,      // an environment lighting a default_lit material
   ShadowedLights,  // a light with `shadows: true`
   ScreenSpaceAo,   // `ao: gtao` where the ambient pass lights a default_lit material
+  SkyEnvironment,  // the environment is the procedural sky (its sun)
 };
 
 // Another setting that makes this one change no code, and the value it then takes in the key.
@@ -307,6 +312,10 @@ struct SettingInfo {
     (SettingInfo{.feature = SettingFeature::AmbientIbl, .define = "HV_IBL_SPECULAR",               \
                  .pass = SettingPass::Ambient, .trade = true, .trade_group = "environment",        \
                  .label = "IBL specular"}))                                                        \
+  /* the sky's sun in the environment or as a directional light; docs/ibl.md */                 \
+  X(SkySun, sky_sun, SkySun::Environment, "sky_sun",                                              \
+    (SettingInfo{.feature = SettingFeature::SkyEnvironment, .trade = true,                         \
+                 .trade_group = "environment", .label = "sky sun", .needs_set_scene = true}))     \
   X(bool, specular_occlusion, false, "specular_occlusion",                                         \
     (SettingInfo{.feature = SettingFeature::AmbientIbl, .define = "HV_SPECULAR_OCCLUSION",         \
                  .pass = SettingPass::Ambient, .superseded_by = Supersede::Gtao,                   \

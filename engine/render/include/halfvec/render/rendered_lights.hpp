@@ -1,0 +1,20 @@
+// The lights the engine shades: the scene's, plus the procedural sky's sun where
+// settings.sky_sun draws it as a directional light (docs/ibl.md, "The sky's sun as a light").
+// Everything that uploads, counts or indexes lights for the GPU goes through renderedLights, so
+// the sun is the last light of the GPU list; the CPU reference keeps the sun in the sky.
+#pragma once
+
+#include <vector>
+
+#include "halfvec/scene/scene.hpp"
+
+namespace hv::render {
+
+// settings.sky_sun is `light`, the environment is the procedural sky and the scene has fewer
+// than kMaxDirectionalLights directional lights (else the sun stays in the environment).
+bool skySunIsLight(const Scene& scene);
+
+// scene.lights, then skySunLight(scene.environment) where skySunIsLight.
+std::vector<Light> renderedLights(const Scene& scene);
+
+}  // namespace hv::render

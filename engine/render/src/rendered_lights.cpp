@@ -1,0 +1,24 @@
+#include "halfvec/render/rendered_lights.hpp"
+
+#include "halfvec/ibl/ibl.hpp"
+
+namespace hv::render {
+
+bool skySunIsLight(const Scene& scene) {
+  if (scene.settings.sky_sun != SkySun::Light || scene.environment.kind != EnvironmentKind::Sky) {
+    return false;
+  }
+  // The frame's list of directional lights has kMaxDirectionalLights places: where the scene
+  // fills them, the sun stays in the environment.
+  size_t directional = 0;
+  for (const Light& l : scene.lights) directional += l.type == LightType::Directional;
+  return directional < kMaxDirectionalLights;
+}
+
+std::vector<Light> renderedLights(const Scene& scene) {
+  std::vector<Light> lights = scene.lights;
+  if (skySunIsLight(scene)) lights.push_back(skySunLight(scene.environment));
+  return lights;
+}
+
+}  // namespace hv::render
