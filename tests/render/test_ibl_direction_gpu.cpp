@@ -39,6 +39,9 @@ Scene skyScene(const Material& m, const Mesh& mesh, float distance, float fov_y_
   o.meshes = {0};
   s.objects.push_back(o);
   s.environment.kind = EnvironmentKind::Sky;
+  // The sun in the prefiltered cube, as an HDR's sun is: the lookups are what these tests measure
+  // (with sky_sun: light the sun is a directional light, docs/ibl.md).
+  s.settings.sky_sun = SkySun::Environment;
   s.settings.v = VisibilityTerm::SmithGGXCorrelated;  // the exact V (Heitz 2014)
   s.settings.ambient_terms = 2;                       // ambient specular only
   return s;

@@ -455,8 +455,10 @@ TEST(Shadows, SceneWithoutShadowedLightsRendersAsBefore) {
   for (const auto& c : cases) {
     Scene s = loadScene(samplePath(c.scene));
     for (Light& l : s.lights) l.shadows = false;
-    // The ambient lookup along R, as then (ibl_direction changed it on purpose, docs/ibl.md).
+    // The ambient lookup along R and the sky's sun in the sky, as then (ibl_direction and
+    // sky_sun changed them on purpose, docs/ibl.md).
     s.settings.ibl_direction = IblDirection::Reflect;
+    s.settings.sky_sun = SkySun::Environment;
     render::Renderer r;
     r.setScene(s);
     EXPECT_EQ(r.variantKey().shadows, false);

@@ -86,6 +86,7 @@ TEST(SkySunGpu, GlintOfTheSunAsALightMatchesReference) {
   testContext();
   for (float roughness : {0.1f, 0.2f}) {
     Scene s = glintScene(roughness);
+    s.settings.sky_sun = SkySun::Environment;
     const RenderedFrame env = renderFrame(s, kSize, kSize);
     s.settings.sky_sun = SkySun::Light;
     const RenderedFrame light = renderFrame(s, kSize, kSize);

@@ -127,6 +127,7 @@ TEST(VariantKey, DerivedFromTheScene) {
   EXPECT_TRUE(k.default_lit);
   EXPECT_TRUE(k.unlit);
   EXPECT_EQ(k.environment, EnvironmentKind::Sky);
+  EXPECT_TRUE(k.directional_lights);  // the sky's sun (settings.sky_sun: light, the default)
   EXPECT_FALSE(k.uber);
   // a and c have the same features (the shading model is data, not code): one program; b its own.
   ASSERT_EQ(k.material_variants.size(), 2u);
@@ -136,8 +137,8 @@ TEST(VariantKey, DerivedFromTheScene) {
   EXPECT_TRUE(k.material_variants[size_t(k.material_variant[1])].normal_map);
   EXPECT_TRUE(validateKey(k).empty());
   EXPECT_EQ(k.text(),
-            "lights point+tube; models default_lit+unlit; environment sky; 2 material variants; "
-            "specialized");
+            "lights point+tube+directional; models default_lit+unlit; environment sky; 2 material "
+            "variants; specialized");
 
   // Only unlit materials: no default_lit, so no ambient IBL code even with an environment.
   Scene u = sceneWith({c});

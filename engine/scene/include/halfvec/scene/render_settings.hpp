@@ -313,7 +313,7 @@ struct SettingInfo {
                  .pass = SettingPass::Ambient, .trade = true, .trade_group = "environment",        \
                  .label = "IBL specular"}))                                                        \
   /* the sky's sun in the environment or as a directional light; docs/ibl.md */                 \
-  X(SkySun, sky_sun, SkySun::Environment, "sky_sun",                                              \
+  X(SkySun, sky_sun, SkySun::Light, "sky_sun",                                                    \
     (SettingInfo{.feature = SettingFeature::SkyEnvironment, .trade = true,                         \
                  .trade_group = "environment", .label = "sky sun", .needs_set_scene = true}))     \
   X(bool, specular_occlusion, false, "specular_occlusion",                                         \
