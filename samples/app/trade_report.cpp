@@ -269,11 +269,12 @@ relative RMSE on the sample scenes is dominated by highlight pixels where the re
 sphere and tube specular is several times brighter than the reference (the chrome spheres of
 default, the roughness-0.05 spheres of sphere_grid, the glossy floor of area_lights). `accurate`'s
 `ltc` methods remove most of that: its relative RMSE is below the scene's settings' on every sample
-scene (the "Measured" table). gltf's relative RMSE barely moves: it is carried by a few pixels of
-ambient specular, the sky's sun reflected in the helmet (the "worst 0.1%" column and the max abs
-column), which no light option changes. With the representative point, rows whose terms darken
-glossy highlights can score a lower error by offsetting the overestimate, which is no reason to
-choose them.
+scene (the "Measured" table). gltf's relative RMSE is carried by a few pixels (the "worst 0.1%"
+column): the sky's sun reflected in the visor, a directional light since `sky_sun: light` (its
+row here puts the sun back into the prefiltered cube, docs/ibl.md), whose glint the representative
+point draws too bright and `accurate`'s LTC close to the reference. With the representative
+point, rows whose terms darken glossy highlights can score a lower error by offsetting the
+overestimate, which is no reason to choose them.
 
 Times: the "x scene" column is each row's frame time over the scene row's, frame by frame within
 a round, with its 95% interval over one run's frames; "same cost" marks rows whose interval
