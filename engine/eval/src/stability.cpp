@@ -208,12 +208,19 @@ void addClearCoatOptions(std::vector<Option>& o) {
                false, true, true});
 }
 
-// The lobe-sampled ambient specular (ibl.glsl, sampledAmbientSpecular) under the procedural sky,
-// whose sun is the brightest texel any lookup meets: on the bare spheres (roughness 0 and 1, N.V
-// down to 0 at their outlines) and under a clear coat (the coat's lobe sampled too).
+// The procedural sky: its sun as a directional light (sky_sun: light, the default) beside the
+// geometry's own light, and in the cube (environment), the brightest texels the lobe-sampled
+// ambient specular (ibl.glsl, sampledAmbientSpecular) meets; on the bare spheres (roughness 0 and
+// 1, N.V down to 0 at their outlines) and under a clear coat (the coat's lobe sampled too).
 void addIblOptions(std::vector<Option>& o) {
   auto sampled = [](RenderSettings& s) { s.ibl_specular = IblSpecular::Sampled; };
+  auto sun_in_cube = [](RenderSettings& s) {
+    s.ibl_specular = IblSpecular::Sampled;
+    s.sky_sun = SkySun::Environment;
+  };
   o.push_back({"sky, ibl_specular=sampled", sampled, false, false, false, true});
+  o.push_back(
+      {"sky, sky_sun=environment, ibl_specular=sampled", sun_in_cube, false, false, false, true});
   o.push_back({"clear coat, sky, ibl_specular=sampled", sampled, false, false, true, true});
 }
 
@@ -240,7 +247,8 @@ std::vector<Option> ciSubset(const std::vector<Option>& all) {
         x.name == "diffuse=burley" || x.name == "ltc (all three)" ||
         x.name == "shadows, shadow_filter=pcss" || x.name == "ao=gtao, ao_specular=cone" ||
         x.name == "clear coat, ltc (all three)" || x.name == "max_error=0.05" ||
-        x.name == "sky, ibl_specular=sampled") {
+        x.name == "sky, ibl_specular=sampled" ||
+        x.name == "sky, sky_sun=environment, ibl_specular=sampled") {
       keep.push_back(x);
     }
   }
