@@ -26,6 +26,9 @@ hv::Scene skyScene(float rotation_deg) {
   s.camera.near_plane = 0.05f;
   s.environment.kind = hv::EnvironmentKind::Sky;
   s.environment.rotation_deg = rotation_deg;
+  // The sun booked with the sky's ambient terms (with sky_sun: light it is booked under the
+  // direct terms, as the engine draws it: SunAsALightIsBookedUnderTheDirectTerms).
+  s.settings.sky_sun = hv::SkySun::Environment;
   return s;
 }
 
@@ -99,6 +102,34 @@ TEST(ReferenceSun, RotatedSkyRotatesTheSampledSun) {
     EXPECT_GT(v1[k], sun_only[k]) << "channel " << k;
     EXPECT_LT(s1[k], 0.02f * v1[k]);
     EXPECT_NEAR(v0[k], v1[k], 3.0f * std::sqrt(s0[k] * s0[k] + s1[k] * s1[k]));
+  }
+}
+
+// With sky_sun: light the engine draws the sun as a directional light; the reference keeps it in
+// the sky (the same integral) and books the sun's cone under the direct terms: the direct diffuse
+// is then the sun's share, the ambient the dome's, and their sum the ambient diffuse of the sun in
+// the sky, within the two runs' noise.
+TEST(ReferenceSun, SunAsALightIsBookedUnderTheDirectTerms) {
+  using A = hv::ReferenceAov;
+  const glm::vec3 up(0.0f, 1.0f, 0.0f);
+  hv::Scene scene = skyScene(0.0f);
+  const hv::ReferenceResult in_sky = run(scene, up, 2048);
+  scene.settings.sky_sun = hv::SkySun::Light;
+  const hv::ReferenceResult as_light = run(scene, up, 2048);
+  const hv::SkyParams sky;
+  const glm::vec3 sun = hv::skySunDirection(sky);
+  const double cos_r = std::cos(double(sky.sun_angular_radius_deg) * kPi / 180.0);
+  const glm::dvec3 sun_only =
+      glm::dvec3(hv::skyRadiance(sky, sun)) * (2.0 * (1.0 - cos_r) * double(sun.y));
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(in_sky[A::DirectDiffuse].px[0][k], 0.0f);
+    const double direct = as_light[A::DirectDiffuse].px[0][k];
+    EXPECT_NEAR(direct, sun_only[k], 0.03 * sun_only[k]) << "channel " << k;
+    const double sum = direct + as_light[A::AmbientDiffuse].px[0][k];
+    const double se = std::hypot(in_sky.stdError(A::AmbientDiffuse).px[0][k],
+                                 as_light.stdError(A::AmbientDiffuse).px[0][k]) +
+                      as_light.stdError(A::DirectDiffuse).px[0][k];
+    EXPECT_NEAR(sum, in_sky[A::AmbientDiffuse].px[0][k], 3.0 * se) << "channel " << k;
   }
 }
 

@@ -7,7 +7,7 @@
 
 #include "halfvec/ibl/ibl.hpp"
 #include "halfvec/reference/reference.hpp"
-#include "halfvec/render/rendered_lights.hpp"
+#include "halfvec/ibl/sky_sun.hpp"
 #include "render_fixture.hpp"
 
 using namespace hv;
@@ -114,19 +114,19 @@ TEST(SkySunGpu, GlintOfTheSunAsALightMatchesReference) {
 TEST(SkySun, OnlyTheProceduralSkysSunMoves) {
   Scene s = glintScene(0.5f);
   s.settings.sky_sun = SkySun::Light;
-  EXPECT_TRUE(render::skySunIsLight(s));
-  ASSERT_EQ(render::renderedLights(s).size(), 1u);
-  const Light sun = render::renderedLights(s).back();
+  EXPECT_TRUE(skySunIsLight(s));
+  ASSERT_EQ(renderedLights(s).size(), 1u);
+  const Light sun = renderedLights(s).back();
   EXPECT_EQ(sun.type, LightType::Directional);
   EXPECT_FALSE(sun.shadows);
   s.environment.kind = EnvironmentKind::Uniform;
-  EXPECT_FALSE(render::skySunIsLight(s));
-  EXPECT_TRUE(render::renderedLights(s).empty());
+  EXPECT_FALSE(skySunIsLight(s));
+  EXPECT_TRUE(renderedLights(s).empty());
   s.environment.kind = EnvironmentKind::Sky;
   for (int i = 0; i < int(kMaxDirectionalLights); ++i) {
     Light l;
     l.type = LightType::Directional;
     s.lights.push_back(l);
   }
-  EXPECT_FALSE(render::skySunIsLight(s)) << "the frame's directional list is full";
+  EXPECT_FALSE(skySunIsLight(s)) << "the frame's directional list is full";
 }

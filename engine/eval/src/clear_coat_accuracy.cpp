@@ -29,6 +29,9 @@ Scene clearCoatScene(const std::string& light, float coat, float coat_roughness)
   paint.model = coat > 0.0f ? ShadingModel::ClearCoat : ShadingModel::DefaultLit;
   addMeshObject(s, makeSphere(0.55f, 64, 32), paint, {0.0f, 0.55f, 0.0f});
   s.environment.kind = light == "sky" ? EnvironmentKind::Sky : EnvironmentKind::None;
+  // The sky's sun in the cube: the sky rows measure the coat's split-sum lobe (a directional
+  // light, as sky_sun: light draws the sun, is the "sun" rows' case).
+  s.settings.sky_sun = SkySun::Environment;
   s.settings.falloff_plus_one = false;
   if (light == "sky") return s;
   Light l;

@@ -222,15 +222,18 @@ void environmentSample(ShadingPoint& p, Rng& rng, glm::dvec3* xs) {
     float p_cos = NoL > 0.0f ? glsl::pdfCosineHemisphere(NoL) : 0.0f;
     float p_spec = vndfPdf(T, B, N, p.Vs, s.alpha, L);
     float p_env = ctx.env_dist ? ctx.env_dist->pdf(L) : 0.0f;
-    float p_sun = ctx.has_sun && glm::dot(L, ctx.sun_dir) >= ctx.sun_cos ? ctx.sun_pdf : 0.0f;
+    const bool in_sun = ctx.has_sun && glm::dot(L, ctx.sun_dir) >= ctx.sun_cos;
+    float p_sun = in_sun ? ctx.sun_pdf : 0.0f;
     float p_coat = coated ? vndfPdf(p.Tc, p.Bc, p.cs.N, p.Vsc, p.cs.alpha, L) : 0.0f;
     float pdf = p_cos + p_spec + p_env + p_sun + p_coat;
     if (!(pdf > 0.0f) || !std::isfinite(pdf)) continue;
     if (p.visibility() && p.occluded(L, std::numeric_limits<float>::infinity())) continue;
     const CosLobes f = cosLobes(p, L, false);
     glm::vec3 w = ctx.env.radiance(L) * (1.0f / pdf);
-    xs[kAD] += glm::dvec3(f.diffuse * w * s.cavity);
-    xs[kAS] += glm::dvec3((f.specular * p.ambient_spec_scale + f.coat * p.coat_ambient_scale) * w);
+    const bool direct = in_sun && ctx.sun_is_direct;
+    xs[direct ? kDD : kAD] += glm::dvec3(f.diffuse * w * s.cavity);
+    xs[direct ? kDS : kAS] +=
+        glm::dvec3((f.specular * p.ambient_spec_scale + f.coat * p.coat_ambient_scale) * w);
   }
 }
 

@@ -33,6 +33,10 @@ struct Context {
   bool has_sun = false;
   glm::vec3 sun_dir{0.0f, 1.0f, 0.0f};
   float sun_cos = 1.0f, sun_pdf = 0.0f;
+  // The engine draws the sky's sun as a directional light (skySunIsLight): the sun's cone of the
+  // environment integral is booked under the direct terms, as the engine's per-term images have
+  // it (the sum is unchanged).
+  bool sun_is_direct = false;
   std::vector<const Light*> point_lights, area_lights;
   // Per entry of point_lights / area_lights: the spot's cone as the light pass reads it
   // (packLight's axis_length, spot.glsl), or (0, 0, 0, 1), whose attenuation is exactly 1.

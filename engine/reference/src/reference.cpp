@@ -13,6 +13,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "halfvec/core/parallel.hpp"
+#include "halfvec/ibl/sky_sun.hpp"
 #include "halfvec/shading/light_gpu.hpp"
 #include "halfvec/shading/shading.hpp"
 #include "pixel.hpp"
@@ -72,6 +73,7 @@ Context makeContext(const Scene& scene, const GBufferReadback& gb, const Referen
       ctx.sun_cos = std::cos(glm::radians(opt.sky.sun_angular_radius_deg));
       ctx.sun_pdf = 1.0f / (6.2831853f * (1.0f - ctx.sun_cos));
       ctx.has_sun = opt.sky.sun_disk && std::isfinite(ctx.sun_pdf);
+      ctx.sun_is_direct = ctx.has_sun && skySunIsLight(scene);
     }
   }
   if (opt.visibility) ctx.vis = std::make_unique<reference_detail::SceneVisibility>(scene);

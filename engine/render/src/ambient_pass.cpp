@@ -1,7 +1,7 @@
 // Ambient pass and the environment's GPU resources. In: G-buffer, the IBL bake (prefiltered
 // radiance cube, env BRDF table, SH9, irradiance cube). Out: ambient light added to the HDR target,
 // the environment drawn on background pixels.
-#include "halfvec/render/rendered_lights.hpp"
+#include "halfvec/ibl/sky_sun.hpp"
 #include "passes.hpp"
 #include "pipeline_state.hpp"
 

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <functional>
 
-#include "halfvec/render/rendered_lights.hpp"
+#include "halfvec/ibl/sky_sun.hpp"
 #include "passes.hpp"
 #include "pipeline_state.hpp"
 #include "shadow_pass.hpp"

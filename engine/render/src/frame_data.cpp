@@ -4,7 +4,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "halfvec/render/rendered_lights.hpp"
+#include "halfvec/ibl/sky_sun.hpp"
 #include "halfvec/shading/shading.hpp"
 
 namespace hv::render {

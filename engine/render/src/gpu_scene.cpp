@@ -5,7 +5,7 @@
 #include <cstring>
 
 #include "halfvec/render/frame_data.hpp"
-#include "halfvec/render/rendered_lights.hpp"
+#include "halfvec/ibl/sky_sun.hpp"
 #include "halfvec/shading/light_gpu.hpp"
 
 namespace hv::render {

@@ -6,7 +6,7 @@
 #include <type_traits>
 
 #include "halfvec/render/frame_data.hpp"
-#include "halfvec/render/rendered_lights.hpp"
+#include "halfvec/ibl/sky_sun.hpp"
 #include "halfvec/render/shadows.hpp"
 #include "halfvec/scene/enums.hpp"
 #include "halfvec/shading/brdf.hpp"

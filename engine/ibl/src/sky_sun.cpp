@@ -1,8 +1,8 @@
-#include "halfvec/render/rendered_lights.hpp"
+#include "halfvec/ibl/sky_sun.hpp"
 
 #include "halfvec/ibl/ibl.hpp"
 
-namespace hv::render {
+namespace hv {
 
 bool skySunIsLight(const Scene& scene) {
   if (scene.settings.sky_sun != SkySun::Light || scene.environment.kind != EnvironmentKind::Sky) {
@@ -21,4 +21,4 @@ std::vector<Light> renderedLights(const Scene& scene) {
   return lights;
 }
 
-}  // namespace hv::render
+}  // namespace hv

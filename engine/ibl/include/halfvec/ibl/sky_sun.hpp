@@ -1,14 +1,16 @@
 // The lights the engine shades: the scene's, plus the procedural sky's sun where
 // settings.sky_sun draws it as a directional light (docs/ibl.md, "The sky's sun as a light").
-// Everything that uploads, counts or indexes lights for the GPU goes through renderedLights, so
-// the sun is the last light of the GPU list; the CPU reference keeps the sun in the sky.
+// Everything in the renderer that uploads, counts or indexes lights for the GPU goes through
+// renderedLights, so the sun is the last light of the GPU list. The CPU reference keeps the sun in
+// the sky (the truth does not depend on the method) and books it under the direct terms where
+// skySunIsLight, as the engine's per-term images do.
 #pragma once
 
 #include <vector>
 
 #include "halfvec/scene/scene.hpp"
 
-namespace hv::render {
+namespace hv {
 
 // settings.sky_sun is `light`, the environment is the procedural sky and the scene has fewer
 // than kMaxDirectionalLights directional lights (else the sun stays in the environment).
@@ -17,4 +19,4 @@ bool skySunIsLight(const Scene& scene);
 // scene.lights, then skySunLight(scene.environment) where skySunIsLight.
 std::vector<Light> renderedLights(const Scene& scene);
 
-}  // namespace hv::render
+}  // namespace hv
