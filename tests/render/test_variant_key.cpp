@@ -293,6 +293,26 @@ TEST(VariantKey, SettingsWithoutCodeAreCanonical) {
   EXPECT_EQ(byName(ambientDefines(kc, b)).at("HV_IRRADIANCE_CUBEMAP").value, "1");
 }
 
+// ibl_specular: sampled compiles the lobe's samples where the environment varies, and the split
+// sum under a uniform one (every sample would read its radiance); sky_sun has no define, only
+// the sun's directional light where the environment is the procedural sky.
+TEST(VariantKey, SampledSpecularAndSkySunWhereTheEnvironmentHasThem) {
+  Scene s = sceneWith({Material{}});
+  s.settings.ibl_specular = IblSpecular::Sampled;
+  s.environment.kind = EnvironmentKind::Sky;
+  const VariantKey sky = deriveVariantKey(s);
+  EXPECT_EQ(byName(ambientDefines(sky, s)).at("HV_IBL_SPECULAR").value, "1");
+  EXPECT_TRUE(sky.directional_lights);
+  s.environment.kind = EnvironmentKind::Uniform;
+  const VariantKey uniform = deriveVariantKey(s);
+  const auto u = byName(ambientDefines(uniform, s));
+  EXPECT_EQ(u.at("HV_IBL_SPECULAR").value, "0");
+  EXPECT_NE(u.at("HV_IBL_SPECULAR").why.find("uniform environment"), std::string::npos);
+  EXPECT_FALSE(uniform.directional_lights);
+  EXPECT_EQ(uniform.settings.sky_sun, SkySun::Light) << "the default, which changes no code here";
+  EXPECT_TRUE(validateKey(uniform).empty());
+}
+
 TEST(VariantKey, ValidationRejectsImpossibleCombinations) {
   VariantKey k;  // no lights, no environment, no materials: valid
   EXPECT_TRUE(validateKey(k).empty());

@@ -526,7 +526,18 @@ std::vector<KeyDefine> ambientDefines(const VariantKey& k, const Scene& scene) {
                  : k.default_lit ? "default_lit materials present"
                                  : "no default_lit material: no image-based lighting code"});
   out.push_back(clearCoatDefine(k));
-  for (KeyDefine& d : settingKeyDefines(k, scene, SettingPass::Ambient)) out.push_back(d);
+  for (KeyDefine& d : settingKeyDefines(k, scene, SettingPass::Ambient)) {
+    // Under a uniform environment every lobe sample reads the split sum's own radiance (each
+    // prefiltered texel is the environment's, Ibl.FurnaceUniform): the samples would change no
+    // pixel beyond rounding, so the program keeps the split sum.
+    if (d.name == "HV_IBL_SPECULAR" && k.environment == EnvironmentKind::Uniform && !k.uber &&
+        s.ibl_specular == IblSpecular::Sampled) {
+      d.value = std::to_string(int(IblSpecular::SplitSum));
+      d.why = "settings.ibl_specular = sampled under a uniform environment: every sample reads "
+              "the split sum's radiance, so the split sum";
+    }
+    out.push_back(d);
+  }
   out.push_back({"HV_AMBIENT_TERMS", std::to_string(int(s.ambient_terms)),
                  s.ambient_terms == 3 ? "diffuse and specular (all terms)"
                                       : "term mask " + std::to_string(int(s.ambient_terms)) +
