@@ -533,8 +533,9 @@ std::vector<KeyDefine> ambientDefines(const VariantKey& k, const Scene& scene) {
     if (d.name == "HV_IBL_SPECULAR" && k.environment == EnvironmentKind::Uniform && !k.uber &&
         s.ibl_specular == IblSpecular::Sampled) {
       d.value = std::to_string(int(IblSpecular::SplitSum));
-      d.why = "settings.ibl_specular = sampled under a uniform environment: every sample reads "
-              "the split sum's radiance, so the split sum";
+      d.why =
+          "settings.ibl_specular = sampled under a uniform environment: every sample reads "
+          "the split sum's radiance, so the split sum";
     }
     out.push_back(d);
   }
