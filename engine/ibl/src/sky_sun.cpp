@@ -5,7 +5,8 @@
 namespace hv {
 
 bool skySunIsLight(const Scene& scene) {
-  if (scene.settings.sky_sun != SkySun::Light || scene.environment.kind != EnvironmentKind::Sky) {
+  if (scene.settings.sky_sun == SkySun::Environment ||
+      scene.environment.kind != EnvironmentKind::Sky) {
     return false;
   }
   // The frame's list of directional lights has kMaxDirectionalLights places: where the scene
@@ -17,7 +18,10 @@ bool skySunIsLight(const Scene& scene) {
 
 std::vector<Light> renderedLights(const Scene& scene) {
   std::vector<Light> lights = scene.lights;
-  if (skySunIsLight(scene)) lights.push_back(skySunLight(scene.environment));
+  if (skySunIsLight(scene)) {
+    lights.push_back(skySunLight(scene.environment));
+    lights.back().shadows = scene.settings.sky_sun == SkySun::ShadowedLight;
+  }
   return lights;
 }
 

@@ -8,6 +8,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "halfvec/ibl/sky_sun.hpp"
 #include "halfvec/shading/light_gpu.hpp"
 #include "passes.hpp"
 #include "pipeline_state.hpp"
@@ -258,12 +259,14 @@ void ShadowMaps::writeShadowSlots(const Input& in, const ShadowAssignment& a) {
 
 ShadowMaps::Stats ShadowMaps::run(const PassContext& ctx, const Input& in) {
   gl::ScopedPass pass(ctx.timer, "shadows");
-  const ShadowAssignment a = assignShadowMaps(in.scene.lights, shadowAtlasCapacity(in.map_size));
+  // The lights as the light pass has them (the sky's sun last, where it is a light).
+  const std::vector<Light> lights = renderedLights(in.scene);
+  const ShadowAssignment a = assignShadowMaps(lights, shadowAtlasCapacity(in.map_size));
   Stats st;
   st.maps = a.maps.size();
   st.over_budget = a.over_budget;
   // The warning names the lights beyond the budget, once per change of that list.
-  const std::string warning = overBudgetWarning(in.scene.lights, a, in.map_size);
+  const std::string warning = overBudgetWarning(lights, a, in.map_size);
   if (warning != warned_ && !warning.empty()) logShadowWarning(warning);
   warned_ = warning;
   writeShadowSlots(in, a);
@@ -289,7 +292,7 @@ ShadowMaps::Stats ShadowMaps::run(const PassContext& ctx, const Input& in) {
     bound = true;
   };
   for (size_t c = 0; c < a.maps.size(); ++c) {
-    const Light& l = in.scene.lights[a.maps[c]];
+    const Light& l = lights[a.maps[c]];
     const GpuLight g = packLight(l);
     const float far = glsl::lightCullRadius(toGlsl(g));
     CubeKey key;
@@ -308,7 +311,7 @@ ShadowMaps::Stats ShadowMaps::run(const PassContext& ctx, const Input& in) {
   // bounds) or the casters changed; their frames go to the uniform block the lookups read.
   std::array<GpuSunShadow, kMaxDirectionalLights> frames{};
   for (size_t c = 0; c < a.suns.size(); ++c) {
-    const SunFrame f = sunFrame(in.scene, in.gpu, in.scene.lights[a.suns[c]], in.map_size);
+    const SunFrame f = sunFrame(in.scene, in.gpu, lights[a.suns[c]], in.map_size);
     frames[c] = f.map;
     SunKey key;
     std::memcpy(key.frame.data(), &f.map, sizeof f.map);

@@ -430,14 +430,15 @@ std::vector<KeyDefine> settingKeyDefines(const VariantKey& k, const Scene& scene
 
 // Why the light programs have shadow code or none: the shadowed lights, named.
 std::string shadowsWhy(const Scene& scene) {
+  const std::vector<Light> lights = renderedLights(scene);  // the sky's sun last
   std::vector<size_t> on;
-  for (size_t i = 0; i < scene.lights.size(); ++i) {
-    if (scene.lights[i].shadows) on.push_back(i);
+  for (size_t i = 0; i < lights.size(); ++i) {
+    if (lights[i].shadows) on.push_back(i);
   }
   if (on.empty()) return "no light has shadows: true (no shadow maps, no shadow lookup)";
   std::string t = std::to_string(on.size()) + " shadowed light" + (on.size() == 1 ? "" : "s");
   for (size_t i = 0; i < on.size() && i < 4; ++i)
-    t += (i ? ", " : " (") + describeLight(scene.lights, on[i]);
+    t += (i ? ", " : " (") + describeLight(lights, on[i]);
   if (on.size() > 4) t += " and " + std::to_string(on.size() - 4) + " more";
   return t + ")";
 }

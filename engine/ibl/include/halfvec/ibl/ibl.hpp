@@ -73,7 +73,8 @@ glm::vec3 skySunWorldDirection(const Environment& env, const SkyParams& sky);
 // The sky's sun as a directional light of the same disk, radiance and color (docs/ibl.md, "The
 // sky's sun as a light"): travelling along -(the sun's direction rotated with the environment),
 // angular diameter twice the sun's radius, illuminance at normal incidence that of the disk of
-// the sky's sun radiance times the environment's intensity. No shadows.
+// the sky's sun radiance times the environment's intensity. No shadows (renderedLights sets them
+// for sky_sun: shadowed_light).
 Light skySunLight(const Environment& env, const SkyParams& sky = {});
 
 // Equirectangular mapping: u = atan2(d.x, -d.z) / (2 pi) + 0.5, v = acos(d.y) / pi (v = 0 at +Y,

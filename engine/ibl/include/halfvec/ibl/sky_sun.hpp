@@ -12,11 +12,13 @@
 
 namespace hv {
 
-// settings.sky_sun is `light`, the environment is the procedural sky and the scene has fewer
-// than kMaxDirectionalLights directional lights (else the sun stays in the environment).
+// settings.sky_sun is `light` or `shadowed_light`, the environment is the procedural sky and the
+// scene has fewer than kMaxDirectionalLights directional lights (else the sun stays in the
+// environment).
 bool skySunIsLight(const Scene& scene);
 
-// scene.lights, then skySunLight(scene.environment) where skySunIsLight.
+// scene.lights, then skySunLight(scene.environment) where skySunIsLight, casting shadows (an
+// orthographic map, docs/lights.md) with `shadowed_light`.
 std::vector<Light> renderedLights(const Scene& scene);
 
 }  // namespace hv

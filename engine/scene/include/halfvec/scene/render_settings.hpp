@@ -118,8 +118,10 @@ HV_SETTING_ENUM(IblDirection, HV_IBL_DIRECTIONS);
   V(Sampled, "sampled", HV_IBL_SPECULAR_SAMPLED)
 HV_SETTING_ENUM(IblSpecular, HV_IBL_SPECULARS);
 // sky_sun: the procedural sky's sun in the prefiltered environment, or left out of it and drawn
-// as a directional light of the same disk (docs/ibl.md, "The sky's sun as a light").
-#define HV_SKY_SUNS(V) V(Environment, "environment", 0) V(Light, "light", 1)
+// as a directional light of the same disk, without or with its shadow (docs/ibl.md, "The sky's
+// sun as a light").
+#define HV_SKY_SUNS(V) \
+  V(Environment, "environment", 0) V(Light, "light", 1) V(ShadowedLight, "shadowed_light", 2)
 HV_SETTING_ENUM(SkySun, HV_SKY_SUNS);
 // tone_map: Reinhard per channel (Reinhard et al. 2002, eq. 3), on luminance, none (clamp),
 // Khronos PBR Neutral, ACES (Narkowicz's fit).
