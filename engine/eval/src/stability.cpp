@@ -222,6 +222,9 @@ void addIblOptions(std::vector<Option>& o) {
   o.push_back(
       {"sky, sky_sun=environment, ibl_specular=sampled", sun_in_cube, false, false, false, true});
   o.push_back({"clear coat, sky, ibl_specular=sampled", sampled, false, false, true, true});
+  o.push_back({"sky, sky_sun=shadowed_light",
+               [](RenderSettings& s) { s.sky_sun = SkySun::ShadowedLight; }, false, false, false,
+               true});
 }
 
 // The error budget (error_budget.glsl): a budget that takes the LTC almost everywhere, one that
