@@ -307,6 +307,7 @@ TEST(VariantKey, SampledSpecularAndSkySunWhereTheEnvironmentHasThem) {
   const VariantKey uniform = deriveVariantKey(s);
   const auto u = byName(ambientDefines(uniform, s));
   EXPECT_EQ(u.at("HV_IBL_SPECULAR").value, "0");
+  EXPECT_EQ(uniform.settings.ibl_specular, IblSpecular::SplitSum) << "reset in the key";
   EXPECT_NE(u.at("HV_IBL_SPECULAR").why.find("uniform environment"), std::string::npos);
   EXPECT_FALSE(uniform.directional_lights);
   EXPECT_EQ(uniform.settings.sky_sun, SkySun::Light) << "the default, which changes no code here";

@@ -81,7 +81,7 @@ namespace {
 
 // Each feature of the scene that makes settings change code, with why its settings are not
 // varied where the scene lacks it (null where it has it).
-using Absences = std::array<std::pair<SettingFeature, const char*>, 6>;
+using Absences = std::array<std::pair<SettingFeature, const char*>, 7>;
 
 Absences absentFeatures(const Scene& scene) {
   bool sphere = false, tube = false, shadowed = false;
@@ -93,13 +93,17 @@ Absences absentFeatures(const Scene& scene) {
   }
   const bool lights = !scene.lights.empty();
   const bool env = scene.environment.kind != EnvironmentKind::None;
+  const char* uniform = scene.environment.kind == EnvironmentKind::Uniform ? "uniform environment"
+                        : env                                              ? nullptr
+                                                                           : "no environment";
   return {{{SettingFeature::Lights, lights ? nullptr : "no lights"},
            {SettingFeature::SphereLights, sphere ? nullptr : "no sphere or directional lights"},
            {SettingFeature::TubeLights, tube ? nullptr : "no tube lights"},
            {SettingFeature::AmbientIbl, env ? nullptr : "no environment"},
            {SettingFeature::ShadowedLights, shadowed ? nullptr : "no shadowed lights"},
            {SettingFeature::SkyEnvironment,
-            scene.environment.kind == EnvironmentKind::Sky ? nullptr : "no procedural sky"}}};
+            scene.environment.kind == EnvironmentKind::Sky ? nullptr : "no procedural sky"},
+           {SettingFeature::VaryingAmbient, uniform}}};
 }
 
 // One row per other value of each approximation option of the settings table

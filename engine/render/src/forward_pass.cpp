@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <functional>
 
-#include "halfvec/ibl/sky_sun.hpp"
 #include "passes.hpp"
 #include "pipeline_state.hpp"
 #include "shadow_pass.hpp"
@@ -43,10 +42,10 @@ std::vector<uint32_t> ForwardPass::lightsReaching(const Scene& scene, const GpuS
   for (int i = 0; i < 3; ++i) h += glm::abs(a[i]) * d.half_extent[i];
   std::vector<uint32_t> out;
   const auto& spheres = gpu.lightCullSpheres();
-  const std::vector<Light> lights = renderedLights(scene);
   for (size_t i = 0; i < spheres.size(); ++i) {
-    // A directional light reaches every surface (it has no culling sphere).
-    if (i < lights.size() && lights[i].type == LightType::Directional) {
+    // A directional light reaches every surface (it has no culling sphere); past the scene's
+    // lights is the sky's sun (renderedLights), a directional light.
+    if (i >= scene.lights.size() || scene.lights[i].type == LightType::Directional) {
       out.push_back(uint32_t(i));
       continue;
     }

@@ -84,7 +84,8 @@ FrameBlock makeFrameBlock(const Scene& scene, int width, int height) {
   const uint32_t tx = (width + kTileSize - 1) / kTileSize;
   const uint32_t ty = (height + kTileHeight - 1) / kTileHeight;
   f.viewport = glm::uvec4(width, height, tx, ty);
-  f.light_count = static_cast<uint32_t>(renderedLights(scene).size());
+  // The sky's sun, where it is a light, is the last of the lights (renderedLights).
+  f.light_count = static_cast<uint32_t>(scene.lights.size() + (skySunIsLight(scene) ? 1 : 0));
   f.output = glm::vec4(scene.settings.exposure, scene.settings.dither ? 1.0f : 0.0f,
                        scene.environment.intensity, glm::radians(scene.environment.rotation_deg));
   f.frame_params = glm::vec4(c.near_plane, scene.settings.max_error, 0, 0);

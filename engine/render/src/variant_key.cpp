@@ -42,6 +42,8 @@ bool featurePresent(SettingFeature f, const VariantKey& k) {
       return k.ao;
     case SettingFeature::SkyEnvironment:
       return k.environment == EnvironmentKind::Sky;
+    case SettingFeature::VaryingAmbient:
+      return k.ambientIbl() && (k.environment != EnvironmentKind::Uniform || k.uber);
   }
   return true;
 }
@@ -65,6 +67,10 @@ std::string featureAbsentReason(SettingFeature f, const VariantKey& k) {
       return k.ambientIbl() ? "ao is none" : "no ambient IBL";
     case SettingFeature::SkyEnvironment:
       return "the environment is not the procedural sky";
+    case SettingFeature::VaryingAmbient:
+      // Every prefiltered texel of a uniform environment is its radiance (Ibl.FurnaceUniform).
+      return k.ambientIbl() ? "uniform environment: every lookup reads the same radiance"
+                            : featureAbsentReason(SettingFeature::AmbientIbl, k);
   }
   return "";
 }
@@ -88,6 +94,8 @@ const char* featureInvalid(SettingFeature f) {
       return "ambient occlusion options without ao: gtao";
     case SettingFeature::SkyEnvironment:
       return "sky options without the procedural sky";
+    case SettingFeature::VaryingAmbient:
+      return "options of a varying environment under a uniform one or without ambient IBL";
   }
   return "";
 }
@@ -286,7 +294,7 @@ std::vector<std::string> validateKey(const VariantKey& k) {
   for (SettingFeature f :
        {SettingFeature::Lights, SettingFeature::SphereLights, SettingFeature::TubeLights,
         SettingFeature::AmbientIbl, SettingFeature::ShadowedLights, SettingFeature::ScreenSpaceAo,
-        SettingFeature::SkyEnvironment}) {
+        SettingFeature::SkyEnvironment, SettingFeature::VaryingAmbient}) {
     if (featurePresent(f, k)) continue;
     bool changed = false;
     forEachSetting([&](const auto& row) {
@@ -353,10 +361,10 @@ std::string materialList(const Scene& scene, const std::vector<size_t>& ids) {
 
 // Lights of shape t (lightShape: a spot counts as its point or sphere), or spots for t = Spot.
 size_t countLights(const Scene& scene, LightType t) {
-  const std::vector<Light> lights = renderedLights(scene);
-  return size_t(std::count_if(lights.begin(), lights.end(), [&](const Light& l) {
-    return t == LightType::Spot ? l.type == t : lightShape(l) == t;
-  }));
+  const size_t sun = t == LightType::Directional && skySunIsLight(scene) ? 1 : 0;  // the sky's
+  return sun + size_t(std::count_if(scene.lights.begin(), scene.lights.end(), [&](const Light& l) {
+           return t == LightType::Spot ? l.type == t : lightShape(l) == t;
+         }));
 }
 
 // Reason of a setting-derived define: the setting, or why it was reset.
@@ -527,19 +535,7 @@ std::vector<KeyDefine> ambientDefines(const VariantKey& k, const Scene& scene) {
                  : k.default_lit ? "default_lit materials present"
                                  : "no default_lit material: no image-based lighting code"});
   out.push_back(clearCoatDefine(k));
-  for (KeyDefine& d : settingKeyDefines(k, scene, SettingPass::Ambient)) {
-    // Under a uniform environment every lobe sample reads the split sum's own radiance (each
-    // prefiltered texel is the environment's, Ibl.FurnaceUniform): the samples would change no
-    // pixel beyond rounding, so the program keeps the split sum.
-    if (d.name == "HV_IBL_SPECULAR" && k.environment == EnvironmentKind::Uniform && !k.uber &&
-        s.ibl_specular == IblSpecular::Sampled) {
-      d.value = std::to_string(int(IblSpecular::SplitSum));
-      d.why =
-          "settings.ibl_specular = sampled under a uniform environment: every sample reads "
-          "the split sum's radiance, so the split sum";
-    }
-    out.push_back(d);
-  }
+  for (KeyDefine& d : settingKeyDefines(k, scene, SettingPass::Ambient)) out.push_back(d);
   out.push_back({"HV_AMBIENT_TERMS", std::to_string(int(s.ambient_terms)),
                  s.ambient_terms == 3 ? "diffuse and specular (all terms)"
                                       : "term mask " + std::to_string(int(s.ambient_terms)) +

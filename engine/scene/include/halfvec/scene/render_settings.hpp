@@ -171,6 +171,7 @@ enum class SettingFeature : uint8_t {
   ShadowedLights,  // a light with `shadows: true`
   ScreenSpaceAo,   // `ao: gtao` where the ambient pass lights a default_lit material
   SkyEnvironment,  // the environment is the procedural sky (its sun)
+  VaryingAmbient,  // AmbientIbl with an environment that is not uniform (its radiance varies)
 };
 
 // Another setting that makes this one change no code, and the value it then takes in the key.
@@ -311,7 +312,7 @@ struct SettingInfo {
                  .label = "IBL direction"}))                                                       \
   /* split sum (Karis 2013 eq. 8) or the lobe's mean radiance from 16 samples; docs/ibl.md */       \
   X(IblSpecular, ibl_specular, IblSpecular::SplitSum, "ibl_specular",                              \
-    (SettingInfo{.feature = SettingFeature::AmbientIbl, .define = "HV_IBL_SPECULAR",               \
+    (SettingInfo{.feature = SettingFeature::VaryingAmbient, .define = "HV_IBL_SPECULAR",               \
                  .pass = SettingPass::Ambient, .trade = true, .trade_group = "environment",        \
                  .label = "IBL specular"}))                                                        \
   /* the sky's sun in the environment or as a directional light; docs/ibl.md */                 \
