@@ -14,7 +14,8 @@ namespace hv::app {
 // Formatting shared by the writers.
 std::string fmtNum(const char* f, double v);
 // A goals table's row: configurations within tol, the worst peak and bias, met or missed.
-std::string goalRow(const std::string& goal, const eval::GoalCheck& c, double tol);
+// `need`: how many configurations the goal asks to be within (all of them where negative).
+std::string goalRow(const std::string& goal, const eval::GoalCheck& c, double tol, int need = -1);
 std::string pct(double v);   // "12.3%"
 std::string spct(double v);  // "+12.3%"
 std::string num(double v);   // "%g"

@@ -75,7 +75,7 @@ float sphereSolidAngle(float sin2) {
 // grazing views and high roughness (1.4-1.6 for a sphere of r/d 0.25 overhead, seen at N.V 0.36,
 // roughness 0.5). Where both vary smoothly over the cone, the ratio of their sums at a few of its
 // points is the ratio of their integrals, and the LTC's exact integral I times it is the lobe's.
-// The points: two, at +-k tan(sigma) (e1 - e2) / sqrt(2) around the cone's axis c (e1 across the
+// The points: two, at +-k tan(sigma) (e1 -+ e2) / sqrt(2) around the cone's axis c (e1 across the
 // plane of c and N, e2 = c x e1; sin2 = sin^2(sigma)); k = 0.6, chosen on the sweep. Whether
 // two points represent the light is tested on the LTC itself, whose integral is known: their
 // quadrature omega (D(x1) + D(x2)) / 2 against I, and against omega D(c). Each disagreement
@@ -85,13 +85,20 @@ float sphereSolidAngle(float sin2) {
 // 2). The constants were chosen on the sphere sweep and configurations off it (the ranges tried:
 // docs/lights.md); weight 0: the LTC alone. As the light shrinks, both tests and the ratio become
 // exact: the point light's limit, the lobe's own value times the solid angle. omega: the light's
-// solid angle (for a capsule, a bound); the ratio is clamped to [0, 16].
+// solid angle (for a capsule, a bound); the ratio is clamped to [0, 16]. The diagonal is chosen
+// by the side of the plane of c and N the view is on, e1 - e2 on one side, e1 + e2 on the other,
+// turning through e1 alone within HV_LTC_CORRECTION_MIRROR_BAND of that plane (|V.e1| below it):
+// a configuration and its mirror image across the plane then take mirrored points. One diagonal
+// for every view made them differ by up to 25% (roughness 0.75, r/d 0.5, elevation 30, views at
+// azimuth +-170 degrees; LtcLights.SphereAndItsMirrorImageShadeAlike); both diagonals
+// averaged cost a quarter more light pass on many_lights (docs/lights.md, "Light correction").
 const float HV_LTC_CORRECTION_K = 0.6f;
 const float HV_LTC_CORRECTION_INTEGRAL_TOL = 1.0f;
 const float HV_LTC_CORRECTION_AXIS_TOL = 0.7f;
 const float HV_LTC_CORRECTION_AXIS_TOL_POINTS = 2.0f;
-vec3 ltcCorrection(Surface s, ShadingPoint sp, vec3 c, vec3 along, float sin2, float omega,
-                   float I) {
+const float HV_LTC_CORRECTION_MIRROR_BAND = 0.05f;
+vec3 ltcCorrectionDiagonal(Surface s, ShadingPoint sp, vec3 c, vec3 along, float sin2, float omega,
+                           float I, float diagonal) {
   // The offset stops at sin^2 = 0.9 (72 degrees): inside the sphere sin2 is 1, and the tests
   // below then keep the weight small.
   float s2 = min(sin2, 0.9f);
@@ -105,7 +112,8 @@ vec3 ltcCorrection(Surface s, ShadingPoint sp, vec3 c, vec3 along, float sin2, f
   float l2 = dot(a1, a1);
   e1 = l2 > 1e-8f ? a1 * inversesqrt(l2) : e1;
   e2 = cross(c, e1);
-  vec3 off = (HV_LTC_CORRECTION_K * 0.70710678f * sqrt(s2 / (1.0f - s2))) * (e1 - e2) + along;
+  vec3 off = (HV_LTC_CORRECTION_K * 0.70710678f * sqrt(s2 / (1.0f - s2))) * (e1 - diagonal * e2) +
+             along;
   vec3 L1 = normalize(c + off);
   vec3 L2 = normalize(c - off);
   vec3 f = specularTerm(s, sp, L1, 1.0f, 1.0f) + specularTerm(s, sp, L2, 1.0f, 1.0f);
@@ -120,6 +128,13 @@ vec3 ltcCorrection(Surface s, ShadingPoint sp, vec3 c, vec3 along, float sin2, f
                                               1.0f / HV_LTC_CORRECTION_AXIS_TOL_POINTS,
                                               step(0.0f, u_axis)));
   return mix(vec3(1.0f), ratio, w);
+}
+vec3 ltcCorrection(Surface s, ShadingPoint sp, vec3 c, vec3 along, float sin2, float omega,
+                   float I) {
+  vec3 across = cross(c, s.N);
+  float v_side = dot(sp.V, across) * inversesqrt(max(dot(across, across), 1e-16f));
+  float diagonal = clamp(v_side * (1.0f / HV_LTC_CORRECTION_MIRROR_BAND), -1.0f, 1.0f);
+  return ltcCorrectionDiagonal(s, sp, c, along, sin2, omega, I, diagonal);
 }
 #endif
 
@@ -184,9 +199,103 @@ vec3 ltcBandCorrection(Surface s, ShadingPoint sp, vec3 L, float sin2, float I) 
 }
 #endif
 
+#if HV_LTC_LIGHT_CORRECTION
+// The integral of (1 + x^2)^-2 from 0 to u (odd in u).
+float cauchy2Integral(float u) { return 0.5f * (u / (1.0f + u * u) + atan(u)); }
+
+// The light correction of the part above the surface of a straddling sphere (L: toward its
+// center, sin2 = sin^2(sigma), I: the LTC's exact integral over that part), which the LTC alone
+// gets wrong near the horizon at grazing views (docs/lights.md, "Straddling spheres: the lobe over
+// the part above"). On the tangent plane at unit distance along L the silhouette is a disk of
+// radius t = tan(sigma), the horizon a chord at y0 along the disk's upward direction e_up; the
+// part above is cut into HV_LTC_SEGMENT_ROWS rows of equal height (a point at (x, y) weighs its
+// area over |p|^3: its solid angle). Three estimates of the lobe / LTC ratio, blended by where
+// each holds:
+// - `segment`: three cells of equal width per row, the lobe's sum over the LTC's at the 9 centres
+//   (weighted down, as ltcCorrection, where the LTC's sum there misses I). Right where the lobe is
+//   wide next to the cells: `resolved`, from the lobe at the rows' sides against their middles.
+// - `rows`: at grazing views the lobe is narrow across the plane of incidence (three cells miss
+//   it), but there it is GGX's D of the half vector's tilt across that plane, which grows linearly
+//   with the distance from it: f(x0) / (1 + ((x - x0) / b)^2)^2 along a row (Walter et al. 2007
+//   eq. 33; x0 where the row crosses the plane of N and V, b from f at x0 +- delta), integrated in
+//   closed form over the row's width. Right where the rows resolve the lobe's height: a part no
+//   higher than alpha, fading out at 2 alpha.
+// - the band's cone (ltcBandCorrection): points about the part's centroid, for the rest; it fades
+//   to no correction (the LTC alone) as the part grows from 8 to 16 alpha high, where points near
+//   its centroid no longer see the lobe.
+// Measured on the sphere sweep's straddling rows: docs/lights.md.
+#define HV_LTC_SEGMENT_ROWS 3
+const float HV_LTC_ROWS_HEIGHT = 1.0f;  // the rows' estimate is whole below this height / alpha
+const float HV_LTC_BAND_HEIGHT = 8.0f;  // the band's cone is whole below this height / alpha
+vec3 ltcSegmentCorrection(Surface s, ShadingPoint sp, vec3 L, float sin2, float I) {
+  float t = sqrt(sin2 / max(1.0f - sin2, 1e-8f));
+  float NoL = dot(s.N, L);
+  vec3 up = s.N - L * NoL;
+  float up_len = sqrt(max(dot(up, up), 1e-16f));
+  vec3 e_up = up * (1.0f / up_len);
+  vec3 e_side = cross(L, e_up);
+  float y0 = clamp(-NoL / up_len, -t, t);
+  float height = t - y0;
+  float dy = height * (1.0f / float(HV_LTC_SEGMENT_ROWS));
+  vec3 m = cross(s.N, sp.V);  // normal to the plane of incidence
+  float m_side = dot(e_side, m);
+  vec3 f = vec3(0.0f);        // the lobe over the cells
+  float d = 0.0f;             // the LTC over the cells
+  float f_mid = 0.0f;         // the lobe at the rows' middle cells
+  float f_side = 0.0f;        // and at their side cells
+  vec3 Q = vec3(0.0f);        // the lobe's integral over the rows
+  for (int i = 0; i < HV_LTC_SEGMENT_ROWS; ++i) {
+    float y = y0 + dy * (float(i) + 0.5f);
+    float half_width = sqrt(max(t * t - y * y, 0.0f));
+    vec3 q = L + e_up * y;
+    for (int j = -1; j <= 1; ++j) {
+      vec3 p = q + e_side * (half_width * (2.0f / 3.0f) * float(j));
+      float inv_len = inversesqrt(dot(p, p));
+      float w = (2.0f / 3.0f) * half_width * dy * inv_len * inv_len * inv_len;
+      vec3 Lp = p * inv_len;
+      vec3 fp = specularTerm(s, sp, Lp, w, 1.0f);
+      f += fp;
+      f_mid += j == 0 ? fp.y : 0.0f;
+      f_side += j == 0 ? 0.0f : 0.5f * fp.y;
+      d += w * ltcDensity(sp.ltc, Lp);
+    }
+    // The row's crossing of the plane of incidence (its middle where the row runs along it).
+    float x0 = abs(m_side) > 1e-6f ? -dot(q, m) / m_side : 0.0f;
+    x0 = clamp(x0, -half_width, half_width);
+    float delta = max(0.25f * half_width, 1e-20f);
+    vec3 p0 = q + e_side * x0;
+    vec3 pa = q + e_side * (x0 + delta);
+    vec3 pb = q + e_side * (x0 - delta);
+    float inv0 = inversesqrt(dot(p0, p0));
+    float inva = inversesqrt(dot(pa, pa));
+    float invb = inversesqrt(dot(pb, pb));
+    vec3 f0 = specularTerm(s, sp, p0 * inv0, inv0 * inv0 * inv0, 1.0f);
+    vec3 f1 = 0.5f * (specularTerm(s, sp, pa * inva, inva * inva * inva, 1.0f) +
+                      specularTerm(s, sp, pb * invb, invb * invb * invb, 1.0f));
+    // (1 + (delta / b)^2)^2 = f0 / f1; a lobe no lower at x0 +- delta is flat over the row.
+    float k = sqrt(max(f0.y, 1e-30f) / max(f1.y, 1e-30f));
+    float b = delta * inversesqrt(max(k - 1.0f, 1e-8f));
+    float row =
+        b * (cauchy2Integral((half_width - x0) / b) + cauchy2Integral((half_width + x0) / b));
+    Q += f0 * (min(row, 2.0f * half_width) * dy);
+  }
+  vec3 ratio = clamp(f / max(sp.ltc_spec * d, vec3(1e-30f)), vec3(0.0f), vec3(16.0f));
+  float u_int = (d - I) / max(d + I, 1e-30f);
+  vec3 segment =
+      mix(vec3(1.0f), ratio, saturate(1.0f - abs(u_int) * (1.0f / HV_LTC_CORRECTION_INTEGRAL_TOL)));
+  float resolved = saturate(4.0f * f_side / max(f_mid, 1e-30f) - 1.0f);
+  vec3 rows = clamp(Q / max(sp.ltc_spec * I, vec3(1e-30f)), vec3(0.0f), vec3(16.0f));
+  float alpha = max(s.alpha, 1e-8f);
+  float w_rows = saturate(2.0f - height / (HV_LTC_ROWS_HEIGHT * alpha)) * (1.0f - resolved);
+  vec3 band = mix(ltcBandCorrection(s, sp, L, sin2, I), vec3(1.0f),
+                  saturate(height / (HV_LTC_BAND_HEIGHT * alpha) - 1.0f));
+  return mix(mix(band, segment, resolved), rows, w_rows);
+}
+#endif
+
 // ltcSphereSpecular for a sphere that straddles the surface's horizon (ltcSphereSpecularStraddles
 // below): the part below the surface cut off (ltcSphereIntegralAbove), and the light correction
-// taken over the part above (ltcBandCorrection).
+// taken over the part above (ltcSegmentCorrection).
 vec3 ltcSphereSpecularAbove(Surface s, ShadingPoint sp, vec3 Lc, vec3 L, float d2, float radius,
                             float falloff) {
   float d2c = max(d2, max(radius * radius, HV_MIN_LIGHT_DIST2));
@@ -194,7 +303,7 @@ vec3 ltcSphereSpecularAbove(Surface s, ShadingPoint sp, vec3 Lc, vec3 L, float d
   float I = ltcSphereIntegralAbove(sp.ltc, s.N, Lc, r_eff, ltcSphereFormFactor(sp.ltc, Lc, r_eff));
   vec3 specular = sp.ltc_spec * (I * falloff * d2c / (PI * r_eff * r_eff));
 #if HV_LTC_LIGHT_CORRECTION
-  specular = specular * ltcBandCorrection(s, sp, L, r_eff * r_eff / d2c, I);
+  specular = specular * ltcSegmentCorrection(s, sp, L, r_eff * r_eff / d2c, I);
 #endif
   return specular;
 }
@@ -211,7 +320,7 @@ vec3 ltcSphereSpecularCut(Surface s, ShadingPoint sp, vec3 Lc, vec3 L, float d2,
   vec3 scale = sp.ltc_spec * (falloff * d2c / (PI * r_eff * r_eff));
 #if HV_LTC_LIGHT_CORRECTION
   float sin2 = r_eff * r_eff / d2c;
-  return scale * (I_above * ltcBandCorrection(s, sp, L, sin2, I_above) -
+  return scale * (I_above * ltcSegmentCorrection(s, sp, L, sin2, I_above) -
                   I_whole * ltcCorrection(s, sp, L, vec3(0.0f), sin2, sphereSolidAngle(sin2),
                                           I_whole));
 #else
