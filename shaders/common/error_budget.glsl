@@ -40,14 +40,14 @@
 // filtering in x stays inside one (offset, azimuth) block (the roughness coordinate is clamped
 // to it); the lookup takes the nearest offset and azimuth (sphereRpLogRatio).
 #define HV_ERR_ROUGHNESS_CELLS 8
-#define HV_ERR_SIN_CELLS 8
-#define HV_ERR_NOV_CELLS 8
-#define HV_ERR_OFFSET_CELLS 8
-#define HV_ERR_AZIMUTH_CELLS 3  // cos(phi) = 1 (toward N), 0 (sideways), -1 (toward the horizon)
+#define HV_ERR_SIN_CELLS 16
+#define HV_ERR_NOV_CELLS 16
+#define HV_ERR_OFFSET_CELLS 16
+#define HV_ERR_AZIMUTH_CELLS 5  // cos(phi) from 1 (toward N) through 0 (sideways) to -1 (horizon)
 #define HV_ERR_TEXELS_X (HV_ERR_ROUGHNESS_CELLS * HV_ERR_OFFSET_CELLS * HV_ERR_AZIMUTH_CELLS)
 #define HV_ERR_CELLS (HV_ERR_TEXELS_X * HV_ERR_SIN_CELLS * HV_ERR_NOV_CELLS)
-// Footprints per offset cell: the last cell, 3.5 footprints from R, stands for every farther one.
-const float HV_ERR_OFFSET_STEP = 0.5f;
+// Footprints per offset cell: the last cell, 3.75 footprints from R, stands for every farther one.
+const float HV_ERR_OFFSET_STEP = 0.25f;
 // The luminance the budget judges errors in (Rec. 709 weights, as tonemap.glsl).
 const vec3 HV_ERR_LUMA = vec3(0.2126f, 0.7152f, 0.0722f);
 // Smallest sin(sigma) and N.V of the table (below them, the first and last cells).

@@ -198,12 +198,12 @@ std::string errorTableSource(const ErrorFit& fit, const ErrorFitOptions& o,
     << "namespace hv {\nnamespace {\n"
     << "// ln(E_rp / R) per cell, in texel order (error_budget.glsl).\n"
     << "constexpr float kTable[] = {\n";
-  s << std::setprecision(6);
+  s << std::setprecision(4);
   for (size_t c = 0; c < fit.table.size(); c += 8) {
     s << "   ";
     for (size_t q = c; q < std::min(c + 8, fit.table.size()); ++q) {
       std::ostringstream v;
-      v << std::setprecision(6) << fit.table[q];
+      v << std::setprecision(4) << fit.table[q];
       std::string t = v.str();
       if (t.find_first_of(".e") == std::string::npos) t += ".0";
       s << " " << t << "f,";
