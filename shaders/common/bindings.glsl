@@ -24,12 +24,19 @@
 #define HV_BINDING_TILE_TYPES 6   // per tile: (points, spheres) of its range, tubes follow
 #define HV_BINDING_CULL_BOUNDS 7  // culling: per tile, block and group, the surface AABB
 #define HV_BINDING_FORWARD_LIGHTS 3  // forward pass: per blended draw, the lights that reach it
+#define HV_BINDING_SHADOW_MASK_LIGHTS 4  // shadow mask pass: per dispatch layer, its light
 #define HV_BINDING_EMITTERS 0          // emitter culling: every sphere and tube light's instance
 #define HV_BINDING_VISIBLE_EMITTERS 1  // emitter culling: those that can cover a pixel, drawn
 #define HV_BINDING_EMITTER_DRAW 2      // emitter culling: the indirect draw, instances counted
 #define HV_BINDING_EMITTER_GROUPS 3    // emitter culling: per workgroup, counts then offsets
 // The tile index list starts with a header of this many uints (the first: the total entries).
 #define HV_TILE_LIST_HEADER_UINTS 4
+// The shadow mask (`shadow_resolution: half`) holds the directional lights' visibility in its
+// first HV_SHADOW_MASK_SUN_LAYERS layers (hv::kMaxDirectionalLights, checked in C++), then at
+// most HV_SHADOW_MASK_MAX_CUBES lights with a cube (half resolution, R8: 0.23 MB a layer at
+// 1280 x 720); shadowed lights beyond render unshadowed, with a warning naming them.
+#define HV_SHADOW_MASK_SUN_LAYERS 4
+#define HV_SHADOW_MASK_MAX_CUBES 32
 
 // ---- Texture units of the passes that read the G-buffer -----------------------------------------
 // The four G-buffer targets, bound together by bindGBuffer (engine/render/src/passes.hpp).
@@ -50,6 +57,11 @@
 // and with depth comparison (shaders/common/shadows.glsl, engine/render/src/shadow_pass.cpp).
 #define HV_UNIT_SHADOW_DEPTH 8
 #define HV_UNIT_SHADOW_COMPARE 9
+// Light pass with `shadow_resolution: half`: the shadow mask pass's visibility (a 2D array, one
+// layer per shadowed light, shadowMaskLayer) and its texels' inverse view distance and normal
+// (passes/shadow_mask.comp), for the upsample; the units the forward pass's environment takes.
+#define HV_UNIT_SHADOW_MASK 11
+#define HV_UNIT_SHADOW_MASK_GEOMETRY 12
 // Ambient pass with `ao: gtao`: the AO pass's output (ao_denoise.comp); unit 4 is free there. The
 // AO pass's denoise reads the raw AO on the same unit.
 #define HV_UNIT_AO 4
@@ -87,6 +99,8 @@
 #define HV_IMAGE_FLOOR 1  // the floor pass's scratch target (DebugOptions::floor_pass)
 #define HV_IMAGE_AO 2     // the AO pass's targets: raw (gtao.comp), then denoised (ao_denoise.comp)
 #define HV_IMAGE_READBACK 1  // Renderer::readGBuffer's decoded base color (gbuffer_decode.comp)
+#define HV_IMAGE_SHADOW_MASK 3           // the shadow mask pass's visibility (one layer a light)
+#define HV_IMAGE_SHADOW_MASK_GEOMETRY 4  // and its texels' inverse view distance and normal
 
 // ---- Uniform locations (explicit, so the C++ never looks a name up) ------------------------------
 #define HV_LOC_MODEL 0          // gbuffer.vert: object to world

@@ -92,4 +92,8 @@
 #define HV_SHADOW_FILTER_PCF 1
 #define HV_SHADOW_FILTER_PCSS 2
 
+// shadow_resolution (HV_SHADOW_RESOLUTION): full, half
+#define HV_SHADOW_RESOLUTION_FULL 0
+#define HV_SHADOW_RESOLUTION_HALF 1
+
 #endif  // HV_SETTING_VALUES_GLSL

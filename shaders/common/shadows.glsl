@@ -9,6 +9,8 @@
 //  HV_SHADOW_FILTER 2|1|0     2 = PCSS (Fernando 2005), 1 = PCF (fixed radius), 0 = hard
 //                             (values: setting_values.glsl)
 //  HV_SHADOW_MAP_SIZE 512     texels per cube face side (settings.shadow_map_size)
+//  HV_SHADOW_RESOLUTION       full: the light pass looks the maps up per pixel; half: the shadow
+//                             mask pass does, per 2x2 pixels (shadow_mask.glsl)
 #ifndef HV_SHADOWS_GLSL
 #define HV_SHADOWS_GLSL
 
@@ -25,6 +27,9 @@
 #endif
 #ifndef HV_SHADOW_MAP_SIZE
 #define HV_SHADOW_MAP_SIZE 512
+#endif
+#ifndef HV_SHADOW_RESOLUTION
+#define HV_SHADOW_RESOLUTION HV_SHADOW_RESOLUTION_FULL
 #endif
 // Bias, in texels of the map at the receiver's distance (measured: docs/lights.md, "Shadows",
 // acne at 80 degrees from the normal against light leaking at contact). The receiver moves along

@@ -10,6 +10,15 @@
 #include "../common/gbuffer.glsl"
 #include "../common/lights.glsl"
 #include "../common/clear_coat.glsl"
+// `shadow_resolution: half`: the shadowed lights' visibility from the shadow mask pass.
+#if HV_SHADOWS && HV_SHADOW_RESOLUTION == HV_SHADOW_RESOLUTION_HALF
+#define HV_SHADOW_MASK 1
+#else
+#define HV_SHADOW_MASK 0
+#endif
+#if HV_SHADOW_MASK
+#include "../common/shadow_mask.glsl"
+#endif
 
 // HV_HAS_CLEAR_COAT 1|0: a clear_coat material is drawn. Its pixels shade every light twice, the
 // base (scaled by coatBaseScale) and the coat's lobe (clear_coat.glsl); an invocation with no
@@ -125,13 +134,21 @@ vec3 probeLight(GpuLight l) { return l.color_inv_range.rgb * step(0.0, l.positio
 #elif HV_SHADOWS
 // Shadowed lights (shadows.glsl): each light's radiance times its visibility at the
 // invocation's pixels, computed for all of them at once (HV_SHADOW_OF, before the pixel loop);
-// a light without a map (shadow_cube = 0) costs the test only.
+// a light without a map (shadow_cube = 0) costs the test only. With `shadow_resolution: half`
+// the visibility is the shadow mask pass's, upsampled (shadow_mask.glsl).
 #if HV_SHADOW_RECEIVERS != HV_LIGHT_PIXELS
 #error "shadowVisibility takes one receiver per pixel of the invocation"
 #endif
+#if HV_SHADOW_MASK
+#define HV_SHADOW_OF(l)                                                                  \
+  vec4 vis = shadowMaskVisibility(l, mask_uv, mask_w, mask_own,                          \
+                                  bvec4(lit[0], lit[1], lit[2], lit[3]), shadow_P, shadow_N)
+#define HV_SUN_SHADOW_OF(l) HV_SHADOW_OF(l)
+#else
 #define HV_SHADOW_OF(l) vec4 vis = lightShadow(l, shadow_P, shadow_N, bvec4(lit[0], lit[1], lit[2], lit[3]))
 #define HV_SUN_SHADOW_OF(l) \
   vec4 vis = sunShadowVisibility(float(l.shadow_cube) - 1.0f, shadow_P, shadow_N, bvec4(lit[0], lit[1], lit[2], lit[3]))
+#endif
 #define HV_EVAL_POINT(l, S, SP, j) (evaluatePointLightAt(l, S[j], SP[j]) * vis[j])
 #define HV_EVAL_SPHERE(l, S, SP, j) (evaluateSphereLightAt(l, S[j], SP[j]) * vis[j])
 #define HV_EVAL_TUBE(l, S, SP, j) (evaluateTubeLightAt(l, S[j], SP[j]) * vis[j])
@@ -331,6 +348,16 @@ void main() {
     shadow_N[j] = s[j].N;
   }
 #endif
+#if HV_SHADOW_MASK
+  // The mask's upsample, once per pixel for every light (shadowMaskWeights).
+  vec2 mask_uv[HV_LIGHT_PIXELS];
+  vec4 mask_w[HV_LIGHT_PIXELS];
+  bvec4 mask_own;
+  for (int j = 0; j < HV_LIGHT_PIXELS; ++j) {
+    mask_own[j] =
+        shadowMaskWeights(pixelOf(j), sp[j].P, s[j].N, u_camera_pos.xyz, mask_uv[j], mask_w[j]);
+  }
+#endif
 
   vec3 sum[HV_LIGHT_PIXELS];
 #if HV_LIGHT_PROBE == 1 || HV_LIGHT_PROBE == 2
@@ -344,6 +371,9 @@ void main() {
     GpuLight l = lights[i];
 #if HV_LIGHT_PROBE == 3
 #define HV_EVAL_ANY(l, S, SP, j) probeAnyLight(l, S[j], SP[j])
+#elif HV_SHADOW_MASK
+    HV_SHADOW_OF(l);
+#define HV_EVAL_ANY(l, S, SP, j) (evaluateLightAt(l, S[j], SP[j]) * vis[j])
 #elif HV_SHADOWS
     vec4 vis = anyLightShadow(l, shadow_P, shadow_N, bvec4(lit[0], lit[1], lit[2], lit[3]));
 #define HV_EVAL_ANY(l, S, SP, j) (evaluateLightAt(l, S[j], SP[j]) * vis[j])

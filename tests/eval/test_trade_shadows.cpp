@@ -41,8 +41,8 @@ const hv::eval::TradeConfig* row(const hv::eval::TradePlan& p, const std::string
 TEST(TradePlan, ShadowedLightsGetFilterAndMapSizeRows) {
   const hv::Scene s = shadowScene(true);
   const hv::eval::TradePlan p = hv::eval::tradePlan(s);
-  for (const char* name :
-       {"shadow_filter=hard", "shadow_filter=pcf", "shadow_map_size=512", "shadow_map_size=2048"}) {
+  for (const char* name : {"shadow_filter=hard", "shadow_filter=pcf", "shadow_map_size=512",
+                           "shadow_map_size=2048", "shadow_resolution=half"}) {
     const hv::eval::TradeConfig* c = row(p, name);
     ASSERT_NE(c, nullptr) << name;
     EXPECT_EQ(c->group, "lights") << name;
@@ -50,6 +50,8 @@ TEST(TradePlan, ShadowedLightsGetFilterAndMapSizeRows) {
   EXPECT_EQ(row(p, "shadow_filter=hard")->settings.shadow_filter, hv::ShadowFilter::Hard);
   EXPECT_EQ(row(p, "shadow_map_size=512")->settings.shadow_map_size, 512);
   EXPECT_EQ(row(p, "shadow_map_size=2048")->settings.shadow_map_size, 2048);
+  EXPECT_EQ(row(p, "shadow_resolution=half")->settings.shadow_resolution,
+            hv::ShadowResolution::Half);
   EXPECT_EQ(row(p, "shadow_filter=pcss"), nullptr);  // the scene's own value: the scene row
   // At the range's top, only half.
   hv::Scene big = s;

@@ -44,6 +44,7 @@ TEST(ShadowKeys, ReadFromLightsAndSettings) {
   const Scene d = loadSceneFromString(R"({"lights": [{"type": "point"}]})", "d.json");
   EXPECT_EQ(d.settings.shadow_filter, ShadowFilter::Pcss);
   EXPECT_EQ(d.settings.shadow_map_size, 1024);
+  EXPECT_EQ(d.settings.shadow_resolution, ShadowResolution::Full);
 }
 
 TEST(ShadowKeys, BadValuesNameTheField) {
@@ -56,6 +57,9 @@ TEST(ShadowKeys, BadValuesNameTheField) {
   e = errorOf(R"({"settings": {"shadow_map_size": 4096}})");
   EXPECT_NE(e.find("/settings/shadow_map_size"), std::string::npos) << e;
   EXPECT_NE(e.find("2048"), std::string::npos) << e;
+  e = errorOf(R"({"settings": {"shadow_resolution": "quarter"}})");
+  EXPECT_NE(e.find("/settings/shadow_resolution"), std::string::npos) << e;
+  EXPECT_NE(e.find("half"), std::string::npos) << e;
 }
 
 TEST(ShadowKeys, EditsAreWrittenBack) {
@@ -65,6 +69,7 @@ TEST(ShadowKeys, EditsAreWrittenBack) {
   edited.lights[1].shadows = true;
   edited.settings.shadow_filter = ShadowFilter::Hard;
   edited.settings.shadow_map_size = 256;
+  edited.settings.shadow_resolution = ShadowResolution::Half;
   const std::string out =
       applyJsonEdits(kScene, sceneEdits(kScene, loaded, edited, false, "s.json"), "s.json");
   const Scene again = loadSceneFromString(out, "s.json");
@@ -73,4 +78,5 @@ TEST(ShadowKeys, EditsAreWrittenBack) {
   EXPECT_FALSE(again.lights[2].shadows);
   EXPECT_EQ(again.settings.shadow_filter, ShadowFilter::Hard);
   EXPECT_EQ(again.settings.shadow_map_size, 256);
+  EXPECT_EQ(again.settings.shadow_resolution, ShadowResolution::Half);
 }

@@ -153,6 +153,34 @@ class LightCulling {
   size_t readbacks_ = 0;
 };
 
+// ---- Shadow mask (shadow_mask_pass.cpp) --------------------------------------------------------
+// settings.shadow_resolution half: the visibility of every light with a shadow map at one pixel
+// per 2x2 block (passes/shadow_mask.comp, one dispatch layer per light), one timed pass
+// "shadow_mask". In: the G-buffer, the lights (their shadow_cube written by the shadow-map pass)
+// and the maps. Out: the mask (R8 2D array, a layer per light: shadow_mask.glsl, shadowMaskLayer)
+// and its texels' geometry (RGBA16F: inverse view distance, octahedral normal), which the light
+// pass upsamples on HV_UNIT_SHADOW_MASK and HV_UNIT_SHADOW_MASK_GEOMETRY.
+class ShadowMaskPass {
+ public:
+  struct Input {
+    GBufferView gbuffer;
+    GLuint lights = 0;                    // the GPU light buffer
+    const std::vector<uint32_t>& mapped;  // the lights with a map (ShadowMaps::Stats::mapped)
+    const ShadowMaps& shadows;
+    gl::DefineSet defines;  // the scene's lighting defines (the lookup is the light pass's)
+  };
+  struct Output {
+    GLuint mask = 0, geometry = 0;
+  };
+  Output run(const PassContext& ctx, const Input& in, int width, int height);
+
+ private:
+  gl::Texture mask_, geometry_;
+  gl::Buffer lights_;  // per dispatch layer: its light's index
+  int width_ = 0, height_ = 0, layers_ = 0;
+  size_t lights_capacity_ = 0;
+};
+
 // ---- Light pass (light_pass.cpp) ---------------------------------------------------------------
 // What the programs that evaluate lights read besides the lights: the LTC table (created in
 // `*ltc` the first time; null: the programs do not read it), the error budget's table on
@@ -174,6 +202,7 @@ class LightPass {
     bool ltc = false;          // the program reads the LTC table (Renderer::lightPassNeedsLtc)
     bool error_table = false;  // and the error budget's (Renderer::lightPassHasBudget)
     const ShadowMaps* shadows = nullptr;  // the shadow atlas, when the program has shadows
+    ShadowMaskPass::Output mask;          // the shadow mask, with shadow_resolution half
   };
   // Adds the direct light of every lit pixel into `hdr` (RGBA16F image).
   void run(const PassContext& ctx, const FrameBlock& frame, const Input& in, GLuint hdr);

@@ -263,9 +263,10 @@ Renderer::FrameLighting Renderer::lightFrame(const PassContext& ctx, FrameUnifor
   const GBufferView gbuffer = t.gbufferView();
   FrameLighting lit;
   // Shadow maps of the shadowed lights (cached until a light or a caster changes).
+  const bool mask = key_.shadows && key_.settings.shadow_resolution == ShadowResolution::Half;
   if (key_.shadows) {
     lit.shadows =
-        p.shadows.run(ctx, {*scene_, *gpu_, key_.settings.shadow_map_size, lights_version_});
+        p.shadows.run(ctx, {*scene_, *gpu_, key_.settings.shadow_map_size, lights_version_, mask});
   }
   runGBufferPass(ctx,
                  {*scene_, *gpu_, key_, gbuffer_descs_, draw_order_,
@@ -283,6 +284,13 @@ Renderer::FrameLighting Renderer::lightFrame(const PassContext& ctx, FrameUnifor
   // The predicted_error view: the light pass's probe with the budget's code compiled in.
   const bool predicted = view == DebugView::PredictedError;
   gl::DefineSet light_defines = lightingDefines();
+  // shadow_resolution half: the visibility once per 2x2 pixels, before the light pass.
+  ShadowMaskPass::Output shadow_mask;
+  if (mask) {
+    shadow_mask = p.shadow_mask.run(
+        ctx, {gbuffer, gpu_->lightBuffer(), lit.shadows.mapped, p.shadows, lightingDefines()},
+        t.width, t.height);
+  }
   if (predicted) {
     for (auto& d : light_defines) {
       if (d.name == "HV_ERROR_BUDGET") d.value = "1";
@@ -298,7 +306,8 @@ Renderer::FrameLighting Renderer::lightFrame(const PassContext& ctx, FrameUnifor
       debug_.light_texel_limit,
       lightPassNeedsLtc() || predicted,
       lightPassHasBudget() || predicted,
-      key_.shadows ? &p.shadows : nullptr};
+      key_.shadows ? &p.shadows : nullptr,
+      shadow_mask};
   p.light.run(ctx, frame.block, light, t.hdr.id());
   // Without an environment the ambient pass would add nothing: the background is black, the HDR
   // target's clear value (docs/performance.md "Passes of the frame").

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "halfvec/gl/log.hpp"
+#include "halfvec/shaders/common/bindings.glsl"
 #include "halfvec/scene/enums.hpp"
 #include "shadow_pass.hpp"
 
@@ -12,6 +13,11 @@ namespace hv::render {
 size_t shadowAtlasCapacity(int map_size) {
   const size_t s = size_t(std::max(map_size, 1));
   return std::max<size_t>(1, kShadowAtlasTexels / (6 * s * s));
+}
+
+size_t shadowLightCapacity(int map_size, bool mask) {
+  const size_t atlas = shadowAtlasCapacity(map_size);
+  return mask ? std::min<size_t>(atlas, HV_SHADOW_MASK_MAX_CUBES) : atlas;
 }
 
 ShadowAssignment assignShadowMaps(const std::vector<Light>& lights, size_t capacity) {
@@ -38,11 +44,14 @@ ShadowAssignment assignShadowMaps(const std::vector<Light>& lights, size_t capac
 }
 
 std::string overBudgetWarning(const std::vector<Light>& lights, const ShadowAssignment& a,
-                              int map_size) {
+                              int map_size, bool mask_full) {
   if (a.over_budget.empty()) return "";
-  std::string msg = "shadow atlas full (" + std::to_string(a.maps.size()) + " cube maps of " +
-                    std::to_string(map_size) + "^2 texels, settings.shadow_map_size): " +
-                    std::to_string(a.over_budget.size()) + " shadowed light" +
+  const std::string full =
+      mask_full ? "shadow mask full (" + std::to_string(a.maps.size()) +
+                      " lights with a cube map, settings.shadow_resolution half)"
+                : "shadow atlas full (" + std::to_string(a.maps.size()) + " cube maps of " +
+                      std::to_string(map_size) + "^2 texels, settings.shadow_map_size)";
+  std::string msg = full + ": " + std::to_string(a.over_budget.size()) + " shadowed light" +
                     (a.over_budget.size() == 1 ? "" : "s") + " rendered unshadowed: ";
   for (size_t k = 0; k < a.over_budget.size(); ++k) {
     msg += (k ? ", " : "") + describeLight(lights, a.over_budget[k]);

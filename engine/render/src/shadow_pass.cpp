@@ -261,12 +261,16 @@ ShadowMaps::Stats ShadowMaps::run(const PassContext& ctx, const Input& in) {
   gl::ScopedPass pass(ctx.timer, "shadows");
   // The lights as the light pass has them (the sky's sun last, where it is a light).
   const std::vector<Light> lights = renderedLights(in.scene);
-  const ShadowAssignment a = assignShadowMaps(lights, shadowAtlasCapacity(in.map_size));
+  const size_t capacity = shadowLightCapacity(in.map_size, in.mask);
+  const ShadowAssignment a = assignShadowMaps(lights, capacity);
   Stats st;
   st.maps = a.maps.size();
   st.over_budget = a.over_budget;
+  for (size_t i : a.maps) st.mapped.push_back(uint32_t(i));
+  for (size_t i : a.suns) st.mapped.push_back(uint32_t(i));
   // The warning names the lights beyond the budget, once per change of that list.
-  const std::string warning = overBudgetWarning(lights, a, in.map_size);
+  const std::string warning =
+      overBudgetWarning(lights, a, in.map_size, capacity < shadowAtlasCapacity(in.map_size));
   if (warning != warned_ && !warning.empty()) logShadowWarning(warning);
   warned_ = warning;
   writeShadowSlots(in, a);

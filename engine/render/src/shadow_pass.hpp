@@ -28,11 +28,15 @@ class ShadowMaps {
     const GpuScene& gpu;
     int map_size = 1024;        // settings.shadow_map_size
     size_t lights_version = 0;  // changes whenever GpuScene::updateLights re-uploaded the lights
+    // settings.shadow_resolution half: the shadow mask's layers bound the lights with a cube
+    // (HV_SHADOW_MASK_MAX_CUBES) besides the atlas.
+    bool mask = false;
   };
   struct Stats {
     size_t maps = 0;      // lights with a map this frame
     size_t rendered = 0;  // of them, re-rendered this frame (the others were cached)
     std::vector<size_t> over_budget;
+    std::vector<uint32_t> mapped;  // the lights with a map: cubes in cube order, then the suns
   };
   // Assigns the cubes, writes each light's shadow_cube (cube + 1, 0 = none) into the GPU light
   // buffer, and renders the cubes whose light or casters changed since they were last rendered.

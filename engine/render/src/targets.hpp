@@ -31,6 +31,7 @@ struct Renderer::Passes {
   LightCulling culling;
   LightPass light;
   ShadowMaps shadows;
+  ShadowMaskPass shadow_mask;
   AoPass ao;
   ForwardPass forward;
   std::unique_ptr<GpuEnvironment> environment;

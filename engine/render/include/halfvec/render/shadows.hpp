@@ -19,6 +19,9 @@ namespace hv::render {
 constexpr size_t kShadowAtlasTexels = size_t(6) * 2048 * 2048;
 // Lights the atlas holds at this face size (at least 1): 16 at 512, 4 at 1024, 1 at 2048.
 size_t shadowAtlasCapacity(int map_size);
+// Lights with a cube at this face size: the atlas's capacity, and with the shadow mask
+// (settings.shadow_resolution half) at most the mask's HV_SHADOW_MASK_MAX_CUBES.
+size_t shadowLightCapacity(int map_size, bool mask);
 
 struct ShadowAssignment {
   std::vector<int> layer;           // per light: its cube in the atlas, -1 for none
@@ -36,8 +39,9 @@ struct ShadowAssignment {
 ShadowAssignment assignShadowMaps(const std::vector<Light>& lights, size_t capacity);
 
 // The warning for the lights beyond the atlas ("" when none), naming them.
+// `mask_full`: the shadow mask's layers, not the atlas, set the capacity.
 std::string overBudgetWarning(const std::vector<Light>& lights, const ShadowAssignment& a,
-                              int map_size);
+                              int map_size, bool mask_full = false);
 
 // "light 3 (sphere at [1, 2.5, 0])": how warnings name a light (lights have no names).
 std::string describeLight(const std::vector<Light>& lights, size_t index);

@@ -141,6 +141,11 @@ HV_SETTING_ENUM(Gamma, HV_GAMMAS);
   V(Pcf, "pcf", HV_SHADOW_FILTER_PCF)    \
   V(Pcss, "pcss", HV_SHADOW_FILTER_PCSS)
 HV_SETTING_ENUM(ShadowFilter, HV_SHADOW_FILTERS);
+// Where the shadowed lights' visibility is computed: per pixel inside the light pass, or once per
+// 2x2 pixels in a pass of its own, upsampled by depth and normal (docs/lights.md, "Shadows").
+#define HV_SHADOW_RESOLUTIONS(V) \
+  V(Full, "full", HV_SHADOW_RESOLUTION_FULL) V(Half, "half", HV_SHADOW_RESOLUTION_HALF)
+HV_SETTING_ENUM(ShadowResolution, HV_SHADOW_RESOLUTIONS);
 // Screen-space ambient occlusion (docs/ambient-occlusion.md): none, or GTAO (Jimenez, Wu, Pesce,
 // Jarabo 2016), its quality (directions x steps), resolution and specular occlusion.
 #define HV_AMBIENT_OCCLUSIONS(V) V(None, "none", HV_AO_NONE) V(Gtao, "gtao", HV_AO_GTAO)
@@ -355,6 +360,10 @@ struct SettingInfo {
     (SettingInfo{.lo = 16, .hi = 2048, .feature = SettingFeature::ShadowedLights,                  \
                  .define = "HV_SHADOW_MAP_SIZE", .pass = SettingPass::Light, .trade = true,        \
                  .trade_group = "lights"}))                                                        \
+  X(ShadowResolution, shadow_resolution, ShadowResolution::Full, "shadow_resolution",              \
+    (SettingInfo{.feature = SettingFeature::ShadowedLights, .define = "HV_SHADOW_RESOLUTION",      \
+                 .pass = SettingPass::Light, .trade = true, .trade_group = "lights",               \
+                 .label = "shadow resolution"}))                                                   \
   /* every feature compiled in, chosen at run time (docs/variants.md) */                           \
   X(bool, uber, false, "uber", (SettingInfo{}))
 // clang-format on

@@ -1,0 +1,59 @@
+// The shadow mask pass (passes.hpp, ShadowMaskPass): settings.shadow_resolution half. The
+// shadowed lights' visibility once per 2x2 pixels, one dispatch layer per light, for the light
+// pass to upsample (shaders/common/shadow_mask.glsl).
+#include <algorithm>
+
+#include "halfvec/scene/scene.hpp"
+#include "passes.hpp"
+#include "pipeline_state.hpp"
+#include "shadow_pass.hpp"
+
+namespace hv::render {
+
+// The mask's first layers are the directional lights' (shadowMaskLayer).
+static_assert(HV_SHADOW_MASK_SUN_LAYERS == kMaxDirectionalLights);
+
+ShadowMaskPass::Output ShadowMaskPass::run(const PassContext& ctx, const Input& in, int width,
+                                           int height) {
+  gl::ScopedPass pass(ctx.timer, "shadow_mask");
+  applyState(PipelineState{});
+  const int w = (width + 1) / 2, h = (height + 1) / 2;
+  // Layers: the sun layers, then one per cube the lights use (at least one, so the light pass
+  // always samples a complete texture).
+  const int cubes = int(std::min<size_t>(in.mapped.size(), HV_SHADOW_MASK_MAX_CUBES));
+  const int layers = HV_SHADOW_MASK_SUN_LAYERS + std::max(cubes, 1);
+  if (w != width_ || h != height_ || layers != layers_ || !mask_) {
+    GLuint id = 0;
+    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
+    mask_ = gl::Texture(id, "shadow mask (visibility, a layer per shadowed light)");
+    glTextureStorage3D(id, 1, GL_R8, w, h, layers);
+    geometry_ = gl::createTexture2D("shadow mask geometry (inverse view distance, normal)",
+                                    GL_RGBA16F, w, h);
+    width_ = w;
+    height_ = h;
+    layers_ = layers;
+  }
+  if (in.mapped.empty()) return {mask_.id(), geometry_.id()};
+  if (in.mapped.size() > lights_capacity_) {
+    lights_capacity_ = std::max<size_t>(in.mapped.size(), 8);
+    lights_ = gl::createBuffer("shadow mask lights", lights_capacity_ * sizeof(uint32_t));
+  }
+  glNamedBufferSubData(lights_.id(), 0, GLsizeiptr(in.mapped.size() * sizeof(uint32_t)),
+                       in.mapped.data());
+  const GLuint prog = ctx.programs.get(
+      {"shadow mask", {{GL_COMPUTE_SHADER, "passes/shadow_mask.comp"}}, in.defines});
+  gl::PassBindings b(kPassSlots, "shadow mask");
+  b.use(prog);
+  bindGBuffer(b, in.gbuffer, ctx.nearest);
+  b.storage(HV_BINDING_LIGHTS, in.lights);
+  b.storage(HV_BINDING_SHADOW_MASK_LIGHTS, lights_.id());
+  b.image(HV_IMAGE_SHADOW_MASK, mask_.id(), GL_WRITE_ONLY, GL_R8, 0, GL_TRUE);
+  b.image(HV_IMAGE_SHADOW_MASK_GEOMETRY, geometry_.id(), GL_WRITE_ONLY, GL_RGBA16F);
+  bindLightTables(b, nullptr, 0, &in.shadows);
+  // 8 x 8 invocations of 4 texels a column each (shadow_mask.comp).
+  glDispatchCompute(GLuint((w + 7) / 8), GLuint((h + 31) / 32), GLuint(in.mapped.size()));
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  return {mask_.id(), geometry_.id()};
+}
+
+}  // namespace hv::render

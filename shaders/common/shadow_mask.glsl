@@ -1,0 +1,94 @@
+// The shadow mask (`settings.shadow_resolution: half`; docs/lights.md, "Shadows", "Half
+// resolution"): the shadow mask pass (passes/shadow_mask.comp) computes each shadowed light's
+// visibility (shadows.glsl, the same lookup as the light pass's at full resolution) once per 2x2
+// pixels, at the pixel at the block's lower left, one layer of a 2D array per light; the light
+// pass reads it back per pixel, upsampled from the four nearest texels with bilinear weights
+// times a depth and a normal weight, so that neither a silhouette nor a crease takes the
+// visibility of the surface across it. GLSL only (the reference has no mask).
+#ifndef HV_SHADOW_MASK_GLSL
+#define HV_SHADOW_MASK_GLSL
+
+#include "bindings.glsl"
+#include "gbuffer.glsl"
+#include "lights.glsl"
+
+// The mask layer of light l (-1: no map): the directional lights' sun layers first, then the
+// cubes (bindings.glsl, HV_SHADOW_MASK_SUN_LAYERS).
+int shadowMaskLayer(GpuLight l) {
+  int slot = int(l.shadow_cube) - 1;
+  bool sun = lightType(l) == HV_LIGHT_DIRECTIONAL;
+  return slot < 0 ? -1 : (sun ? slot : HV_SHADOW_MASK_SUN_LAYERS + slot);
+}
+
+// Relative difference of view distance at which a texel's depth weight reaches 0 (5%, as the AO
+// upsample, ambient.comp aoAt).
+const float HV_SHADOW_MASK_DEPTH_TOLERANCE = 20.0;
+// A texel's normal weight, dot(N_pixel, N_texel)^32: 0.61 at 10 degrees, 0.14 at 20, 0.01 at 30;
+// across a crease (a box's edge) the other face drops out.
+
+#if !defined(HV_CPP) && HV_SHADOWS
+layout(binding = HV_UNIT_SHADOW_MASK) uniform sampler2DArray t_shadow_mask;
+layout(binding = HV_UNIT_SHADOW_MASK_GEOMETRY) uniform sampler2D t_shadow_mask_geometry;
+
+// The upsample of pixel px (world position P, normal N, the camera at C): the texel coordinate
+// `uv` at which one textureGather reads the four nearest texels, and their weights (sum 1).
+// Texel q holds pixel 2q, so pixel px sits at px / 2 in texel units. Returns false, weights 0,
+// where no texel is within the tolerances (a sliver of surface between two others, the far side
+// of a thin object): no texel holds that pixel's surface, and the light pass looks the maps up
+// for it itself (shadowMaskVisibility).
+bool shadowMaskWeights(ivec2 px, vec3 P, vec3 N, vec3 C, out vec2 uv, out vec4 w) {
+  ivec2 size = textureSize(t_shadow_mask_geometry, 0);
+  float inv_dist = 1.0 / max(length(P - C), 1e-30);
+  vec2 f = vec2(px) * 0.5;
+  vec2 b = floor(f);
+  vec2 t = f - b;
+  // The footprint of texels b .. b + 1 (clamped to the edge), in gather order (0,1), (1,1),
+  // (1,0), (0,0).
+  uv = (b + 1.0) / vec2(size);
+  vec4 inv = textureGather(t_shadow_mask_geometry, uv, 0);
+  vec4 nx = textureGather(t_shadow_mask_geometry, uv, 1);
+  vec4 ny = textureGather(t_shadow_mask_geometry, uv, 2);
+  vec4 wb = vec4((1.0 - t.x) * t.y, t.x * t.y, t.x * (1.0 - t.y), (1.0 - t.x) * (1.0 - t.y));
+  // |dist_texel / dist - 1| = |w_pixel - w_texel| / w_texel; a texel of no lit surface (w 0)
+  // never counts.
+  vec4 diff = abs(inv - vec4(inv_dist)) / max(inv, vec4(1e-30));
+  vec4 cosn;
+  for (int k = 0; k < 4; ++k) cosn[k] = dot(N, octDecode(vec2(nx[k], ny[k])));
+  // cos^32 by five squarings: no exp2 and log2 per texel.
+  vec4 wn = clamp(cosn, 0.0, 1.0);
+  for (int k = 0; k < 5; ++k) wn *= wn;
+  w = wb * clamp(1.0 - diff * HV_SHADOW_MASK_DEPTH_TOLERANCE, 0.0, 1.0) * wn;
+  w *= step(vec4(1e-30), inv);
+  float wsum = w.x + w.y + w.z + w.w;
+  bool found = wsum > 1e-4;
+  w = found ? w / wsum : vec4(0.0);
+  return found;
+}
+
+// Visibility of light l at the invocation's pixels from the mask (1: no map), and where a pixel
+// has no texel of its own surface (`own[j]` false) from the maps directly, at its position P[j]
+// and normal N[j] (the full-resolution lookup; `lit[j]` false: not needed). Loops of one pass or
+// none (shadows.glsl says why): a light without a map reads nothing, and the direct lookup runs
+// only where some pixel of the invocation needs it.
+vec4 shadowMaskVisibility(GpuLight l, vec2 uv[HV_SHADOW_RECEIVERS], vec4 w[HV_SHADOW_RECEIVERS],
+                          bvec4 own, bvec4 lit, vec3 P[HV_SHADOW_RECEIVERS],
+                          vec3 N[HV_SHADOW_RECEIVERS]) {
+  vec4 vis = vec4(1.0);
+  int layer = shadowMaskLayer(l);
+  int reads = layer >= 0 ? 1 : 0;
+  for (int k = 0; k < reads; ++k) {
+    for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
+      vis[j] = dot(textureGather(t_shadow_mask, vec3(uv[j], float(layer)), 0), w[j]);
+    }
+    bvec4 miss = bvec4(lit.x && !own.x, lit.y && !own.y, lit.z && !own.z, lit.w && !own.w);
+    int lookups = any(miss) ? 1 : 0;
+    for (int i = 0; i < lookups; ++i) {
+      vec4 direct = anyLightShadow(l, P, N, miss);
+      for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) vis[j] = miss[j] ? direct[j] : vis[j];
+    }
+  }
+  return vis;
+}
+#endif
+
+#endif
