@@ -133,20 +133,26 @@ void printShadowSweep(const Scene& scene, int w, int h, int frames) {
     size_t rendered = 0;
   };
   std::vector<std::unique_ptr<Config>> cs;
-  auto add = [&](const std::string& name, ShadowFilter f, size_t k) {
+  auto add = [&](const std::string& name, ShadowFilter f, size_t k,
+                 ShadowResolution r = ShadowResolution::Full) {
     auto c = std::make_unique<Config>();
     c->name = name;
     c->scene = scene;
     c->scene.settings.shadow_filter = f;
+    c->scene.settings.shadow_resolution = r;
     for (size_t j = 0; j < shadowed.size(); ++j) c->scene.lights[shadowed[j]].shadows = j < k;
     cs.push_back(std::move(c));
   };
   add("no shadows", ShadowFilter::Pcss, 0);
   const std::pair<const char*, ShadowFilter> filters[] = {
       {"hard", ShadowFilter::Hard}, {"pcf", ShadowFilter::Pcf}, {"pcss", ShadowFilter::Pcss}};
-  for (const auto& [label, f] : filters) {
-    for (size_t k = 1; k <= shadowed.size(); ++k) {
-      add(std::string(label) + ", " + std::to_string(k) + " light" + (k == 1 ? "" : "s"), f, k);
+  for (const ShadowResolution r : {ShadowResolution::Full, ShadowResolution::Half}) {
+    for (const auto& [label, f] : filters) {
+      for (size_t k = 1; k <= shadowed.size(); ++k) {
+        add(std::string(label) + (r == ShadowResolution::Half ? " half" : "") + ", " +
+                std::to_string(k) + " light" + (k == 1 ? "" : "s"),
+            f, k, r);
+      }
     }
   }
   render::DebugOptions d;
@@ -171,27 +177,37 @@ void printShadowSweep(const Scene& scene, int w, int h, int frames) {
     }
     return t;
   };
+  // The shadows' cost in the light pass, and with shadow_resolution half in the shadow mask
+  // pass before it ("light + mask").
+  auto lighting = [](const eval::PassSeries& p, size_t k) {
+    double t = p.of("light").at(k);
+    if (std::find(p.order.begin(), p.order.end(), "shadow_mask") != p.order.end()) {
+      t += p.of("shadow_mask").at(k);
+    }
+    return t;
+  };
   std::printf(
       "  shadow sweep, %d interleaved frames: extra cost over no shadows, x floor of the same "
-      "frame (95%% interval)\n  %-18s %22s %22s %10s %14s\n",
-      frames, "configuration", "light pass", "whole frame", "light ms", "maps rendered");
+      "frame (95%% interval)\n  %-22s %22s %22s %10s %14s\n",
+      frames, "configuration", "light + mask passes", "whole frame", "ms", "maps rendered");
   const eval::PassSeries& none = cs[0]->series;
-  std::printf("  %-18s %22s %22s %10.2f %14zu\n", cs[0]->name.c_str(), "", "", none.median("light"),
+  std::printf("  %-22s %22s %22s %10.2f %14zu\n", cs[0]->name.c_str(), "", "", none.median("light"),
               cs[0]->rendered);
   for (size_t i = 1; i < cs.size(); ++i) {
     const eval::PassSeries& s = cs[i]->series;
-    std::vector<double> light, frame;
+    std::vector<double> light, frame, ms;
     for (size_t k = 0; k < size_t(frames); ++k) {
       const double floor = s.of("floor").at(k);
-      light.push_back((s.of("light").at(k) - none.of("light").at(k)) / floor);
+      ms.push_back(lighting(s, k));
+      light.push_back((lighting(s, k) - none.of("light").at(k)) / floor);
       frame.push_back((total(s, k) - total(none, k)) / floor);
     }
     const eval::MedianInterval l = eval::medianInterval(light), fr = eval::medianInterval(frame);
     char lc[64], fc[64];
     std::snprintf(lc, sizeof lc, "%.2f (%.2f - %.2f)", l.median, l.lo, l.hi);
     std::snprintf(fc, sizeof fc, "%.2f (%.2f - %.2f)", fr.median, fr.lo, fr.hi);
-    std::printf("  %-18s %22s %22s %10.2f %14zu\n", cs[i]->name.c_str(), lc, fc, s.median("light"),
-                cs[i]->rendered);
+    std::printf("  %-22s %22s %22s %10.2f %14zu\n", cs[i]->name.c_str(), lc, fc,
+                eval::medianInterval(ms).median, cs[i]->rendered);
   }
   std::printf("  (floor %.3g ms, median of the no-shadows renderer)\n", none.median("floor"));
   std::fflush(stdout);

@@ -79,9 +79,10 @@ ratios.
                as it is and once per set of settings overrides (keys under "settings", JSON
                values, e.g. --settings max_error=0.05 --settings sphere_specular=ltc), frames
                interleaved, each set's passes against its own floor;
-               --shadow-sweep: instead, the light pass's and frame's extra cost over shadows
-               off per filter and number of shadowed lights (the scene's first 1, 2, ...),
-               frames interleaved, and the maps rendered meanwhile (0: cached)
+               --shadow-sweep: instead, the light pass's (with shadow_resolution half, plus
+               the shadow mask pass's) and frame's extra cost over shadows off per filter,
+               resolution and number of shadowed lights (the scene's first 1, 2, ...), frames
+               interleaved, and the maps rendered meanwhile (0: cached)
   --variants   instead: programs specialized to the scene vs the uber build, GPU ms per pass on
                every scene of samples/scenes, as a markdown table (--quick: at most 640x360)
 )";

@@ -21,6 +21,11 @@ using namespace hv::eval;
 namespace {
 
 const ShadowFilterError& pcss(const ShadowCaseResult& r) {
+  return r.filters.at(2);
+}
+// pcss with the shadow mask (shadow_resolution half), the last configuration.
+const ShadowFilterError& pcssHalf(const ShadowCaseResult& r) {
+  EXPECT_EQ(r.filters.back().resolution, ShadowResolution::Half);
   return r.filters.back();
 }
 
@@ -47,27 +52,31 @@ TEST(ShadowAccuracy, PenumbraWidensWithRadiusAndDistanceInEngineAndReference) {
   ShadowCaseOptions o;
   o.size = 96;
   o.samples = 16;
-  double ref[2][2], eng[2][2];
+  double ref[2][2], eng[2][2], half[2][2];
   const float radii[2] = {0.1f, 0.25f}, heights[2] = {0.5f, 1.2f};
   for (int i = 0; i < 2; ++i) {
     for (int j = 0; j < 2; ++j) {
       const ShadowCaseResult r = measureShadowCase({radii[i], 0.0f, {1, 0, 0}, heights[j]}, o);
       ref[i][j] = r.reference_width;
       eng[i][j] = pcss(r).width;
+      half[i][j] = pcssHalf(r).width;
       std::printf(
-          "r %.2f h %.1f: width ref %.4f pcss %.4f m (pixel %.4f m); mean rel: hard %.3f pcf "
-          "%.3f pcss %.3f, penumbra pcss %.3f, worst pcss %.3f\n",
-          double(radii[i]), double(heights[j]), ref[i][j], eng[i][j], r.pixel_metres,
-          r.filters[0].mean_rel, r.filters[1].mean_rel, pcss(r).mean_rel, pcss(r).penumbra_mean_rel,
-          pcss(r).worst_rel);
+          "r %.2f h %.1f: width ref %.4f pcss %.4f half %.4f m (pixel %.4f m); mean rel: hard "
+          "%.3f pcf %.3f pcss %.3f half %.3f, penumbra pcss %.3f, worst pcss %.3f\n",
+          double(radii[i]), double(heights[j]), ref[i][j], eng[i][j], half[i][j], r.pixel_metres,
+          r.filters[0].mean_rel, r.filters[1].mean_rel, pcss(r).mean_rel, pcssHalf(r).mean_rel,
+          pcss(r).penumbra_mean_rel, pcss(r).worst_rel);
       ASSERT_TRUE(std::isfinite(ref[i][j]) && std::isfinite(eng[i][j]));
+      ASSERT_TRUE(std::isfinite(half[i][j]));
       ASSERT_GT(r.penumbra_pixels, 50u);
-      // The goal of the full grid (10%), with room for this grid's 16 samples per pixel.
+      // The goal of the full grid (10%), with room for this grid's 16 samples per pixel; the
+      // half-resolution mask under the same bound.
       EXPECT_LT(pcss(r).mean_rel, 0.15);
+      EXPECT_LT(pcssHalf(r).mean_rel, 0.15);
     }
   }
-  for (const auto* w : {&ref, &eng}) {
-    const char* who = w == &ref ? "reference" : "pcss";
+  for (const auto* w : {&ref, &eng, &half}) {
+    const char* who = w == &ref ? "reference" : w == &eng ? "pcss" : "pcss half";
     for (int j = 0; j < 2; ++j) EXPECT_GT((*w)[1][j], 1.3 * (*w)[0][j]) << who << " radius";
     for (int i = 0; i < 2; ++i) EXPECT_GT((*w)[i][1], 1.3 * (*w)[i][0]) << who << " height";
   }

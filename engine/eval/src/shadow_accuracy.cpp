@@ -276,15 +276,22 @@ ShadowCaseResult measureShadowCase(const ShadowCase& c, const ShadowCaseOptions&
   const ImageRGBf EU = engineDiffuse(unshadowed, n);
   res.unshadowed_mean_rel = meanRelError(EU, ref.unshadowed, floor.use);
 
-  for (ShadowFilter f : {ShadowFilter::Hard, ShadowFilter::Pcf, ShadowFilter::Pcss}) {
+  const std::pair<ShadowFilter, ShadowResolution> configs[] = {
+      {ShadowFilter::Hard, ShadowResolution::Full},
+      {ShadowFilter::Pcf, ShadowResolution::Full},
+      {ShadowFilter::Pcss, ShadowResolution::Full},
+      {ShadowFilter::Pcss, ShadowResolution::Half}};
+  for (const auto& [f, resolution] : configs) {
     scene.settings.shadow_filter = f;
+    scene.settings.shadow_resolution = resolution;
     const ImageRGBf E = engineDiffuse(scene, n);
     const ShadowSums s = shadowSums(E, EU, ref, floor.use);
     ShadowFilterError fe;
     fe.filter = f;
+    fe.resolution = resolution;
     fe.mean_rel = s.ref > 0.0 ? s.abs / s.ref : 0.0;
     fe.penumbra_mean_rel = s.pen_ref > 0.0 ? s.pen_abs / s.pen_ref : 0.0;
-    if (f == ShadowFilter::Pcss) {
+    if (f == ShadowFilter::Pcss && resolution == ShadowResolution::Full) {
       res.pixels = s.pixels;
       res.penumbra_pixels = s.pen_pixels;
       res.reference_noise = s.ref > 0.0 ? s.se / s.ref : 0.0;

@@ -149,8 +149,8 @@ void addLightOptions(std::vector<Option>& o) {
   });
 }
 
-// Shadowed lights (docs/lights.md, "Shadows"): each filter, and PCSS with the smallest maps (the
-// largest texels, so the largest biases and filters).
+// Shadowed lights (docs/lights.md, "Shadows"): each filter, PCSS with the smallest maps (the
+// largest texels, so the largest biases and filters) and with the half-resolution mask.
 void addShadowOptions(std::vector<Option>& o) {
   for (ShadowFilter f : {ShadowFilter::Pcss, ShadowFilter::Pcf, ShadowFilter::Hard}) {
     o.push_back({"shadows, shadow_filter=" + std::string(toString(f)),
@@ -158,6 +158,9 @@ void addShadowOptions(std::vector<Option>& o) {
   }
   o.push_back(
       {"shadows, shadow_map_size=16", [](RenderSettings& s) { s.shadow_map_size = 16; }, true});
+  // The shadow mask: PCSS once per 2x2 pixels, upsampled (shadow_mask.glsl).
+  o.push_back({"shadows, shadow_resolution=half",
+               [](RenderSettings& s) { s.shadow_resolution = ShadowResolution::Half; }, true});
 }
 
 // Screen-space AO (docs/ambient-occlusion.md) on its edge-case scene: each specular occlusion,

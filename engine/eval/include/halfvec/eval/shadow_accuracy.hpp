@@ -57,6 +57,7 @@ double penumbraWidth(const ShadowProfile& p);
 // the reference's of the reference's without visibility).
 struct ShadowFilterError {
   ShadowFilter filter = ShadowFilter::Pcss;
+  ShadowResolution resolution = ShadowResolution::Full;  // half: the shadow mask, upsampled
   double mean_rel = 0.0;           // sum |E - R| / sum R over lit and penumbra pixels
   double penumbra_mean_rel = 0.0;  // the same over penumbra pixels (either between 2% and 98%)
   double worst_rel = 0.0;          // largest |E - R| / R of a profile bin with R >= 10% unlit
@@ -74,7 +75,7 @@ struct ShadowCaseResult {
   double unshadowed_mean_rel = 0.0;
   double pixel_metres = 0.0;  // a pixel's footprint on the floor
   ShadowProfile reference_profile;
-  std::vector<ShadowFilterError> filters;  // hard, pcf, pcss
+  std::vector<ShadowFilterError> filters;  // hard, pcf, pcss, then pcss at half resolution
 };
 ShadowCaseResult measureShadowCase(const ShadowCase& c, const ShadowCaseOptions& o);
 
