@@ -72,6 +72,20 @@ Agreement agreement(const ImageRGBf& half, const ImageRGBf& full) {
   return a;
 }
 
+// Renders `s` at w x h at both resolutions and bounds their agreement (printed).
+void expectAgreement(const std::string& name, const Scene& s, int w, int h, double mean_bound,
+                     double far_bound) {
+  const RenderedFrame full = renderFrame(withResolution(s, ShadowResolution::Full), w, h);
+  const RenderedFrame half = renderFrame(withResolution(s, ShadowResolution::Half), w, h);
+  const Agreement a = agreement(half.hdr, full.hdr);
+  std::printf("%s: mean rel %.4f, off by > 25%%: %.4f of %zu pixels\n", name.c_str(), a.mean_rel,
+              a.far_share, a.pixels);
+  EXPECT_GT(a.pixels, 30000u) << name;
+  EXPECT_LT(a.mean_rel, mean_bound) << name;
+  EXPECT_LT(a.far_share, far_bound) << name;
+  EXPECT_NE(a.mean_rel, 0.0) << name << ": the mask was not used";
+}
+
 }  // namespace
 
 // shadows.json (a capsule and a sphere light, both shadowed, over a box and spheres), per
@@ -83,15 +97,7 @@ TEST(ShadowMask, AgreesWithFullResolutionOnTheSampleScene) {
   for (ShadowFilter f : {ShadowFilter::Hard, ShadowFilter::Pcf, ShadowFilter::Pcss}) {
     Scene sf = s;
     sf.settings.shadow_filter = f;
-    const RenderedFrame full = renderFrame(withResolution(sf, ShadowResolution::Full), 320, 180);
-    const RenderedFrame half = renderFrame(withResolution(sf, ShadowResolution::Half), 320, 180);
-    const Agreement a = agreement(half.hdr, full.hdr);
-    std::printf("%s: mean rel %.4f, off by > 25%%: %.4f of %zu pixels\n",
-                std::string(toString(f)).c_str(), a.mean_rel, a.far_share, a.pixels);
-    EXPECT_GT(a.pixels, 30000u);
-    EXPECT_LT(a.mean_rel, 0.005) << toString(f);
-    EXPECT_LT(a.far_share, 0.006) << toString(f);
-    EXPECT_NE(a.mean_rel, 0.0) << "the mask was not used";
+    expectAgreement(std::string(toString(f)), sf, 320, 180, 0.005, 0.006);
   }
 }
 
@@ -110,15 +116,7 @@ TEST(ShadowMask, DirectionalLightShadowsAgreeWithFullResolution) {
   sun.angular_diameter = 0.03f;
   sun.shadows = true;
   s.lights = {sun};
-  const RenderedFrame full = renderFrame(withResolution(s, ShadowResolution::Full), 256, 192);
-  const RenderedFrame half = renderFrame(withResolution(s, ShadowResolution::Half), 256, 192);
-  const Agreement a = agreement(half.hdr, full.hdr);
-  std::printf("sun: mean rel %.4f, off by > 25%%: %.4f of %zu pixels\n", a.mean_rel, a.far_share,
-              a.pixels);
-  EXPECT_GT(a.pixels, 30000u);
-  EXPECT_LT(a.mean_rel, 0.001);
-  EXPECT_LT(a.far_share, 0.004);
-  EXPECT_NE(a.mean_rel, 0.0) << "the mask was not used";
+  expectAgreement("sun", s, 256, 192, 0.001, 0.004);
 }
 
 // A tall box on the floor, a point light beside it (`hard`: visibility is 0 or 1), seen
