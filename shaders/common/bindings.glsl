@@ -57,9 +57,10 @@
 // and with depth comparison (shaders/common/shadows.glsl, engine/render/src/shadow_pass.cpp).
 #define HV_UNIT_SHADOW_DEPTH 8
 #define HV_UNIT_SHADOW_COMPARE 9
-// Light pass with `shadow_resolution: half`: the shadow mask pass's visibility (a 2D array, one
-// layer per shadowed light, shadowMaskLayer) and its texels' inverse view distance and normal
-// (passes/shadow_mask.comp), for the upsample; the units the forward pass's environment takes.
+// `shadow_resolution: half` (shadow_mask.glsl): the light pass reads the resolved visibility (a
+// 2D array, one layer per shadowed light, shadowMaskLayer) on the first unit; the shadow mask
+// pass's resolve step reads the half-resolution mask there and its texels' inverse view
+// distance and normal on the second. The units the forward pass's environment takes.
 #define HV_UNIT_SHADOW_MASK 11
 #define HV_UNIT_SHADOW_MASK_GEOMETRY 12
 // Ambient pass with `ao: gtao`: the AO pass's output (ao_denoise.comp); unit 4 is free there. The
@@ -99,7 +100,7 @@
 #define HV_IMAGE_FLOOR 1  // the floor pass's scratch target (DebugOptions::floor_pass)
 #define HV_IMAGE_AO 2     // the AO pass's targets: raw (gtao.comp), then denoised (ao_denoise.comp)
 #define HV_IMAGE_READBACK 1  // Renderer::readGBuffer's decoded base color (gbuffer_decode.comp)
-#define HV_IMAGE_SHADOW_MASK 3           // the shadow mask pass's visibility (one layer a light)
+#define HV_IMAGE_SHADOW_MASK 3           // the shadow mask's visibility (one layer a light)
 #define HV_IMAGE_SHADOW_MASK_GEOMETRY 4  // and its texels' inverse view distance and normal
 
 // ---- Uniform locations (explicit, so the C++ never looks a name up) ------------------------------
@@ -109,6 +110,7 @@
 #define HV_LOC_SHADOW_LIGHT 4      // shadow.frag: light center, 1 / far
 #define HV_LOC_AO_PARAMS 5         // gtao.comp, ao_denoise.comp: radius (m), scale, AO size
 #define HV_LOC_FORWARD_LIGHTS 6    // forward.frag: the draw's range of HV_BINDING_FORWARD_LIGHTS
+#define HV_LOC_SHADOW_MASK_LIGHTS 7  // shadow_resolve.comp: the shadowed lights to resolve
 
 // ---- FrameBlock::frame_flags bits (hv::render::FrameFlag), set for the per-term debug views ---
 #define HV_FRAME_NO_BACKGROUND 1u  // background pixels stay black (ambient.comp)

@@ -1,10 +1,12 @@
 // The shadow mask (`settings.shadow_resolution: half`; docs/lights.md, "Shadows", "Half
-// resolution"): the shadow mask pass (passes/shadow_mask.comp) computes each shadowed light's
-// visibility (shadows.glsl, the same lookup as the light pass's at full resolution) once per 2x2
-// pixels, at the pixel at the block's lower left, one layer of a 2D array per light; the light
-// pass reads it back per pixel, upsampled from the four nearest texels with bilinear weights
-// times a depth and a normal weight, so that neither a silhouette nor a crease takes the
-// visibility of the surface across it. GLSL only (the reference has no mask).
+// resolution"), in two steps of the shadow mask pass (engine/render/src/shadow_mask_pass.cpp):
+// passes/shadow_mask.comp computes each shadowed light's visibility (shadows.glsl, the same lookup
+// as the light pass's at full resolution) once per 2x2 pixels, at the pixel at the block's lower
+// left, one layer of a 2D array per light; passes/shadow_resolve.comp upsamples it to every pixel
+// from the four nearest texels with bilinear weights times a depth and a normal weight, so that
+// neither a silhouette nor a crease takes the visibility of the surface across it, into a
+// full-resolution array that the light pass reads with one fetch per pixel and shadowed light.
+// GLSL only (the reference has no mask).
 #ifndef HV_SHADOW_MASK_GLSL
 #define HV_SHADOW_MASK_GLSL
 
@@ -27,15 +29,18 @@ const float HV_SHADOW_MASK_DEPTH_TOLERANCE = 20.0;
 // across a crease (a box's edge) the other face drops out.
 
 #if !defined(HV_CPP) && HV_SHADOWS
+// The resolve step (HV_SHADOW_MASK_RESOLVE): the half-resolution mask and its texels' geometry.
+// The light pass: the resolved, full-resolution mask.
 layout(binding = HV_UNIT_SHADOW_MASK) uniform sampler2DArray t_shadow_mask;
+#if defined(HV_SHADOW_MASK_RESOLVE)
 layout(binding = HV_UNIT_SHADOW_MASK_GEOMETRY) uniform sampler2D t_shadow_mask_geometry;
 
 // The upsample of pixel px (world position P, normal N, the camera at C): the texel coordinate
 // `uv` at which one textureGather reads the four nearest texels, and their weights (sum 1).
 // Texel q holds pixel 2q, so pixel px sits at px / 2 in texel units. Returns false, weights 0,
 // where no texel is within the tolerances (a sliver of surface between two others, the far side
-// of a thin object): no texel holds that pixel's surface, and the light pass looks the maps up
-// for it itself (shadowMaskVisibility).
+// of a thin object): no texel holds that pixel's surface, and the resolve step looks the maps up
+// for it itself (passes/shadow_resolve.comp).
 bool shadowMaskWeights(ivec2 px, vec3 P, vec3 N, vec3 C, out vec2 uv, out vec4 w) {
   ivec2 size = textureSize(t_shadow_mask_geometry, 0);
   float inv_dist = 1.0 / max(length(P - C), 1e-30);
@@ -65,30 +70,21 @@ bool shadowMaskWeights(ivec2 px, vec3 P, vec3 N, vec3 C, out vec2 uv, out vec4 w
   return found;
 }
 
-// Visibility of light l at the invocation's pixels from the mask (1: no map), and where a pixel
-// has no texel of its own surface (`own[j]` false) from the maps directly, at its position P[j]
-// and normal N[j] (the full-resolution lookup; `lit[j]` false: not needed). Loops of one pass or
-// none (shadows.glsl says why): a light without a map reads nothing, and the direct lookup runs
-// only where some pixel of the invocation needs it.
-vec4 shadowMaskVisibility(GpuLight l, vec2 uv[HV_SHADOW_RECEIVERS], vec4 w[HV_SHADOW_RECEIVERS],
-                          bvec4 own, bvec4 lit, vec3 P[HV_SHADOW_RECEIVERS],
-                          vec3 N[HV_SHADOW_RECEIVERS]) {
+#else
+// Visibility of light l at the invocation's pixels px[j] from the resolved mask (1: no map): a
+// loop of one pass or none (shadows.glsl says why), so a light without a map reads nothing.
+vec4 shadowMaskVisibility(GpuLight l, ivec2 px[HV_SHADOW_RECEIVERS]) {
   vec4 vis = vec4(1.0);
   int layer = shadowMaskLayer(l);
   int reads = layer >= 0 ? 1 : 0;
   for (int k = 0; k < reads; ++k) {
     for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
-      vis[j] = dot(textureGather(t_shadow_mask, vec3(uv[j], float(layer)), 0), w[j]);
-    }
-    bvec4 miss = bvec4(lit.x && !own.x, lit.y && !own.y, lit.z && !own.z, lit.w && !own.w);
-    int lookups = any(miss) ? 1 : 0;
-    for (int i = 0; i < lookups; ++i) {
-      vec4 direct = anyLightShadow(l, P, N, miss);
-      for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) vis[j] = miss[j] ? direct[j] : vis[j];
+      vis[j] = texelFetch(t_shadow_mask, ivec3(px[j], layer), 0).r;
     }
   }
   return vis;
 }
+#endif
 #endif
 
 #endif

@@ -135,14 +135,12 @@ vec3 probeLight(GpuLight l) { return l.color_inv_range.rgb * step(0.0, l.positio
 // Shadowed lights (shadows.glsl): each light's radiance times its visibility at the
 // invocation's pixels, computed for all of them at once (HV_SHADOW_OF, before the pixel loop);
 // a light without a map (shadow_cube = 0) costs the test only. With `shadow_resolution: half`
-// the visibility is the shadow mask pass's, upsampled (shadow_mask.glsl).
+// the visibility is the shadow mask pass's, resolved to every pixel (shadow_mask.glsl).
 #if HV_SHADOW_RECEIVERS != HV_LIGHT_PIXELS
 #error "shadowVisibility takes one receiver per pixel of the invocation"
 #endif
 #if HV_SHADOW_MASK
-#define HV_SHADOW_OF(l)                                                                  \
-  vec4 vis = shadowMaskVisibility(l, mask_uv, mask_w, mask_own,                          \
-                                  bvec4(lit[0], lit[1], lit[2], lit[3]), shadow_P, shadow_N)
+#define HV_SHADOW_OF(l) vec4 vis = shadowMaskVisibility(l, mask_px)
 #define HV_SUN_SHADOW_OF(l) HV_SHADOW_OF(l)
 #else
 #define HV_SHADOW_OF(l) vec4 vis = lightShadow(l, shadow_P, shadow_N, bvec4(lit[0], lit[1], lit[2], lit[3]))
@@ -340,22 +338,16 @@ void main() {
 #endif
   }
   if (!any_lit) return;
-#if HV_SHADOWS
+#if HV_SHADOW_MASK
+  // The resolved mask's pixels (shadowMaskVisibility).
+  ivec2 mask_px[HV_LIGHT_PIXELS];
+  for (int j = 0; j < HV_LIGHT_PIXELS; ++j) mask_px[j] = pixelOf(j);
+#elif HV_SHADOWS
   vec3 shadow_P[HV_LIGHT_PIXELS];
   vec3 shadow_N[HV_LIGHT_PIXELS];
   for (int j = 0; j < HV_LIGHT_PIXELS; ++j) {
     shadow_P[j] = sp[j].P;
     shadow_N[j] = s[j].N;
-  }
-#endif
-#if HV_SHADOW_MASK
-  // The mask's upsample, once per pixel for every light (shadowMaskWeights).
-  vec2 mask_uv[HV_LIGHT_PIXELS];
-  vec4 mask_w[HV_LIGHT_PIXELS];
-  bvec4 mask_own;
-  for (int j = 0; j < HV_LIGHT_PIXELS; ++j) {
-    mask_own[j] =
-        shadowMaskWeights(pixelOf(j), sp[j].P, s[j].N, u_camera_pos.xyz, mask_uv[j], mask_w[j]);
   }
 #endif
 

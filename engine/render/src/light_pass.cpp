@@ -75,9 +75,8 @@ void LightPass::run(const PassContext& ctx, const FrameBlock& frame, const Input
   }
   bindLightTables(b, in.ltc ? &ltc_ : nullptr, in.error_table ? HV_UNIT_ERROR_TABLE : 0,
                   in.shadows);
-  if (in.mask.mask) {  // shadow_resolution half: the mask and its geometry (shadow_mask.glsl)
+  if (in.mask.mask) {  // shadow_resolution half: the resolved mask (shadow_mask.glsl)
     b.texture(HV_UNIT_SHADOW_MASK, in.mask.mask, ctx.nearest);
-    b.texture(HV_UNIT_SHADOW_MASK_GEOMETRY, in.mask.geometry, ctx.nearest);
   }
   glDispatchCompute(frame.viewport.z, (frame.viewport.w + kLightGroupTiles - 1) / kLightGroupTiles,
                     1);

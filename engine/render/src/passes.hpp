@@ -154,12 +154,13 @@ class LightCulling {
 };
 
 // ---- Shadow mask (shadow_mask_pass.cpp) --------------------------------------------------------
-// settings.shadow_resolution half: the visibility of every light with a shadow map at one pixel
-// per 2x2 block (passes/shadow_mask.comp, one dispatch layer per light), one timed pass
-// "shadow_mask". In: the G-buffer, the lights (their shadow_cube written by the shadow-map pass)
-// and the maps. Out: the mask (R8 2D array, a layer per light: shadow_mask.glsl, shadowMaskLayer)
-// and its texels' geometry (RGBA16F: inverse view distance, octahedral normal), which the light
-// pass upsamples on HV_UNIT_SHADOW_MASK and HV_UNIT_SHADOW_MASK_GEOMETRY.
+// settings.shadow_resolution half, one timed pass "shadow_mask" of two steps: the visibility of
+// every light with a shadow map at one pixel per 2x2 block (passes/shadow_mask.comp, one dispatch
+// layer per light), then resolved to every pixel by a depth- and normal-aware upsample
+// (passes/shadow_resolve.comp). In: the G-buffer, the lights (their shadow_cube written by the
+// shadow-map pass) and the maps. Out: the resolved mask (R8 2D array at the frame's size, a layer
+// per light: shadow_mask.glsl, shadowMaskLayer), which the light pass reads on
+// HV_UNIT_SHADOW_MASK.
 class ShadowMaskPass {
  public:
   struct Input {
@@ -170,14 +171,15 @@ class ShadowMaskPass {
     gl::DefineSet defines;  // the scene's lighting defines (the lookup is the light pass's)
   };
   struct Output {
-    GLuint mask = 0, geometry = 0;
+    GLuint mask = 0;  // the resolved mask
   };
   Output run(const PassContext& ctx, const Input& in, int width, int height);
 
  private:
-  gl::Texture mask_, geometry_;
-  gl::Buffer lights_;  // per dispatch layer: its light's index
-  int width_ = 0, height_ = 0, layers_ = 0;
+  gl::Texture mask_, geometry_;              // step 1: half resolution
+  gl::Texture resolved_;                     // step 2: the frame's resolution
+  gl::Buffer lights_;                        // per dispatch layer: its light's index
+  int width_ = 0, height_ = 0, layers_ = 0;  // the frame's size, the layers
   size_t lights_capacity_ = 0;
 };
 

@@ -1,6 +1,6 @@
 // The shadow mask pass (passes.hpp, ShadowMaskPass): settings.shadow_resolution half. The
-// shadowed lights' visibility once per 2x2 pixels, one dispatch layer per light, for the light
-// pass to upsample (shaders/common/shadow_mask.glsl).
+// shadowed lights' visibility once per 2x2 pixels, one dispatch layer per light, then resolved
+// to every pixel for the light pass (shaders/common/shadow_mask.glsl).
 #include <algorithm>
 
 #include "halfvec/scene/scene.hpp"
@@ -22,28 +22,33 @@ ShadowMaskPass::Output ShadowMaskPass::run(const PassContext& ctx, const Input& 
   // always samples a complete texture).
   const int cubes = int(std::min<size_t>(in.mapped.size(), HV_SHADOW_MASK_MAX_CUBES));
   const int layers = HV_SHADOW_MASK_SUN_LAYERS + std::max(cubes, 1);
-  if (w != width_ || h != height_ || layers != layers_ || !mask_) {
+  if (width != width_ || height != height_ || layers != layers_ || !mask_) {
     GLuint id = 0;
     glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
     mask_ = gl::Texture(id, "shadow mask (visibility, a layer per shadowed light)");
     glTextureStorage3D(id, 1, GL_R8, w, h, layers);
     geometry_ = gl::createTexture2D("shadow mask geometry (inverse view distance, normal)",
                                     GL_RGBA16F, w, h);
-    width_ = w;
-    height_ = h;
+    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
+    resolved_ = gl::Texture(id, "shadow mask, resolved (visibility per pixel, a layer per light)");
+    glTextureStorage3D(id, 1, GL_R8, width, height, layers);
+    width_ = width;
+    height_ = height;
     layers_ = layers;
   }
-  if (in.mapped.empty()) return {mask_.id(), geometry_.id()};
+  if (in.mapped.empty()) return {resolved_.id()};
   if (in.mapped.size() > lights_capacity_) {
     lights_capacity_ = std::max<size_t>(in.mapped.size(), 8);
     lights_ = gl::createBuffer("shadow mask lights", lights_capacity_ * sizeof(uint32_t));
   }
   glNamedBufferSubData(lights_.id(), 0, GLsizeiptr(in.mapped.size() * sizeof(uint32_t)),
                        in.mapped.data());
-  const GLuint prog = ctx.programs.get(
-      {"shadow mask", {{GL_COMPUTE_SHADER, "passes/shadow_mask.comp"}}, in.defines});
   gl::PassBindings b(kPassSlots, "shadow mask");
-  b.use(prog);
+  // Step 1: the visibility at one pixel per 2x2 block, a dispatch layer per light, and the
+  // texels' geometry.
+  const GLuint mask = ctx.programs.get(
+      {"shadow mask", {{GL_COMPUTE_SHADER, "passes/shadow_mask.comp"}}, in.defines});
+  b.use(mask);
   bindGBuffer(b, in.gbuffer, ctx.nearest);
   b.storage(HV_BINDING_LIGHTS, in.lights);
   b.storage(HV_BINDING_SHADOW_MASK_LIGHTS, lights_.id());
@@ -53,7 +58,18 @@ ShadowMaskPass::Output ShadowMaskPass::run(const PassContext& ctx, const Input& 
   // 8 x 8 invocations of 4 texels a column each (shadow_mask.comp).
   glDispatchCompute(GLuint((w + 7) / 8), GLuint((h + 31) / 32), GLuint(in.mapped.size()));
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-  return {mask_.id(), geometry_.id()};
+  // Step 2: every pixel's visibility of every light, upsampled (shadow_resolve.comp).
+  const GLuint resolve = ctx.programs.get(
+      {"shadow resolve", {{GL_COMPUTE_SHADER, "passes/shadow_resolve.comp"}}, in.defines});
+  b.use(resolve);
+  glProgramUniform1ui(resolve, HV_LOC_SHADOW_MASK_LIGHTS, GLuint(in.mapped.size()));
+  b.texture(HV_UNIT_SHADOW_MASK, mask_.id(), ctx.nearest);
+  b.texture(HV_UNIT_SHADOW_MASK_GEOMETRY, geometry_.id(), ctx.nearest);
+  b.image(HV_IMAGE_SHADOW_MASK, resolved_.id(), GL_WRITE_ONLY, GL_R8, 0, GL_TRUE);
+  // 8 x 8 invocations of 4 pixels a column each.
+  glDispatchCompute(GLuint((width + 7) / 8), GLuint((height + 31) / 32), 1);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  return {resolved_.id()};
 }
 
 }  // namespace hv::render

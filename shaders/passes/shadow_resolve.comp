@@ -1,0 +1,67 @@
+#version 450 core
+// Shadow mask pass, second step (`settings.shadow_resolution: half`; shadow_mask.glsl): every
+// pixel's visibility of each shadowed light, upsampled from the half-resolution mask
+// (shadow_mask.comp) by the weights of shadowMaskWeights, computed once per pixel for every light,
+// into that light's layer of a full-resolution array the light pass reads. A pixel none of whose
+// four texels is of its own surface looks the maps up itself (the light pass's full-resolution
+// lookup, shadows.glsl), in a loop of one pass or none: only SIMD rows where some pixel needs it
+// pay for it. Doing this here rather than in the light pass keeps the weights out of the light
+// loops, where they stayed live across every light (docs/lights.md, "Half resolution").
+#define HV_SHADOW_MASK_RESOLVE 1
+#include "../common/frame.glsl"
+#include "../common/gbuffer.glsl"
+#include "../common/lights.glsl"
+#include "../common/shadow_mask.glsl"
+
+// An invocation resolves HV_SHADOW_RECEIVERS pixels of a column (shadowVisibility's receivers).
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(binding = HV_UNIT_MATERIAL) uniform sampler2D t_material;
+layout(binding = HV_UNIT_NORMAL) uniform sampler2D t_normal;
+layout(binding = HV_UNIT_DEPTH) uniform sampler2D t_depth;
+layout(std430, binding = HV_BINDING_LIGHTS) readonly buffer LightBlock { GpuLight lights[]; };
+// The shadowed lights (indices into `lights`), the first u_mask_lights of them.
+layout(std430, binding = HV_BINDING_SHADOW_MASK_LIGHTS) readonly buffer MaskLightBlock {
+  uint mask_lights[];
+};
+layout(location = HV_LOC_SHADOW_MASK_LIGHTS) uniform uint u_mask_lights;
+layout(r8, binding = HV_IMAGE_SHADOW_MASK) uniform writeonly image2DArray i_resolved;
+
+void main() {
+  ivec2 px[HV_SHADOW_RECEIVERS];
+  vec3 P[HV_SHADOW_RECEIVERS];
+  vec3 N[HV_SHADOW_RECEIVERS];
+  vec2 uv[HV_SHADOW_RECEIVERS];
+  vec4 w[HV_SHADOW_RECEIVERS];
+  bvec4 use = bvec4(false);
+  bvec4 miss = bvec4(false);
+  for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
+    px[j] = ivec2(gl_GlobalInvocationID.x, gl_GlobalInvocationID.y * HV_SHADOW_RECEIVERS + j);
+    ivec2 p = min(px[j], ivec2(u_viewport.xy) - 1);
+    uint model = decodeShadingModel(texelFetch(t_material, p, 0).b);
+    N[j] = octDecode(texelFetch(t_normal, p, 0).xy);
+    vec2 suv = (vec2(p) + 0.5) / vec2(u_viewport.xy);
+    P[j] = reconstructWorldPosition(suv, texelFetch(t_depth, p, 0).r, u_inv_view_proj);
+    use[j] = px[j].x < int(u_viewport.x) && px[j].y < int(u_viewport.y) && isLitModel(model);
+    bool own = shadowMaskWeights(p, P[j], N[j], u_camera_pos.xyz, uv[j], w[j]);
+    miss[j] = use[j] && !own;
+  }
+  int lookups = any(miss) ? 1 : 0;
+  for (uint i = 0u; i < u_mask_lights; ++i) {
+    GpuLight l = lights[mask_lights[i]];
+    int layer = shadowMaskLayer(l);
+    vec4 vis;
+    for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
+      vis[j] = dot(textureGather(t_shadow_mask, vec3(uv[j], float(layer)), 0), w[j]);
+    }
+    for (int f = 0; f < lookups; ++f) {
+      vec4 direct = anyLightShadow(l, P, N, miss);
+      for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) vis[j] = miss[j] ? direct[j] : vis[j];
+    }
+    for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
+      if (px[j].x < int(u_viewport.x) && px[j].y < int(u_viewport.y)) {
+        imageStore(i_resolved, ivec3(px[j], layer), vec4(vis[j]));
+      }
+    }
+  }
+}
