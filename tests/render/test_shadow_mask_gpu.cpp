@@ -229,3 +229,28 @@ TEST(ShadowMask, LightsBeyondTheMaskAreUnshadowedAndNamed) {
   r.setScene(s);
   EXPECT_EQ(r.render(64, 64).shadow_maps, size_t(HV_SHADOW_MASK_MAX_CUBES) + 1);
 }
+
+// One renderer through changes of the mask's shape (a light's shadow off, then the frame's
+// size): each frame equals a fresh renderer's of the same scene and size, so nothing of the
+// previous mask (its layers, its size) is read.
+TEST(ShadowMask, ReshapedMaskEqualsAFreshRenderers) {
+  testContext();
+  Scene two = loadScene(std::string(HV_SOURCE_DIR) + "/samples/scenes/shadows.json");
+  two.settings.shadow_resolution = ShadowResolution::Half;
+  Scene one = two;
+  one.lights[0].shadows = false;
+  render::Renderer r;
+  r.setScene(two);
+  r.render(160, 90);
+  r.setScene(one);
+  r.render(160, 90);
+  EXPECT_EQ(r.readHdr().px, renderFrame(one, 160, 90).hdr.px);
+  r.render(161, 91);
+  EXPECT_EQ(r.readHdr().px, renderFrame(one, 161, 91).hdr.px);
+  r.setScene(two);
+  r.render(161, 91);
+  EXPECT_EQ(r.readHdr().px, renderFrame(two, 161, 91).hdr.px);
+  // The same half-resolution size (81 x 46), another full one.
+  r.render(162, 92);
+  EXPECT_EQ(r.readHdr().px, renderFrame(two, 162, 92).hdr.px);
+}
