@@ -11,7 +11,9 @@
 #define HV_SHADOW_MASK_GLSL
 
 #include "bindings.glsl"
+#include "frame.glsl"
 #include "gbuffer.glsl"
+#include "half_res.glsl"
 #include "lights.glsl"
 
 // The mask layer of light l (-1: no map): the directional lights' sun layers first, then the
@@ -22,17 +24,40 @@ int shadowMaskLayer(GpuLight l) {
   return slot < 0 ? -1 : (sun ? slot : HV_SHADOW_MASK_SUN_LAYERS + slot);
 }
 
-// Relative difference of view distance at which a texel's depth weight reaches 0 (5%, as the AO
-// upsample, ambient.comp aoAt).
-const float HV_SHADOW_MASK_DEPTH_TOLERANCE = 20.0;
-// A texel's normal weight, dot(N_pixel, N_texel)^32: 0.61 at 10 degrees, 0.14 at 20, 0.01 at 30;
-// across a crease (a box's edge) the other face drops out.
+// A texel's depth weight is half_res.glsl's (0 at 5% from the pixel's distance, as the AO
+// upsample's); its normal weight, dot(N_pixel, N_texel)^32: 0.61 at 10 degrees, 0.14 at 20,
+// 0.01 at 30; across a crease (a box's edge) the other face drops out.
 
 #if !defined(HV_CPP) && HV_SHADOWS
-// The resolve step (HV_SHADOW_MASK_RESOLVE): the half-resolution mask and its texels' geometry.
+// The resolve step (HV_SHADOW_MASK_PASS 2): the half-resolution mask and its texels' geometry.
 // The light pass: the resolved, full-resolution mask.
 layout(binding = HV_UNIT_SHADOW_MASK) uniform sampler2DArray t_shadow_mask;
-#if defined(HV_SHADOW_MASK_RESOLVE)
+#if defined(HV_SHADOW_MASK_PASS)
+// The shadow mask pass's two steps (HV_SHADOW_MASK_PASS 1: the half-resolution visibility,
+// shadow_mask.comp; 2: the resolve, shadow_resolve.comp) read the G-buffer, the lights and the
+// shadowed lights (indices into `lights`: one per dispatch layer in step 1, all of them in
+// step 2).
+layout(binding = HV_UNIT_MATERIAL) uniform sampler2D t_material;
+layout(binding = HV_UNIT_NORMAL) uniform sampler2D t_normal;
+layout(binding = HV_UNIT_DEPTH) uniform sampler2D t_depth;
+layout(std430, binding = HV_BINDING_LIGHTS) readonly buffer LightBlock { GpuLight lights[]; };
+layout(std430, binding = HV_BINDING_SHADOW_MASK_LIGHTS) readonly buffer MaskLightBlock {
+  uint mask_lights[];
+};
+
+// The G-buffer at pixel p (inside the viewport): whether its surface is lit, its world position
+// P, its normal N and the normal's octahedral code.
+bool shadowMaskSurface(ivec2 p, out vec3 P, out vec3 N, out vec2 code) {
+  uint model = decodeShadingModel(texelFetch(t_material, p, 0).b);
+  code = texelFetch(t_normal, p, 0).xy;
+  N = octDecode(code);
+  vec2 uv = (vec2(p) + 0.5) / vec2(u_viewport.xy);
+  P = reconstructWorldPosition(uv, texelFetch(t_depth, p, 0).r, u_inv_view_proj);
+  return isLitModel(model);
+}
+#endif
+
+#if defined(HV_SHADOW_MASK_PASS) && HV_SHADOW_MASK_PASS == 2
 layout(binding = HV_UNIT_SHADOW_MASK_GEOMETRY) uniform sampler2D t_shadow_mask_geometry;
 
 // The upsample of pixel px (world position P, normal N, the camera at C): the texel coordinate
@@ -42,27 +67,20 @@ layout(binding = HV_UNIT_SHADOW_MASK_GEOMETRY) uniform sampler2D t_shadow_mask_g
 // of a thin object): no texel holds that pixel's surface, and the resolve step looks the maps up
 // for it itself (passes/shadow_resolve.comp).
 bool shadowMaskWeights(ivec2 px, vec3 P, vec3 N, vec3 C, out vec2 uv, out vec4 w) {
-  ivec2 size = textureSize(t_shadow_mask_geometry, 0);
   float inv_dist = 1.0 / max(length(P - C), 1e-30);
-  vec2 f = vec2(px) * 0.5;
-  vec2 b = floor(f);
-  vec2 t = f - b;
-  // The footprint of texels b .. b + 1 (clamped to the edge), in gather order (0,1), (1,1),
-  // (1,0), (0,0).
-  uv = (b + 1.0) / vec2(size);
+  vec4 wb;
+  halfResFootprint(px, textureSize(t_shadow_mask_geometry, 0), uv, wb);
   vec4 inv = textureGather(t_shadow_mask_geometry, uv, 0);
   vec4 nx = textureGather(t_shadow_mask_geometry, uv, 1);
   vec4 ny = textureGather(t_shadow_mask_geometry, uv, 2);
-  vec4 wb = vec4((1.0 - t.x) * t.y, t.x * t.y, t.x * (1.0 - t.y), (1.0 - t.x) * (1.0 - t.y));
-  // |dist_texel / dist - 1| = |w_pixel - w_texel| / w_texel; a texel of no lit surface (w 0)
-  // never counts.
-  vec4 diff = abs(inv - vec4(inv_dist)) / max(inv, vec4(1e-30));
+  // A texel of no lit surface (w 0) never counts.
+  vec4 diff = halfResDistanceDiff(inv, inv_dist);
   vec4 cosn;
   for (int k = 0; k < 4; ++k) cosn[k] = dot(N, octDecode(vec2(nx[k], ny[k])));
   // cos^32 by five squarings: no exp2 and log2 per texel.
   vec4 wn = clamp(cosn, 0.0, 1.0);
   for (int k = 0; k < 5; ++k) wn *= wn;
-  w = wb * clamp(1.0 - diff * HV_SHADOW_MASK_DEPTH_TOLERANCE, 0.0, 1.0) * wn;
+  w = wb * halfResDepthWeight(diff) * wn;
   w *= step(vec4(1e-30), inv);
   float wsum = w.x + w.y + w.z + w.w;
   bool found = wsum > 1e-4;
@@ -70,7 +88,7 @@ bool shadowMaskWeights(ivec2 px, vec3 P, vec3 N, vec3 C, out vec2 uv, out vec4 w
   return found;
 }
 
-#else
+#elif !defined(HV_SHADOW_MASK_PASS)
 // Visibility of light l at the invocation's pixels px[j] from the resolved mask (1: no map): a
 // loop of one pass or none (shadows.glsl says why), so a light without a map reads nothing.
 vec4 shadowMaskVisibility(GpuLight l, ivec2 px[HV_SHADOW_RECEIVERS]) {

@@ -86,6 +86,7 @@ layout(std140, binding = HV_UBO_ENVIRONMENT) uniform EnvironmentBlock {
 
 #if HV_AO && HV_HAS_DEFAULT_LIT && HV_ENVIRONMENT
 #include "../common/ao.glsl"
+#include "../common/half_res.glsl"
 layout(binding = HV_UNIT_DEPTH) uniform sampler2D t_depth;
 layout(binding = HV_UNIT_AO) uniform sampler2D t_ao;
 
@@ -106,20 +107,15 @@ vec4 aoAt(ivec2 px) {
   }
   // Inverse view distances (1 / m), as the AO target holds them (gtao.comp).
   float inv_dist = texelFetch(t_depth, px, 0).r / u_frame_params.x;
-  // Texel q holds pixel 2q (gtao.comp), at q + 0.25 in texel units: pixel px sits at px / 2.
-  vec2 f = vec2(px) * 0.5;
-  vec2 b = floor(f);
-  vec2 t = f - b;
-  // The footprint of texels b .. b + 1 (clamped to the edge as the sampler does), in gather
-  // order (0,1), (1,1), (1,0), (0,0).
-  vec2 uv = (b + 1.0) / vec2(size);
+  // Texel q holds pixel 2q (gtao.comp): the four nearest texels (half_res.glsl).
+  vec2 uv;
+  vec4 wb;
+  halfResFootprint(px, size, uv, wb);
   vec4 vis = textureGather(t_ao, uv, 0);
   vec4 inv = textureGather(t_ao, uv, 1);
-  vec4 wb = vec4((1.0 - t.x) * t.y, t.x * t.y, t.x * (1.0 - t.y), (1.0 - t.x) * (1.0 - t.y));
-  // |dist_texel / dist - 1| = |w_pixel - w_texel| / w_texel; a background texel (w 0) never
-  // counts.
-  vec4 diff = abs(inv - vec4(inv_dist)) / max(inv, vec4(1e-30));
-  vec4 w = wb * clamp(1.0 - diff * 20.0, 0.0, 1.0);
+  // A background texel (w 0) never counts.
+  vec4 diff = halfResDistanceDiff(inv, inv_dist);
+  vec4 w = wb * halfResDepthWeight(diff);
   float wsum = w.x + w.y + w.z + w.w;
 #if HV_AO_SPECULAR == HV_AO_SPECULAR_CONE
   vec4 bx = textureGather(t_ao, uv, 2);

@@ -2,9 +2,11 @@
 // Shadow mask pass (`settings.shadow_resolution: half`; shadow_mask.glsl): the visibility of one
 // shadowed light per dispatch layer (z) at one pixel per 2x2 block, its lower left, written to
 // that light's layer of the mask (shadowMaskLayer); the first layer's dispatch also writes each
-// texel's inverse view distance and G-buffer normal, which the light pass's upsample weighs. The
+// texel's inverse view distance and G-buffer normal, which the resolve step's upsample weighs
+// (shadow_resolve.comp). The
 // lookup is the light pass's own (shadows.glsl, shadowVisibility and sunShadowVisibility), so
 // at a texel's pixel the mask holds what the full-resolution pass computes there.
+#define HV_SHADOW_MASK_PASS 1
 #include "../common/frame.glsl"
 #include "../common/gbuffer.glsl"
 #include "../common/lights.glsl"
@@ -13,14 +15,6 @@
 // An invocation computes HV_SHADOW_RECEIVERS texels of a column, as the light pass does pixels.
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = HV_UNIT_MATERIAL) uniform sampler2D t_material;
-layout(binding = HV_UNIT_NORMAL) uniform sampler2D t_normal;
-layout(binding = HV_UNIT_DEPTH) uniform sampler2D t_depth;
-layout(std430, binding = HV_BINDING_LIGHTS) readonly buffer LightBlock { GpuLight lights[]; };
-// Per dispatch layer: the index of its light in `lights`.
-layout(std430, binding = HV_BINDING_SHADOW_MASK_LIGHTS) readonly buffer MaskLightBlock {
-  uint mask_lights[];
-};
 layout(r8, binding = HV_IMAGE_SHADOW_MASK) uniform writeonly image2DArray i_mask;
 layout(rgba16f, binding = HV_IMAGE_SHADOW_MASK_GEOMETRY) uniform writeonly image2D i_geometry;
 
@@ -34,14 +28,9 @@ void main() {
   vec4 geometry[HV_SHADOW_RECEIVERS];
   for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
     q[j] = ivec2(gl_GlobalInvocationID.x, gl_GlobalInvocationID.y * HV_SHADOW_RECEIVERS + j);
-    ivec2 px = min(q[j] * 2, ivec2(u_viewport.xy) - 1);
-    uint model = decodeShadingModel(texelFetch(t_material, px, 0).b);
-    vec2 code = texelFetch(t_normal, px, 0).xy;
-    N[j] = octDecode(code);
-    vec2 uv = (vec2(px) + 0.5) / vec2(u_viewport.xy);
-    P[j] = reconstructWorldPosition(uv, texelFetch(t_depth, px, 0).r, u_inv_view_proj);
-    bool inside = q[j].x < size.x && q[j].y < size.y;
-    use[j] = inside && isLitModel(model);
+    vec2 code;
+    bool lit = shadowMaskSurface(min(q[j] * 2, ivec2(u_viewport.xy) - 1), P[j], N[j], code);
+    use[j] = q[j].x < size.x && q[j].y < size.y && lit;
     float inv_dist = 1.0 / max(length(P[j] - u_camera_pos.xyz), 1e-30);
     geometry[j] = vec4(use[j] ? inv_dist : 0.0, code, 0.0);
   }

@@ -7,7 +7,7 @@
 // lookup, shadows.glsl), in a loop of one pass or none: only SIMD rows where some pixel needs it
 // pay for it. Doing this here rather than in the light pass keeps the weights out of the light
 // loops, where they stayed live across every light (docs/lights.md, "Half resolution").
-#define HV_SHADOW_MASK_RESOLVE 1
+#define HV_SHADOW_MASK_PASS 2
 #include "../common/frame.glsl"
 #include "../common/gbuffer.glsl"
 #include "../common/lights.glsl"
@@ -16,14 +16,7 @@
 // An invocation resolves HV_SHADOW_RECEIVERS pixels of a column (shadowVisibility's receivers).
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = HV_UNIT_MATERIAL) uniform sampler2D t_material;
-layout(binding = HV_UNIT_NORMAL) uniform sampler2D t_normal;
-layout(binding = HV_UNIT_DEPTH) uniform sampler2D t_depth;
-layout(std430, binding = HV_BINDING_LIGHTS) readonly buffer LightBlock { GpuLight lights[]; };
-// The shadowed lights (indices into `lights`), the first u_mask_lights of them.
-layout(std430, binding = HV_BINDING_SHADOW_MASK_LIGHTS) readonly buffer MaskLightBlock {
-  uint mask_lights[];
-};
+// The shadowed lights to resolve: the first u_mask_lights of mask_lights (shadow_mask.glsl).
 layout(location = HV_LOC_SHADOW_MASK_LIGHTS) uniform uint u_mask_lights;
 layout(r8, binding = HV_IMAGE_SHADOW_MASK) uniform writeonly image2DArray i_resolved;
 
@@ -38,11 +31,9 @@ void main() {
   for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
     px[j] = ivec2(gl_GlobalInvocationID.x, gl_GlobalInvocationID.y * HV_SHADOW_RECEIVERS + j);
     ivec2 p = min(px[j], ivec2(u_viewport.xy) - 1);
-    uint model = decodeShadingModel(texelFetch(t_material, p, 0).b);
-    N[j] = octDecode(texelFetch(t_normal, p, 0).xy);
-    vec2 suv = (vec2(p) + 0.5) / vec2(u_viewport.xy);
-    P[j] = reconstructWorldPosition(suv, texelFetch(t_depth, p, 0).r, u_inv_view_proj);
-    use[j] = px[j].x < int(u_viewport.x) && px[j].y < int(u_viewport.y) && isLitModel(model);
+    vec2 code;
+    bool lit = shadowMaskSurface(p, P[j], N[j], code);
+    use[j] = px[j].x < int(u_viewport.x) && px[j].y < int(u_viewport.y) && lit;
     bool own = shadowMaskWeights(p, P[j], N[j], u_camera_pos.xyz, uv[j], w[j]);
     miss[j] = use[j] && !own;
   }
