@@ -26,15 +26,24 @@ void runGBufferPass(const PassContext& ctx, const GBufferPassInput& in,
   }
   const float far_depth = 0.0f;  // reversed Z clears to 0 (infinity)
   glClearNamedFramebufferfv(out.framebuffer, GL_DEPTH, 0, &far_depth);
-  // Per-term debug views: the HDR target (attachment 3) keeps its clear value, 0, instead of the
-  // emissive (after the clear: the color mask also masks clears).
-  if (!in.emissive) glColorMaski(3, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  // The HDR target (attachment 3) keeps its clear value, 0, under the draws of a material variant
+  // without emissive (HV_MAT_EMISSIVE 0: its shader writes 0 there) and in the per-term debug
+  // views: the write is masked off (after the clear: the color mask also masks clears), which
+  // saves its 8 B/px store where the scene has no emissive surface (docs/performance.md, "The
+  // emissive write").
+  const std::function<void(int)> hdr_write = [&](int variant) {
+    const GLboolean w =
+        in.emissive && in.key.material_variants.at(size_t(variant)).emissive ? GL_TRUE : GL_FALSE;
+    glColorMaski(3, w, w, w, w);
+  };
 
   gl::PassBindings b(kPassSlots, "gbuffer");
   // draw_order groups the draws by material variant: one program switch per variant.
-  drawScene(ctx, b, {in.scene, in.gpu, in.key, in.programs, in.draw_order});
+  SceneDraws draws{in.scene, in.gpu, in.key, in.programs, in.draw_order};
+  draws.before_variant = &hdr_write;
+  drawScene(ctx, b, draws);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  if (!in.emissive) glColorMaski(3, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glColorMaski(3, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
 }  // namespace hv::render

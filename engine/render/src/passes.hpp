@@ -83,6 +83,8 @@ struct SceneDraws {
   // The material textures bound per draw: all slots, or the forward pass's first
   // HV_FORWARD_MATERIAL_TEXTURES (bindings.glsl).
   GLuint material_textures = HV_MATERIAL_TEXTURE_COUNT;
+  // Called with a material variant's index into key.material_variants when its program is bound.
+  const std::function<void(int)>* before_variant = nullptr;
 };
 void drawScene(const PassContext& ctx, gl::PassBindings& b, const SceneDraws& in);
 

@@ -21,6 +21,7 @@ void drawScene(const PassContext& ctx, gl::PassBindings& b, const SceneDraws& in
     if (variant != bound_variant) {
       bound_variant = variant;
       b.use(ctx.programs.get(in.programs.at(size_t(variant))));
+      if (in.before_variant) (*in.before_variant)(variant);
     }
     const glm::mat4& model = in.scene.objects[d.object].transform;
     const glm::mat4 normal_matrix = glm::transpose(glm::inverse(model));
