@@ -9,6 +9,7 @@
 #include <type_traits>
 
 #include "halfvec/eval/trade.hpp"
+#include "halfvec/ibl/sky_sun.hpp"
 #include "halfvec/scene/enums.hpp"
 #include "halfvec/scene/presets.hpp"
 
@@ -101,8 +102,8 @@ Absences absentFeatures(const Scene& scene) {
            {SettingFeature::TubeLights, tube ? nullptr : "no tube lights"},
            {SettingFeature::AmbientIbl, env ? nullptr : "no environment"},
            {SettingFeature::ShadowedLights, shadowed ? nullptr : "no shadowed lights"},
-           {SettingFeature::SkyEnvironment,
-            scene.environment.kind == EnvironmentKind::Sky ? nullptr : "no procedural sky"},
+           {SettingFeature::EnvironmentSun,
+            environmentHasSun(scene.environment) ? nullptr : "no sun in the environment"},
            {SettingFeature::VaryingAmbient, uniform}}};
 }
 

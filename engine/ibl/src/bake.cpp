@@ -233,7 +233,8 @@ fs::path cachePath(const Environment& env, const BakeOptions& opt, const BakeSiz
     const auto fsize = fs::file_size(p, ec);
     if (ec) throw IblError("HDR '" + env.path + "': cannot open (missing file?)");
     const auto mtime = fs::last_write_time(p, ec).time_since_epoch().count();
-    key << "|file" << p.string() << "|" << fsize << "|" << mtime;
+    key << "|file" << p.string() << "|" << fsize << "|" << mtime
+        << (opt.sky.sun_disk ? "" : "|nosun");
   }
   char name[64];
   std::snprintf(name, sizeof(name), "ibl-%016llx.bin", (unsigned long long)fnv1a(key.str()));

@@ -1,12 +1,17 @@
 #include "halfvec/ibl/sky_sun.hpp"
 
+#include "halfvec/ibl/hdr_sun.hpp"
 #include "halfvec/ibl/ibl.hpp"
 
 namespace hv {
 
+bool environmentHasSun(const Environment& env) {
+  return env.kind == EnvironmentKind::Sky ||
+         (env.kind == EnvironmentKind::HdrFile && hdrSunOf(env).found);
+}
+
 bool skySunIsLight(const Scene& scene) {
-  if (scene.settings.sky_sun == SkySun::Environment ||
-      scene.environment.kind != EnvironmentKind::Sky) {
+  if (scene.settings.sky_sun == SkySun::Environment || !environmentHasSun(scene.environment)) {
     return false;
   }
   // The frame's list of directional lights has kMaxDirectionalLights places: where the scene
@@ -19,7 +24,9 @@ bool skySunIsLight(const Scene& scene) {
 std::vector<Light> renderedLights(const Scene& scene) {
   std::vector<Light> lights = scene.lights;
   if (skySunIsLight(scene)) {
-    lights.push_back(skySunLight(scene.environment));
+    const Environment& env = scene.environment;
+    lights.push_back(env.kind == EnvironmentKind::Sky ? skySunLight(env)
+                                                      : hdrSunLight(env, hdrSunOf(env)));
     lights.back().shadows = scene.settings.sky_sun == SkySun::ShadowedLight;
   }
   return lights;

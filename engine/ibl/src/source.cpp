@@ -12,6 +12,7 @@
 
 #include "halfvec/core/input_file.hpp"
 #include "halfvec/ibl/ibl.hpp"
+#include "halfvec/ibl/hdr_sun.hpp"
 #include "halfvec/core/parallel.hpp"
 
 namespace hv {
@@ -304,7 +305,11 @@ EnvSource makeEnvSource(const Environment& env, const SkyParams& sky) {
   src.rotation_deg = env.rotation_deg;
   if (env.kind == EnvironmentKind::None)
     throw IblError("environment kind None has nothing to bake");
-  if (env.kind == EnvironmentKind::HdrFile) src.equirect = loadHdr(env.path);
+  if (env.kind == EnvironmentKind::HdrFile) {
+    src.equirect = loadHdr(env.path);
+    // Where the HDR's sun is drawn as a light (skySunIsLight), the environment goes without it.
+    if (!sky.sun_disk) removeHdrSun(src.equirect, findHdrSun(src.equirect));
+  }
   return src;
 }
 

@@ -231,9 +231,17 @@ void environmentSample(ShadingPoint& p, Rng& rng, glm::dvec3* xs) {
     const CosLobes f = cosLobes(p, L, false);
     glm::vec3 w = ctx.env.radiance(L) * (1.0f / pdf);
     const bool direct = in_sun && ctx.sun_is_direct;
+    const glm::vec3 spec = f.specular * p.ambient_spec_scale + f.coat * p.coat_ambient_scale;
+    if (ctx.hdr_sun_split) {
+      const glm::vec3 w_ambient = ctx.env_without_sun.radiance(L) * (1.0f / pdf);
+      xs[kAD] += glm::dvec3(f.diffuse * w_ambient * s.cavity);
+      xs[kAS] += glm::dvec3(spec * w_ambient);
+      xs[kDD] += glm::dvec3(f.diffuse * (w - w_ambient) * s.cavity);
+      xs[kDS] += glm::dvec3(spec * (w - w_ambient));
+      continue;
+    }
     xs[direct ? kDD : kAD] += glm::dvec3(f.diffuse * w * s.cavity);
-    xs[direct ? kDS : kAS] +=
-        glm::dvec3((f.specular * p.ambient_spec_scale + f.coat * p.coat_ambient_scale) * w);
+    xs[direct ? kDS : kAS] += glm::dvec3(spec * w);
   }
 }
 

@@ -37,6 +37,11 @@ struct Context {
   // environment integral is booked under the direct terms, as the engine's per-term images have
   // it (the sum is unchanged).
   bool sun_is_direct = false;
+  // The engine draws an HDR's sun as a directional light (skySunIsLight, hdr_sun.hpp): the same
+  // environment without the sun, whose radiance is booked under the ambient terms and the rest
+  // (the sun's excess over its surroundings) under the direct terms (the sum is unchanged).
+  bool hdr_sun_split = false;
+  EnvSource env_without_sun;
   std::vector<const Light*> point_lights, area_lights;
   // Per entry of point_lights / area_lights: the spot's cone as the light pass reads it
   // (packLight's axis_length, spot.glsl), or (0, 0, 0, 1), whose attenuation is exactly 1.

@@ -75,6 +75,12 @@ Context makeContext(const Scene& scene, const GBufferReadback& gb, const Referen
       ctx.has_sun = opt.sky.sun_disk && std::isfinite(ctx.sun_pdf);
       ctx.sun_is_direct = ctx.has_sun && skySunIsLight(scene);
     }
+    if (scene.environment.kind == EnvironmentKind::HdrFile && skySunIsLight(scene)) {
+      SkyParams without = opt.sky;
+      without.sun_disk = false;
+      ctx.env_without_sun = makeEnvSource(scene.environment, without);
+      ctx.hdr_sun_split = true;
+    }
   }
   if (opt.visibility) ctx.vis = std::make_unique<reference_detail::SceneVisibility>(scene);
   // A spot is its point or sphere light times its cone, which scales what arrives at the shading

@@ -40,8 +40,8 @@ bool featurePresent(SettingFeature f, const VariantKey& k) {
       return k.shadows;
     case SettingFeature::ScreenSpaceAo:
       return k.ao;
-    case SettingFeature::SkyEnvironment:
-      return k.environment == EnvironmentKind::Sky;
+    case SettingFeature::EnvironmentSun:
+      return k.environment_sun;
     case SettingFeature::VaryingAmbient:
       return k.ambientIbl() && (k.environment != EnvironmentKind::Uniform || k.uber);
   }
@@ -65,8 +65,8 @@ std::string featureAbsentReason(SettingFeature f, const VariantKey& k) {
       return "no shadowed lights";
     case SettingFeature::ScreenSpaceAo:
       return k.ambientIbl() ? "ao is none" : "no ambient IBL";
-    case SettingFeature::SkyEnvironment:
-      return "the environment is not the procedural sky";
+    case SettingFeature::EnvironmentSun:
+      return "the environment has no sun (not the procedural sky, no sun found in its HDR)";
     case SettingFeature::VaryingAmbient:
       // Every prefiltered texel of a uniform environment is its radiance (Ibl.FurnaceUniform).
       return k.ambientIbl() ? "uniform environment: every lookup reads the same radiance"
@@ -92,8 +92,8 @@ const char* featureInvalid(SettingFeature f) {
       return "shadow options without shadowed lights";
     case SettingFeature::ScreenSpaceAo:
       return "ambient occlusion options without ao: gtao";
-    case SettingFeature::SkyEnvironment:
-      return "sky options without the procedural sky";
+    case SettingFeature::EnvironmentSun:
+      return "sun options without an environment that has a sun";
     case SettingFeature::VaryingAmbient:
       return "options of a varying environment under a uniform one or without ambient IBL";
   }
@@ -241,6 +241,7 @@ VariantKey deriveVariantKey(const Scene& scene) {
     k.shadows |= l.shadows;
   }
   k.environment = scene.environment.kind;
+  k.environment_sun = environmentHasSun(scene.environment);
   // Only materials that are drawn count.
   std::vector<bool> drawn(scene.materials.size(), false);
   std::vector<bool> colored(scene.materials.size(), false);  // drawn on a mesh with COLOR_0
@@ -294,7 +295,7 @@ std::vector<std::string> validateKey(const VariantKey& k) {
   for (SettingFeature f :
        {SettingFeature::Lights, SettingFeature::SphereLights, SettingFeature::TubeLights,
         SettingFeature::AmbientIbl, SettingFeature::ShadowedLights, SettingFeature::ScreenSpaceAo,
-        SettingFeature::SkyEnvironment, SettingFeature::VaryingAmbient}) {
+        SettingFeature::EnvironmentSun, SettingFeature::VaryingAmbient}) {
     if (featurePresent(f, k)) continue;
     bool changed = false;
     forEachSetting([&](const auto& row) {

@@ -85,6 +85,8 @@ struct VariantKey {
   // compile (HV_HAS_CLEAR_COAT).
   bool unlit = false, default_lit = false, clear_coat = false;
   EnvironmentKind environment = EnvironmentKind::None;
+  // The environment has a sun that settings.sky_sun may draw as a light (environmentHasSun).
+  bool environment_sun = false;
   // A light casts shadows (Light::shadows): the light programs contain the shadow lookup
   // (shaders/common/shadows.glsl) and the frame starts with the shadow-map pass.
   bool shadows = false;

@@ -117,9 +117,10 @@ HV_SETTING_ENUM(IblDirection, HV_IBL_DIRECTIONS);
   V(SplitSum, "split_sum", HV_IBL_SPECULAR_SPLIT_SUM) \
   V(Sampled, "sampled", HV_IBL_SPECULAR_SAMPLED)
 HV_SETTING_ENUM(IblSpecular, HV_IBL_SPECULARS);
-// sky_sun: the procedural sky's sun in the prefiltered environment, or left out of it and drawn
-// as a directional light of the same disk, without or with its shadow (docs/ibl.md, "The sky's
-// sun as a light").
+// sky_sun: the environment's sun (the procedural sky's, or an HDR's: halfvec/ibl/hdr_sun.hpp) in
+// the prefiltered environment, or left out of it and drawn as a directional light of the same
+// disk, without or with its shadow (docs/ibl.md, "The sky's sun as a light", "An HDR's sun as a
+// light").
 #define HV_SKY_SUNS(V) \
   V(Environment, "environment", 0) V(Light, "light", 1) V(ShadowedLight, "shadowed_light", 2)
 HV_SETTING_ENUM(SkySun, HV_SKY_SUNS);
@@ -175,7 +176,7 @@ enum class SettingFeature : uint8_t {
   AmbientIbl,      // an environment lighting a default_lit material
   ShadowedLights,  // a light with `shadows: true`
   ScreenSpaceAo,   // `ao: gtao` where the ambient pass lights a default_lit material
-  SkyEnvironment,  // the environment is the procedural sky (its sun)
+  EnvironmentSun,  // the environment has a sun: the procedural sky's or an HDR's (sky_sun.hpp)
   VaryingAmbient,  // AmbientIbl with an environment that is not uniform (its radiance varies)
 };
 
@@ -320,9 +321,9 @@ struct SettingInfo {
     (SettingInfo{.feature = SettingFeature::VaryingAmbient, .define = "HV_IBL_SPECULAR",               \
                  .pass = SettingPass::Ambient, .trade = true, .trade_group = "environment",        \
                  .label = "IBL specular"}))                                                        \
-  /* the sky's sun in the environment or as a directional light; docs/ibl.md */                 \
+  /* the environment's sun in it or as a directional light; docs/ibl.md */                 \
   X(SkySun, sky_sun, SkySun::Light, "sky_sun",                                                    \
-    (SettingInfo{.feature = SettingFeature::SkyEnvironment, .trade = true,                         \
+    (SettingInfo{.feature = SettingFeature::EnvironmentSun, .trade = true,                         \
                  .trade_group = "environment", .label = "sky sun", .needs_set_scene = true}))     \
   X(bool, specular_occlusion, false, "specular_occlusion",                                         \
     (SettingInfo{.feature = SettingFeature::AmbientIbl, .define = "HV_SPECULAR_OCCLUSION",         \
