@@ -14,8 +14,13 @@ std::string occlusionMarkdown(const eval::OcclusionAccuracy& a) {
         "DamagedHelmet under two HDRs. AO error: mean |engine - reference| over lit pixels, "
         "the engine's AO being its ambient diffuse over that of `ao: none`, the reference's its "
         "AO image within ao_distance = 1 m (the default ao_radius); ambient, diffuse, specular: "
-        "sum|E - R| / sum R against the reference's shadowed ambient terms (occluders at any "
-        "distance), bias likewise signed. AO ms: the AO pass at this size ("
+        "sum|E - R| / sum R of the environment's light against the reference's, shadowed "
+        "(occluders at any distance), bias likewise signed; the environment's light is the "
+        "ambient terms plus, where `sky_sun` draws the environment's sun as a light (the "
+        "HDR's sun of venice_sunset; docs/ibl.md), that light's direct terms, which the "
+        "reference books apart. Shading alone: `ao none` against the reference without "
+        "visibility, what the engine's own approximations leave. AO ms: the AO pass at this "
+        "size ("
      << fmtNum("%.0f", a.seconds) << " s in all).\n\n";
   for (const auto& s : a.scenes) {
     md << "### " << s.name << "\n\n";
@@ -25,7 +30,7 @@ std::string occlusionMarkdown(const eval::OcclusionAccuracy& a) {
     }
     md << s.width << "x" << s.height << ", " << s.lit_pixels << " lit pixels, reference "
        << s.samples << " samples per pixel (its noise: " << pct(s.reference_noise)
-       << " of the ambient).\n\n";
+       << " of the ambient); shading alone: " << pct(s.shading_only) << ".\n\n";
     md << headerRow({"configuration", "AO error", "AO bias", "ambient: rel. error", "bias",
                      "diffuse", "specular", "AO ms"});
     for (const auto& r : s.rows) {

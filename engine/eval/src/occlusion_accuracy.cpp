@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "halfvec/eval/engine_aov.hpp"
+#include "halfvec/ibl/sky_sun.hpp"
 #include "halfvec/reference/reference.hpp"
 #include "halfvec/render/renderer.hpp"
 #include "halfvec/scene/primitives.hpp"
@@ -125,14 +126,23 @@ double aoPassMs(render::Renderer& r, int w, int h) {
   return 0.0;
 }
 
+// The environment's light in term `diffuse` or specular: its ambient term plus the direct term,
+// which in these scenes (no lights) holds only the environment's sun where settings.sky_sun draws
+// it as a light (the reference books the sun's part of its samples there too).
+ImageRGBf environmentTerm(const std::array<ImageRGBf, kReferenceAovCount>& aov, bool diffuse) {
+  const auto a = size_t(diffuse ? ReferenceAov::AmbientDiffuse : ReferenceAov::AmbientSpecular);
+  const auto d = size_t(diffuse ? ReferenceAov::DirectDiffuse : ReferenceAov::DirectSpecular);
+  return sum(aov[a], aov[d]);
+}
+
 void measureCase(const AccuracyOptions& o, Case& c, OcclusionScene& out) {
-  const auto AD = size_t(ReferenceAov::AmbientDiffuse), AS = size_t(ReferenceAov::AmbientSpecular);
+  const auto AD = size_t(ReferenceAov::AmbientDiffuse);
   out.width = o.quick ? 48 : 160;
   out.height = out.width;
   out.samples = o.quick ? 16 : 256;
   render::Renderer r;
   Scene& s = c.scene;
-  const auto configs = occlusionConfigs(s.settings);
+  const auto configs = occlusionConfigs(s.settings, environmentHasSun(s.environment));
   s.settings = configs[0].second;
   r.setScene(s);
   const auto none = renderEngineAovs(r, out.width, out.height);
@@ -148,15 +158,26 @@ void measureCase(const AccuracyOptions& o, Case& c, OcclusionScene& out) {
   ro.visibility = true;
   ro.ao_distance = RenderSettings{}.ao_radius;
   const ReferenceResult ref = renderReference(s, g, ro);
-  const ImageRGBf ref_ambient = sum(ref.aov[AD], ref.aov[AS]);
-  const ImageRGBf ref_se = sum(ref.aov_std_error[AD], ref.aov_std_error[AS]);
+  const ImageRGBf ref_diffuse = environmentTerm(ref.aov, true);
+  const ImageRGBf ref_specular = environmentTerm(ref.aov, false);
+  const ImageRGBf ref_env = sum(ref_diffuse, ref_specular);
+  const ImageRGBf ref_se =
+      sum(environmentTerm(ref.aov_std_error, true), environmentTerm(ref.aov_std_error, false));
   double se = 0.0, rs = 0.0;
   for (size_t i = 0; i < lit.size(); ++i) {
     if (!lit[i]) continue;
     se += ref_se.px[i].x + ref_se.px[i].y + ref_se.px[i].z;
-    rs += ref_ambient.px[i].x + ref_ambient.px[i].y + ref_ambient.px[i].z;
+    rs += ref_env.px[i].x + ref_env.px[i].y + ref_env.px[i].z;
   }
   out.reference_noise = rs > 0.0 ? se / rs : 0.0;
+  // The shading alone: `ao none` against the reference without visibility (nothing occludes).
+  ReferenceOptions open = ro;
+  open.visibility = false;
+  const ReferenceResult unoccluded = renderReference(s, g, open);
+  out.shading_only =
+      relError(sum(environmentTerm(none, true), environmentTerm(none, false)),
+               sum(environmentTerm(unoccluded.aov, true), environmentTerm(unoccluded.aov, false)),
+               lit, false);
   for (const auto& [name, settings] : configs) {
     s.settings = settings;
     r.setScene(s);
@@ -166,20 +187,21 @@ void measureCase(const AccuracyOptions& o, Case& c, OcclusionScene& out) {
     double ao_abs = 0.0, ao_signed = 0.0;
     size_t n = 0;
     for (size_t i = 0; i < lit.size(); ++i) {
-      const double open = none[AD].px[i].y;
-      if (!lit[i] || open <= 1e-6) continue;
-      const double d = std::clamp(aov[AD].px[i].y / open, 0.0, 1.0) - ref.ao.px[i].x;
+      const double open_px = none[AD].px[i].y;
+      if (!lit[i] || open_px <= 1e-6) continue;
+      const double d = std::clamp(aov[AD].px[i].y / open_px, 0.0, 1.0) - ref.ao.px[i].x;
       ao_abs += std::abs(d);
       ao_signed += d;
       ++n;
     }
     row.ao_mean_abs = n ? ao_abs / double(n) : 0.0;
     row.ao_bias = n ? ao_signed / double(n) : 0.0;
-    const ImageRGBf ambient = sum(aov[AD], aov[AS]);
-    row.ambient = relError(ambient, ref_ambient, lit, false);
-    row.ambient_bias = relError(ambient, ref_ambient, lit, true);
-    row.diffuse = relError(aov[AD], ref.aov[AD], lit, false);
-    row.specular = relError(aov[AS], ref.aov[AS], lit, false);
+    const ImageRGBf diffuse = environmentTerm(aov, true), specular = environmentTerm(aov, false);
+    const ImageRGBf env = sum(diffuse, specular);
+    row.ambient = relError(env, ref_env, lit, false);
+    row.ambient_bias = relError(env, ref_env, lit, true);
+    row.diffuse = relError(diffuse, ref_diffuse, lit, false);
+    row.specular = relError(specular, ref_specular, lit, false);
     row.ms = settings.ao == AmbientOcclusion::None ? 0.0 : aoPassMs(r, out.width, out.height);
     out.rows.push_back(row);
   }
@@ -187,7 +209,8 @@ void measureCase(const AccuracyOptions& o, Case& c, OcclusionScene& out) {
 
 }  // namespace
 
-std::vector<std::pair<std::string, RenderSettings>> occlusionConfigs(const RenderSettings& base) {
+std::vector<std::pair<std::string, RenderSettings>> occlusionConfigs(const RenderSettings& base,
+                                                                     bool sun) {
   std::vector<std::pair<std::string, RenderSettings>> out;
   RenderSettings none = base;
   none.ao = AmbientOcclusion::None;
@@ -205,6 +228,11 @@ std::vector<std::pair<std::string, RenderSettings>> occlusionConfigs(const Rende
   variant("ao_resolution=full", [](RenderSettings& v) { v.ao_resolution = AoResolution::Full; });
   variant("ao_quality=high", [](RenderSettings& v) { v.ao_quality = AoQuality::High; });
   variant("ao_radius=2", [](RenderSettings& v) { v.ao_radius = 2.0f; });
+  if (sun) {
+    // The environment's sun: in the prefiltered cube, or a light with its shadow.
+    variant("sky_sun=environment", [](RenderSettings& v) { v.sky_sun = SkySun::Environment; });
+    variant("sky_sun=shadowed_light", [](RenderSettings& v) { v.sky_sun = SkySun::ShadowedLight; });
+  }
   return out;
 }
 

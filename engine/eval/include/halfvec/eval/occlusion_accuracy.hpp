@@ -20,8 +20,10 @@ namespace hv::eval {
 //     factor it applies without the multi-bounce fit) and the reference's is its AO image with
 //     ao_distance = ao_radius;
 //   ambient / diffuse / specular: sum |E - R| / sum R over pixels and channels (the relative
-//     error of accuracy_report.hpp's LitStats) of ambient diffuse + specular, each term alone,
-//     against the reference's shadowed ambient terms (all distances occlude).
+//     error of accuracy_report.hpp's LitStats) of the environment's light (diffuse + specular),
+//     each term alone, against the reference's shadowed terms (all distances occlude). The
+//     environment's light is its ambient terms plus the direct ones, which hold the
+//     environment's sun where settings.sky_sun draws it as a light (the scenes have no lights).
 struct OcclusionRow {
   std::string config;  // "ao none", "gtao", "gtao, ao_specular=lagarde", ...
   double ao_mean_abs = 0.0, ao_bias = 0.0;
@@ -35,6 +37,9 @@ struct OcclusionScene {
   int width = 0, height = 0, samples = 0;
   size_t lit_pixels = 0;
   double reference_noise = 0.0;  // the reference's relative standard error of ambient, summed
+  // The shading's own error: `ao none` against the reference without visibility, the
+  // environment's light (as OcclusionRow::ambient).
+  double shading_only = 0.0;
   std::vector<OcclusionRow> rows;
 };
 struct OcclusionAccuracy {
@@ -42,8 +47,10 @@ struct OcclusionAccuracy {
   double seconds = 0.0;
 };
 
-// The configurations measured, in order: ao none, then gtao with its defaults and one change each.
-std::vector<std::pair<std::string, RenderSettings>> occlusionConfigs(const RenderSettings& base);
+// The configurations measured, in order: ao none, then gtao with its defaults and one change each
+// (with `sun`, an environment that has one: also sky_sun environment and shadowed_light).
+std::vector<std::pair<std::string, RenderSettings>> occlusionConfigs(const RenderSettings& base,
+                                                                     bool sun = false);
 
 OcclusionAccuracy measureOcclusion(const AccuracyOptions& o);
 
