@@ -185,7 +185,11 @@ std::string ambientMarkdown(const eval::AmbientAccuracy& a) {
         "irradiance) over the dielectric sphere's; rel. error = sum|E - R| / sum R over pixels "
         "and channels, bias likewise signed, noise = the reference's relative standard error "
         "of the sum (the floor for the bias) / sum of its per-pixel standard errors over sum R "
-        "(the floor for the rel. error, which adds per-pixel noise).\n\n";
+        "(the floor for the rel. error, which adds per-pixel noise). Where `sky_sun` (default "
+        "`light`) draws the environment's sun as a directional light (venice_sunset's; "
+        "docs/ibl.md, \"An HDR's sun as a light\"), both sides' ambient terms are without it: "
+        "the reference books the sun's part under the direct terms, which this section leaves "
+        "out.\n\n";
   auto noise = [](const eval::LitStats& l) { return pct(l.noise) + " / " + pct(l.pixel_noise); };
   for (const auto& e : a.envs) {
     md << "### " << e.name << "\n\n";
