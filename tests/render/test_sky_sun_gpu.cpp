@@ -10,6 +10,7 @@
 #include "halfvec/shading/shading.hpp"
 #include "halfvec/ibl/sky_sun.hpp"
 #include "render_fixture.hpp"
+#include "sun_glint.hpp"
 
 using namespace hv;
 
@@ -17,65 +18,11 @@ namespace {
 
 constexpr int kSize = 96;
 
-// A glossy metal sphere seen from the side the sun shines from, so that its glint sits near the
-// middle of the image; no lights, the sky alone.
+// A glossy metal sphere seen from the side the sun shines from (sun_glint.hpp), the sky alone.
 Scene glintScene(float roughness) {
-  Scene s;
-  const glm::vec3 to_sun = skySunWorldDirection(s.environment, SkyParams{});
-  // Off the sun's line by a little, so that the camera does not look along the glint's axis.
-  s.camera.position = 4.0f * glm::normalize(to_sun + glm::vec3(0.0f, 0.15f, 0.0f));
-  s.camera.target = {0.0f, 0.0f, 0.0f};
-  s.camera.fov_y_deg = 20.0f;
-  Material m;
-  m.base_color = glm::vec3(0.95f, 0.9f, 0.8f);
-  m.metallic = 1.0f;
-  m.roughness = roughness;
-  s.materials.push_back(m);
-  s.meshes.push_back(makeSphere(1.0f, 128, 64));
-  s.meshes.back().material = 0;
-  Object o;
-  o.meshes = {0};
-  s.objects.push_back(o);
+  Scene s = test::glossySphereFacing(skySunWorldDirection(Environment{}, SkyParams{}), roughness);
   s.environment.kind = EnvironmentKind::Sky;
-  s.settings.v = VisibilityTerm::SmithGGXCorrelated;  // the reference's exact V
-  s.settings.remap_roughness = false;
-  s.settings.sphere_specular = SphereSpecular::Ltc;  // the sun's disk on a glossy lobe
   return s;
-}
-
-float luminance(glm::vec3 c) {
-  return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
-}
-
-// Over the glint (the reference's brightest pixel and the pixels around it within `radius`):
-// the engine's summed luminance over the reference's, and the mean |engine / reference - 1|.
-struct Glint {
-  double sum_ratio = 0.0, mean_error = 0.0, peak_ratio = 0.0;
-  int pixels = 0;
-};
-
-Glint glintError(const ImageRGBf& engine, const ImageRGBf& ref, int radius) {
-  size_t peak = 0;
-  for (size_t i = 0; i < ref.px.size(); ++i) {
-    if (luminance(ref.px[i]) > luminance(ref.px[peak])) peak = i;
-  }
-  const int px = int(peak) % kSize, py = int(peak) / kSize;
-  Glint g;
-  double se = 0.0, sr = 0.0;
-  for (int y = std::max(py - radius, 0); y <= std::min(py + radius, kSize - 1); ++y) {
-    for (int x = std::max(px - radius, 0); x <= std::min(px + radius, kSize - 1); ++x) {
-      const size_t i = size_t(y) * kSize + size_t(x);
-      const double e = luminance(engine.px[i]), r = luminance(ref.px[i]);
-      se += e;
-      sr += r;
-      g.mean_error += std::abs(e / std::max(r, 1e-6) - 1.0);
-      ++g.pixels;
-    }
-  }
-  g.sum_ratio = se / sr;
-  g.mean_error /= g.pixels;
-  g.peak_ratio = luminance(engine.px[peak]) / luminance(ref.px[peak]);
-  return g;
 }
 
 }  // namespace
@@ -84,35 +31,14 @@ Glint glintError(const ImageRGBf& engine, const ImageRGBf& ref, int radius) {
 // over the glint and its halo (the 9x9 pixels around the peak), and its peak within 15%; with the
 // sun in the prefiltered cube the same glint is several times off (measured in the test's output).
 TEST(SkySunGpu, GlintOfTheSunAsALightMatchesReference) {
-  testContext();
-  for (float roughness : {0.1f, 0.2f}) {
-    Scene s = glintScene(roughness);
-    s.settings.sky_sun = SkySun::Environment;
-    const RenderedFrame env = renderFrame(s, kSize, kSize);
-    s.settings.sky_sun = SkySun::Light;
-    const RenderedFrame light = renderFrame(s, kSize, kSize);
-    ASSERT_TRUE(light.key.directional_lights);
-    ASSERT_FALSE(env.key.directional_lights);
-    ReferenceOptions o;
-    o.samples = 256;
-    o.visibility = false;
-    const ImageRGBf ref = renderReference(s, light.g, o).image;
-    const Glint ge = glintError(env.hdr, ref, 4);
-    const Glint gl = glintError(light.hdr, ref, 4);
-    std::cout << "[ sky sun ] roughness " << roughness << ", glint 9x9 px: engine/reference "
-              << "summed " << ge.sum_ratio << " environment, " << gl.sum_ratio << " light; peak "
-              << ge.peak_ratio << " / " << gl.peak_ratio << "; mean |ratio - 1| " << ge.mean_error
-              << " / " << gl.mean_error << "\n";
-    EXPECT_NEAR(gl.sum_ratio, 1.0, 0.1) << roughness;
-    EXPECT_NEAR(gl.peak_ratio, 1.0, 0.15) << roughness;
-    EXPECT_LT(gl.mean_error, 0.5 * ge.mean_error) << roughness;
-  }
+  test::expectSunGlintAsLightMatchesReference(glintScene, kSize, "sky sun");
 }
 
-// Only the procedural sky has a sun to move (skySunIsLight): it becomes the last of the rendered
-// lights, a directional light without shadows; a uniform environment keeps its lights as they are,
-// and a scene whose directional list is full keeps the sun in the sky.
-TEST(SkySun, OnlyTheProceduralSkysSunMoves) {
+// The procedural sky's sun moves (skySunIsLight; an HDR's where one is found: test_hdr_sun.cpp):
+// it becomes the last of the rendered lights, a directional light without shadows; a uniform
+// environment keeps its lights as they are, and a scene whose directional list is full keeps the
+// sun in the sky.
+TEST(SkySun, TheProceduralSkysSunMoves) {
   Scene s = glintScene(0.5f);
   s.settings.sky_sun = SkySun::Light;
   EXPECT_TRUE(skySunIsLight(s));
@@ -178,9 +104,9 @@ TEST(SkySunGpu, ShadowedSunDarkensTheFloorUnderASphereAsTheReference) {
       const glm::vec3 oc = P - glm::vec3(0.0f, 0.5f, 0.0f);
       const float b = glm::dot(oc, to_sun), c = glm::dot(oc, oc) - 0.25f;
       if (b * b - c < 0.01f || b > 0.0f) continue;  // not well inside the shadow
-      e_shadowed += luminance(shadowed.hdr.px[i]);
-      e_open += luminance(open.hdr.px[i]);
-      r += luminance(ref.px[i]);
+      e_shadowed += test::glintLuminance(shadowed.hdr.px[i]);
+      e_open += test::glintLuminance(open.hdr.px[i]);
+      r += test::glintLuminance(ref.px[i]);
       ++pixels;
     }
   }
