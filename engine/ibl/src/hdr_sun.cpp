@@ -153,13 +153,10 @@ const HdrSun& hdrSunOf(const Environment& env) {
 }
 
 Light hdrSunLight(const Environment& env, const HdrSun& sun) {
-  const float a = glm::radians(env.rotation_deg), c = std::cos(a), s = std::sin(a);
-  const glm::vec3 d = sun.direction;
-  const glm::vec3 world(c * d.x + s * d.z, d.y, -s * d.x + c * d.z);
   const float e = lum(sun.illuminance);
   Light l;
   l.type = LightType::Directional;
-  l.direction = -glm::normalize(world);
+  l.direction = -environmentToWorld(env, sun.direction);
   l.color = e > 0.0f ? sun.illuminance / e : glm::vec3(1.0f);
   l.intensity = e * env.intensity;
   // The disk of the same solid angle: 2 pi (1 - cos r) = omega.

@@ -242,10 +242,13 @@ glm::vec3 skyRadiance(const SkyParams& s, glm::vec3 dir, float e_sky) {
   return s.ground_albedo / kPi * e;
 }
 
-glm::vec3 skySunWorldDirection(const Environment& env, const SkyParams& sky) {
+glm::vec3 environmentToWorld(const Environment& env, glm::vec3 d) {
   const float a = glm::radians(env.rotation_deg), c = std::cos(a), sn = std::sin(a);
-  const glm::vec3 d = skySunDirection(sky);
   return glm::normalize(glm::vec3(c * d.x + sn * d.z, d.y, -sn * d.x + c * d.z));
+}
+
+glm::vec3 skySunWorldDirection(const Environment& env, const SkyParams& sky) {
+  return environmentToWorld(env, skySunDirection(sky));
 }
 
 Light skySunLight(const Environment& env, const SkyParams& sky) {

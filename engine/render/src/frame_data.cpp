@@ -4,7 +4,6 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "halfvec/ibl/sky_sun.hpp"
 #include "halfvec/shading/shading.hpp"
 
 namespace hv::render {
@@ -84,8 +83,9 @@ FrameBlock makeFrameBlock(const Scene& scene, int width, int height) {
   const uint32_t tx = (width + kTileSize - 1) / kTileSize;
   const uint32_t ty = (height + kTileHeight - 1) / kTileHeight;
   f.viewport = glm::uvec4(width, height, tx, ty);
-  // The sky's sun, where it is a light, is the last of the lights (renderedLights).
-  f.light_count = static_cast<uint32_t>(scene.lights.size() + (skySunIsLight(scene) ? 1 : 0));
+  // The scene's lights; the renderer sets the count of the lights it uploaded
+  // (GpuScene::lightCount: the environment's sun last, where it is a light).
+  f.light_count = static_cast<uint32_t>(scene.lights.size());
   f.output = glm::vec4(scene.settings.exposure, scene.settings.dither ? 1.0f : 0.0f,
                        scene.environment.intensity, glm::radians(scene.environment.rotation_deg));
   f.frame_params = glm::vec4(c.near_plane, scene.settings.max_error, 0, 0);

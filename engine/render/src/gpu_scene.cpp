@@ -112,7 +112,8 @@ void GpuScene::updateMaterials(const Scene& scene) {
 }
 
 void GpuScene::updateLights(const Scene& scene) {
-  const std::vector<Light> lights = renderedLights(scene);
+  lights_cpu_ = renderedLights(scene);
+  const std::vector<Light>& lights = lights_cpu_;
   std::vector<GpuLight> packed;
   packed.reserve(lights.size());
   cull_spheres_.clear();
@@ -125,7 +126,6 @@ void GpuScene::updateLights(const Scene& scene) {
     packed.push_back(packLight(l));
     cull_spheres_.push_back(glsl::lightCullSphere(toGlsl(packed.back())));
   }
-  light_count_ = packed.size();
   if (!lights_ || light_capacity_ < packed.size()) {
     light_capacity_ = std::max<size_t>(packed.size(), 1);
     lights_ = gl::createBuffer("lights", light_capacity_ * sizeof(GpuLight));

@@ -8,7 +8,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "halfvec/ibl/sky_sun.hpp"
 #include "halfvec/shading/light_gpu.hpp"
 #include "passes.hpp"
 #include "pipeline_state.hpp"
@@ -259,8 +258,8 @@ void ShadowMaps::writeShadowSlots(const Input& in, const ShadowAssignment& a) {
 
 ShadowMaps::Stats ShadowMaps::run(const PassContext& ctx, const Input& in) {
   gl::ScopedPass pass(ctx.timer, "shadows");
-  // The lights as the light pass has them (the sky's sun last, where it is a light).
-  const std::vector<Light> lights = renderedLights(in.scene);
+  // The lights as the light pass has them (the environment's sun last, where it is a light).
+  const std::vector<Light>& lights = in.gpu.lights();
   const size_t capacity = shadowLightCapacity(in.map_size, in.mask);
   const ShadowAssignment a = assignShadowMaps(lights, capacity);
   Stats st;

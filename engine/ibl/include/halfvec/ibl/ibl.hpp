@@ -67,8 +67,12 @@ float skyDomeIlluminance(const SkyParams& sky);
 glm::vec3 skyRadiance(const SkyParams& sky, glm::vec3 dir, float dome_illuminance);
 glm::vec3 skyRadiance(const SkyParams& sky, glm::vec3 dir);
 glm::vec3 skySunDirection(const SkyParams& sky);
+// A direction of the environment's own frame (the sky's, the equirect's) in the world: turned by
+// the environment's rotation_deg about +Y (EnvSource::radiance looks the unrotated environment up
+// at R(-rotation) dir).
+glm::vec3 environmentToWorld(const Environment& env, glm::vec3 d);
 // The direction towards the sun in the world: skySunDirection turned with the environment's
-// rotation (EnvSource::radiance looks the unrotated sky up at R(-rotation) dir).
+// rotation (environmentToWorld).
 glm::vec3 skySunWorldDirection(const Environment& env, const SkyParams& sky);
 // The sky's sun as a directional light of the same disk, radiance and color (docs/ibl.md, "The
 // sky's sun as a light"): travelling along -(the sun's direction rotated with the environment),

@@ -46,7 +46,11 @@ class GpuScene {
   // sizeof(GpuMaterial) rounded up to GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT (256 on some drivers).
   size_t materialStride() const { return material_stride_; }
   GLuint lightBuffer() const { return lights_.id(); }
-  size_t lightCount() const { return light_count_; }
+  size_t lightCount() const { return lights_cpu_.size(); }
+  // The lights the buffer holds, in its order: renderedLights(scene) at the last updateLights
+  // (the environment's sun last, where it is a light), so that the passes of every frame see the
+  // list the GPU has without looking for the sun again.
+  const std::vector<Light>& lights() const { return lights_cpu_; }
   // What the GPU buffer holds, per light: world-space bounding sphere of the culling (xyz center,
   // w lightCullRadius), for sizing the tile lists on the CPU (Renderer::cullLightsPass).
   const std::vector<glm::vec4>& lightCullSpheres() const { return cull_spheres_; }
@@ -68,7 +72,7 @@ class GpuScene {
   gl::VertexArray vao_;
   std::vector<DrawItem> draws_;
   size_t material_stride_ = 0;
-  size_t light_count_ = 0;
+  std::vector<Light> lights_cpu_;
   std::vector<glm::vec4> cull_spheres_;
   glm::uvec4 directional_{0u};
   size_t light_capacity_ = 0;
