@@ -92,4 +92,17 @@ vec3 reconstructWorldPosition(vec2 uv, float depth, mat4 inv_view_proj) {
   return vec3(w.x, w.y, w.z) / w.w;
 }
 
+// The shading normal a surface is lit with, given the unit direction V to the viewer: N itself
+// where it faces the viewer, else N reflected about the plane across V, N - 2 (N.V) V (unit, and
+// N'.V = -N.V > 0). A normal map or an interpolated vertex normal can face away from the viewer on
+// a face that does not (Schuessler et al. 2017, "Microfacet-based Normal Mapping for Robust Monte
+// Carlo Path Tracing", introduction, list such back-facing normals among normal mapping's
+// problems): the microfacet BRDF is then no reflectance. With N.V clamped to HV_MIN_NOV
+// (brdf.glsl), H = (V + L) / |V + L| lies along N for L near -V, where D and the V term peak, and a
+// Monte Carlo estimate of it never converges (docs/gbuffer.md, "Normals facing away from the
+// viewer"). Reflecting N keeps the shading continuous at N.V = 0 (N' = N there) and every view
+// above the horizon of the normal the BRDF sees. The G-buffer stores this normal, so the deferred
+// passes, the forward pass and the reference (which reads the G-buffer) shade the same one.
+vec3 viewFacingNormal(vec3 N, vec3 V) { return N - (2.0f * min(dot(N, V), 0.0f)) * V; }
+
 #endif

@@ -25,10 +25,12 @@ layout(location = 3) out vec2 v_uv1;
 #if HV_MAT_VERTEX_COLOR
 layout(location = 4) out vec4 v_color;
 #endif
+layout(location = 5) out vec3 v_to_camera;  // world: the fragment to the camera
 
 void main() {
   vec4 world = u_model * vec4(a_position, 1.0);
   v_normal = mat3(u_normal_matrix) * a_normal;
+  v_to_camera = u_camera_pos.xyz - world.xyz;
 #if HV_MAT_NORMAL_MAP || HV_MAT_CLEAR_COAT_MAPS
   v_tangent = vec4(mat3(u_model) * a_tangent.xyz, a_tangent.w);
 #endif

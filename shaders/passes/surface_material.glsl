@@ -33,6 +33,7 @@ layout(location = 3) in vec2 v_uv1;
 #if HV_MAT_VERTEX_COLOR
 layout(location = 4) in vec4 v_color;
 #endif
+layout(location = 5) in vec3 v_to_camera;
 
 #if HV_MAT_UV1
 vec2 uvSet(uint set) { return set == 0u ? v_uv0 : v_uv1; }
@@ -172,7 +173,11 @@ SurfaceMaterial surfaceMaterial() {
                      m.normal_scale);  // glTF normalTexture.scale
   }
 #endif
-  sm.n = n;
+  // Lit as facing the viewer wherever the normal map or the interpolation turned it away
+  // (viewFacingNormal, brdf.glsl), the coat's normal too.
+  vec3 V = normalize(v_to_camera);
+  sm.n = viewFacingNormal(n, V);
+  sm.coat_n = viewFacingNormal(sm.coat_n, V);
 
 #if HV_MAT_EMISSIVE
   vec3 emissive = m.emissive;

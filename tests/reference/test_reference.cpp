@@ -256,6 +256,33 @@ TEST(Reference, WhiteFurnaceDirectionalAlbedo) {
   }
 }
 
+// A normal facing away from the viewer (N.V = -0.47; normal maps and interpolated normals give
+// them) is shaded as its reflection about the plane across V (viewFacingNormal): the white
+// furnace then gives the directional albedo at N.V = +0.47, at most 1. Shaded with N as it is
+// and N.V clamped to HV_MIN_NOV, the BRDF gains energy: H lies along N for L near -V, where D
+// and the V term peak, and the estimate does not converge.
+TEST(Reference, WhiteFurnaceWithANormalFacingAway) {
+  hv::Scene scene = uniformEnvScene(glm::vec3(1.0f));
+  const float roughness = 0.3f;
+  hv::GBufferReadback gb = makeGBuffer(scene, 1, 1, glm::vec3(1.0f), 1.0f, roughness, 1.0f);
+  gb.normal[0] = glm::normalize(glm::vec3(0.0f, 0.3f, -1.0f));
+  const float NoV = glm::dot(gb.normal[0], kV);
+  ASSERT_LT(NoV, -0.4f);
+  hv::ReferenceResult r = hv::renderReference(scene, gb, fastOptions(4096));
+  const float got = r[hv::ReferenceAov::AmbientSpecular].px[0].x;
+  const float se = r.stdError(hv::ReferenceAov::AmbientSpecular).px[0].x;
+  // The albedo depends on N.V alone (an isotropic lobe): the quadrature's view at N.V = -NoV.
+  const glm::vec3 V_mirror(std::sqrt(1.0f - NoV * NoV), -NoV, 0.0f);
+  const double quad = specularAlbedoQuadrature(roughness, V_mirror);
+  EXPECT_LE(got, 1.0f + 3.0f * se);
+  EXPECT_NEAR(got, quad, 3.0 * se + 2e-3 * quad);
+  // The reflected normal itself: unit, facing the viewer as much as N faced away.
+  const glm::vec3 Nr = g::viewFacingNormal(gb.normal[0], kV);
+  EXPECT_NEAR(glm::length(Nr), 1.0f, 1e-6f);
+  EXPECT_NEAR(glm::dot(Nr, kV), -NoV, 1e-6f);
+  EXPECT_EQ(g::viewFacingNormal(kN, kV), kN);  // a normal facing the viewer is kept
+}
+
 // The standard error falls as 1/sqrt(N): 16x the samples, about 1/4 the error (mean over 25
 // pixels, each its own random stream).
 TEST(Reference, StandardErrorShrinksAsInverseSqrtN) {

@@ -2,6 +2,7 @@
 // quantization step of the input.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -161,6 +162,47 @@ TEST(GBuffer, DepthReconstructsWorldPosition) {
     }
   }
   EXPECT_LT(worst, 1e-4f) << "world position off the plane by " << worst;
+}
+
+// A normal facing away from the viewer on a face that faces it (normal maps and interpolated
+// normals give them) is stored reflected about the plane across V (viewFacingNormal,
+// gbuffer.glsl): every stored normal faces the viewer, and each is the reflection of the
+// vertex normal within the RG16 encoding's step. The plane's vertex normals lean along +x, so
+// seen from above the pixels at x > 0.4 m had N.V < 0.
+TEST(GBuffer, NormalsFacingAwayAreStoredFacingTheViewer) {
+  testContext();
+  Scene s = planeScene(Material{});
+  const glm::vec3 N0 = glm::normalize(glm::vec3(1.0f, 0.2f, 0.0f));
+  for (Vertex& v : s.meshes[0].vertices) v.normal = N0;
+  render::Renderer r;
+  r.setScene(s);
+  const int w = 64, h = 64;
+  r.render(w, h);
+  const auto g = r.readGBuffer();
+  const auto frame = render::makeFrameBlock(s, w, h);
+  int away = 0, lit = 0;
+  float worst_facing = 1.0f, worst_angle = 0.0f;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const size_t i = size_t(y) * w + x;
+      if (!isLit(ShadingModel(g.model[i]))) continue;
+      ++lit;
+      const glm::vec2 uv((x + 0.5f) / w, 1.0f - (y + 0.5f) / h);
+      const glm::vec3 P = glsl::reconstructWorldPosition(uv, g.depth[i], frame.inv_view_proj);
+      const glm::vec3 V = glm::normalize(s.camera.position - P);
+      away += glm::dot(N0, V) < 0.0f;
+      const glm::vec3 N = glm::normalize(g.normal[i]);
+      worst_facing = std::min(worst_facing, glm::dot(N, V));
+      const float c = glm::clamp(glm::dot(N, glsl::viewFacingNormal(N0, V)), -1.0f, 1.0f);
+      worst_angle = std::max(worst_angle, std::acos(c));
+    }
+  }
+  std::printf("normals facing away: %d of %d pixels; stored N.V >= %.2e, worst %.2e rad\n", away,
+              lit, worst_facing, worst_angle);
+  EXPECT_EQ(lit, w * h);
+  EXPECT_GT(away, lit / 5);
+  EXPECT_GT(worst_facing, -1e-3f);
+  EXPECT_LT(worst_angle, 2e-3f) << "radians";
 }
 
 TEST(GBuffer, BackgroundIsMarked) {

@@ -256,7 +256,7 @@ double aoSample(ShadingPoint& p, Rng& ao_rng) {
 // The clear coat of G-buffer pixel `index` (clear_coat.glsl), where its model has one.
 void setCoat(ShadingPoint& p, const GBufferReadback& gb, size_t index) {
   if (!gb.hasCoat() || gb.model[index] != uint32_t(ShadingModel::ClearCoat)) return;
-  const glm::vec3 Nc = glm::normalize(gb.coat_normal[index]);
+  const glm::vec3 Nc = glsl::viewFacingNormal(glm::normalize(gb.coat_normal[index]), p.V);
   p.coat = gb.clearcoat[index];
   p.cs = glsl::makeCoatSurface(Nc, gb.clearcoat_roughness[index], gb.cavity[index]);
   p.base_scale = glsl::coatBaseScale(p.coat, Nc, p.V);
@@ -308,13 +308,16 @@ PixelOut shadePixel(const Context& ctx, size_t index, int x, int y) {
 
   glm::vec2 uv((float(x) + 0.5f) / float(gb.width), 1.0f - (float(y) + 0.5f) / float(gb.height));
   const glm::vec3 P = glsl::reconstructWorldPosition(uv, gb.depth[index], ctx.inv_view_proj);
-  const glm::vec3 N = glm::normalize(gb.normal[index]);
+  const glm::vec3 V = glm::normalize(ctx.scene->camera.position - P);
+  // The engine's G-buffer holds view-facing normals already; a normal facing away (a G-buffer
+  // from elsewhere) is reflected as the G-buffer pass does (gbuffer.glsl, viewFacingNormal).
+  const glm::vec3 N = glsl::viewFacingNormal(glm::normalize(gb.normal[index]), V);
   // Visibility rays leave from just above the surface (visibility.hpp: rayOrigin says why).
   ShadingPoint p{ctx,
                  glsl::makeSurface(N, gb.base_color[index], gb.metallic[index], gb.roughness[index],
                                    gb.cavity[index]),
                  P,
-                 glm::normalize(ctx.scene->camera.position - P),
+                 V,
                  N,
                  ctx.vis ? rayOrigin(P, N, ctx.scene->camera.position) : P};
   setCoat(p, gb, index);
