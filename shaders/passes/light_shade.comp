@@ -217,12 +217,16 @@ vec3 probeLight(GpuLight l) { return l.color_inv_range.rgb * step(0.0, l.positio
       ltc_marks[j] |= (need && lit[j] && coat[j] > 0.0) ? bit : 0u;        \
     }                                                                      \
   }
-#define HV_SPLIT_COAT_SECOND(SECOND, l, b)                                           \
-  if (any_coat) {                                                                    \
-    for (int j = 0; j < HV_LIGHT_PIXELS; ++j) {                                      \
-      bool marked = ((ltc_marks[j] >> uint(b)) & 1u) != 0u;                          \
-      coat_sum[j] += marked ? SECOND(l, cs[j], csp[j]) * HV_VIS(j) : vec3(0.0);      \
-    }                                                                                \
+#define HV_SPLIT_COAT_SECOND(SECOND, l, j)                                        \
+  if (any_coat) {                                                                 \
+    Surface csj = cs[0];                                                          \
+    ShadingPoint cspj = csp[0];                                                   \
+    for (int k = 1; k < HV_LIGHT_PIXELS; ++k) {                                   \
+      csj = k == j ? cs[k] : csj;                                                 \
+      cspj = k == j ? csp[k] : cspj;                                              \
+    }                                                                             \
+    vec3 cc = SECOND(l, csj, cspj) * HV_VIS(j);                                   \
+    for (int k = 0; k < HV_LIGHT_PIXELS; ++k) coat_sum[k] += k == j ? cc : vec3(0.0); \
   }
 #define HV_SPLIT_COAT_WHOLE_SPHERE(FIRST, l, bit)                                             \
   if (any_coat) {                                                                             \
@@ -230,20 +234,25 @@ vec3 probeLight(GpuLight l) { return l.color_inv_range.rgb * step(0.0, l.positio
   }
 #else
 #define HV_SPLIT_COAT_FIRST(FIRST, l, bit)
-#define HV_SPLIT_COAT_SECOND(SECOND, l, b)
+#define HV_SPLIT_COAT_SECOND(SECOND, l, j)
 #define HV_SPLIT_COAT_WHOLE_SPHERE(FIRST, l, bit)
 #endif
-#define HV_SPLIT_COAT_NONE(SECOND, l, b)
+#define HV_SPLIT_COAT_NONE(SECOND, l, j)
 // The tile list's lights BEGIN .. END - 1 of one type in two parts. Every light shaded with the
 // first part (FIRST(l, s, sp, need): the representative point with an error budget,
 // error_budget.glsl; the whole light with `ltc`), each pixel's pairs that need the second (the
 // LTC where the budget asks for it; the cut at the horizon where a light straddles it) marked in
-// a bit mask, then corrected by a loop over the marked lights alone (SECOND(l, s, sp), added). A
+// a bit mask, then corrected by a loop over the marked pairs alone (SECOND(l, s, sp), added). A
 // SIMD CPU implementation runs an `if` body whether or not a lane takes it (see the top), so a
 // per-pair branch (or any loop holding one) would cost the second part everywhere; a loop ends
-// when no lane has a marked light left. The lights go 32 at a time (one mask word per pixel:
-// registers, where arrays indexed at run time would go to memory); the marked lights lowest
-// first, a lane leaving the loop when its marks are used up.
+// when no lane has a marked pair left. The lights go 32 at a time (one mask word per pixel:
+// registers, where arrays indexed at run time would go to memory). Each pass of the correction
+// loop takes one marked pair, the lowest marked pixel's lowest marked light, and evaluates the
+// second part for that pixel alone (its Surface chosen by selects, not an index into the array):
+// a loop over marked lights that evaluated every pixel of the invocation for each (the marked
+// ones kept) paid the LTC for pixels that did not need it, and held HV_LIGHT_PIXELS inlined
+// copies of it, whose mere presence slowed the pass (docs/lights.md, "Where the budget's time
+// goes"). Each pixel still adds its lights' corrections in light order.
 #define HV_SPLIT_LOOP(BEGIN, END, FIRST, SECOND, COAT_FIRST, COAT_SECOND)          \
   if (BEGIN < END) {                                                              \
     uint chunk = BEGIN;                                                           \
@@ -268,15 +277,26 @@ vec3 probeLight(GpuLight l) { return l.color_inv_range.rgb * step(0.0, l.positio
       uint marks = ltc_marks[0];                                                  \
       for (int j = 1; j < HV_LIGHT_PIXELS; ++j) marks |= ltc_marks[j];            \
       while (marks != 0u) {                                                       \
-        int b = findLSB(marks);                                                   \
-        marks &= marks - 1u;                                                      \
+        int j = HV_LIGHT_PIXELS - 1;                                              \
+        for (int k = HV_LIGHT_PIXELS - 2; k >= 0; --k) j = ltc_marks[k] != 0u ? k : j; \
+        uint mj = ltc_marks[0];                                                   \
+        for (int k = 1; k < HV_LIGHT_PIXELS; ++k) mj = k == j ? ltc_marks[k] : mj; \
+        int b = findLSB(mj);                                                      \
+        uint keep = ~(1u << uint(b));                                             \
+        for (int k = 0; k < HV_LIGHT_PIXELS; ++k) ltc_marks[k] &= k == j ? keep : ~0u; \
+        marks = ltc_marks[0];                                                     \
+        for (int k = 1; k < HV_LIGHT_PIXELS; ++k) marks |= ltc_marks[k];          \
+        Surface sj = s[0];                                                        \
+        ShadingPoint spj = sp[0];                                                 \
+        for (int k = 1; k < HV_LIGHT_PIXELS; ++k) {                               \
+          sj = k == j ? s[k] : sj;                                                \
+          spj = k == j ? sp[k] : spj;                                             \
+        }                                                                         \
         GpuLight l = tileLight(chunk + uint(b));                                  \
         HV_SPLIT_VIS_LOAD(b)                                                      \
-        for (int j = 0; j < HV_LIGHT_PIXELS; ++j) {                               \
-          bool marked = ((ltc_marks[j] >> uint(b)) & 1u) != 0u;                   \
-          sum[j] += marked ? SECOND(l, s[j], sp[j]) * HV_VIS(j) : vec3(0.0);      \
-        }                                                                         \
-        COAT_SECOND(SECOND, l, b)                                                 \
+        vec3 c = SECOND(l, sj, spj) * HV_VIS(j);                                  \
+        for (int k = 0; k < HV_LIGHT_PIXELS; ++k) sum[k] += k == j ? c : vec3(0.0); \
+        COAT_SECOND(SECOND, l, j)                                                 \
       }                                                                           \
       chunk = chunk_end;                                                          \
     } while (chunk < END);                                                        \
