@@ -174,7 +174,7 @@ SurfaceMaterial surfaceMaterial() {
   }
 #endif
   // Lit as facing the viewer wherever the normal map or the interpolation turned it away
-  // (viewFacingNormal, brdf.glsl), the coat's normal too.
+  // (viewFacingNormal, gbuffer.glsl), the coat's normal too.
   vec3 V = normalize(v_to_camera);
   sm.n = viewFacingNormal(n, V);
   sm.coat_n = viewFacingNormal(sm.coat_n, V);
