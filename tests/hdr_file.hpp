@@ -3,7 +3,9 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -13,6 +15,15 @@
 
 namespace hv::test {
 
+// Float -> RGBE as Ward's writer does: mantissas scaled by the largest component's exponent.
+inline std::array<uint8_t, 4> toRgbe(glm::vec3 c) {
+  const float v = std::max({c.x, c.y, c.z});
+  if (v < 1e-32f) return {0, 0, 0, 0};
+  int e = 0;
+  const float m = std::frexp(v, &e) * 256.0f / v;
+  return {uint8_t(c.x * m), uint8_t(c.y * m), uint8_t(c.z * m), uint8_t(e + 128)};
+}
+
 // Flat scanlines: no pixel of these images starts (2, 2, ...) or is (1, 1, 1, e), the markers
 // of a run-length scanline and an old-style repeat, since every channel is 0 or has a mantissa
 // byte of at least 128 for the largest channel and the test images use grey or near-grey values.
@@ -20,17 +31,8 @@ inline void writeHdrFile(const std::filesystem::path& path, const ImageRGBf& img
   std::ofstream f(path, std::ios::binary);
   f << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " << img.height << " +X " << img.width << "\n";
   for (const glm::vec3& c : img.px) {
-    const float m = std::max({c.x, c.y, c.z});
-    unsigned char rgbe[4] = {0, 0, 0, 0};
-    if (m > 1e-32f) {
-      int e = 0;
-      const float scale = std::frexp(m, &e) * 256.0f / m;
-      rgbe[0] = static_cast<unsigned char>(c.x * scale);
-      rgbe[1] = static_cast<unsigned char>(c.y * scale);
-      rgbe[2] = static_cast<unsigned char>(c.z * scale);
-      rgbe[3] = static_cast<unsigned char>(e + 128);
-    }
-    f.write(reinterpret_cast<const char*>(rgbe), 4);
+    const std::array<uint8_t, 4> rgbe = toRgbe(c);
+    f.write(reinterpret_cast<const char*>(rgbe.data()), 4);
   }
 }
 

@@ -278,9 +278,11 @@ vec3 probeLight(GpuLight l) { return l.color_inv_range.rgb * step(0.0, l.positio
       for (int j = 1; j < HV_LIGHT_PIXELS; ++j) marks |= ltc_marks[j];            \
       while (marks != 0u) {                                                       \
         int j = HV_LIGHT_PIXELS - 1;                                              \
-        for (int k = HV_LIGHT_PIXELS - 2; k >= 0; --k) j = ltc_marks[k] != 0u ? k : j; \
-        uint mj = ltc_marks[0];                                                   \
-        for (int k = 1; k < HV_LIGHT_PIXELS; ++k) mj = k == j ? ltc_marks[k] : mj; \
+        uint mj = ltc_marks[j];                                                   \
+        for (int k = HV_LIGHT_PIXELS - 2; k >= 0; --k) {                          \
+          j = ltc_marks[k] != 0u ? k : j;                                         \
+          mj = ltc_marks[k] != 0u ? ltc_marks[k] : mj;                            \
+        }                                                                         \
         int b = findLSB(mj);                                                      \
         uint keep = ~(1u << uint(b));                                             \
         for (int k = 0; k < HV_LIGHT_PIXELS; ++k) ltc_marks[k] &= k == j ? keep : ~0u; \

@@ -14,6 +14,7 @@
 #include <stb/stb_image.h>
 
 #include "halfvec/ibl/ibl.hpp"
+#include "hdr_file.hpp"
 #include "shared_assets.hpp"
 
 namespace fs = std::filesystem;
@@ -22,14 +23,7 @@ namespace {
 
 using Rgbe = std::array<uint8_t, 4>;
 
-// Float -> RGBE as Ward's writer does: mantissas scaled by the largest component's exponent.
-Rgbe toRgbe(glm::vec3 c) {
-  const float v = std::max({c.x, c.y, c.z});
-  if (v < 1e-32f) return {0, 0, 0, 0};
-  int e = 0;
-  const float m = std::frexp(v, &e) * 256.0f / v;
-  return {uint8_t(c.x * m), uint8_t(c.y * m), uint8_t(c.z * m), uint8_t(e + 128)};
-}
+using hv::test::toRgbe;  // hdr_file.hpp
 
 // RGBE -> float, the convention the reader documents (mantissa * 2^(e - 136)).
 glm::vec3 fromRgbe(const Rgbe& p) {

@@ -228,13 +228,9 @@ fs::path cachePath(const Environment& env, const BakeOptions& opt, const BakeSiz
         << vecKey(glm::vec3(s.sun_to_sky, s.ground_albedo, 0.0f)) << (s.sun_disk ? "" : "|nosun");
   }
   if (env.kind == EnvironmentKind::HdrFile) {
-    std::error_code ec;
-    const fs::path p = fs::absolute(env.path, ec);
-    const auto fsize = fs::file_size(p, ec);
-    if (ec) throw IblError("HDR '" + env.path + "': cannot open (missing file?)");
-    const auto mtime = fs::last_write_time(p, ec).time_since_epoch().count();
-    key << "|file" << p.string() << "|" << fsize << "|" << mtime
-        << (opt.sky.sun_disk ? "" : "|nosun");
+    const std::string file = hdrFileIdentity(env.path);
+    if (file.empty()) throw IblError("HDR '" + env.path + "': cannot open (missing file?)");
+    key << "|file" << file << (opt.sky.sun_disk ? "" : "|nosun");
   }
   char name[64];
   std::snprintf(name, sizeof(name), "ibl-%016llx.bin", (unsigned long long)fnv1a(key.str()));

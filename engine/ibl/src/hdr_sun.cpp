@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <map>
 #include <mutex>
 #include <string>
@@ -15,11 +14,6 @@ namespace hv {
 namespace {
 
 constexpr float kPi = glm::pi<float>();
-
-// Rec. 709 luminance, as the rest of the IBL code weighs colours.
-float lum(glm::vec3 c) {
-  return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
-}
 
 // Solid angle of a texel of row y of a w x h equirect: (2 pi / w) (pi / h) sin(theta) at the row's
 // center.
@@ -59,14 +53,14 @@ HdrSun findHdrSun(const ImageRGBf& img) {
     const float dw = texelSolidAngle(y, w, h);
     for (int x = 0; x < w; ++x) {
       const int i = y * w + x;
-      const float l = lum(img.px[size_t(i)]);
+      const float l = luminance(img.px[size_t(i)]);
       if (!std::isfinite(l)) return sun;
       power += double(l) * dw;
-      if (l > lum(img.px[size_t(peak)])) peak = i;
+      if (l > luminance(img.px[size_t(peak)])) peak = i;
     }
   }
   const float mean = float(power / (4.0 * double(kPi)));
-  const float peak_lum = lum(img.px[size_t(peak)]);
+  const float peak_lum = luminance(img.px[size_t(peak)]);
   if (!(peak_lum > 0.0f) || peak_lum < kHdrSunPeakOverMean * mean) return sun;
   // The texels connected to the peak that are within kHdrSunRegionFraction of it; stop as soon as
   // they cover more than a sun may.
@@ -82,7 +76,7 @@ HdrSun findHdrSun(const ImageRGBf& img) {
     omega += texelSolidAngle(i / w, w, h);
     if (omega > kHdrSunMaxSolidAngle) return HdrSun{};
     forNeighbours(i, w, h, [&](int n) {
-      if (in[size_t(n)] || lum(img.px[size_t(n)]) < threshold) return;
+      if (in[size_t(n)] || luminance(img.px[size_t(n)]) < threshold) return;
       in[size_t(n)] = 1;
       todo.push_back(n);
     });
@@ -110,7 +104,7 @@ HdrSun findHdrSun(const ImageRGBf& img) {
     const float dw = texelSolidAngle(i / w, w, h);
     const glm::vec3 excess = glm::max(img.px[size_t(i)] - sun.fill, glm::vec3(0.0f));
     e += glm::dvec3(excess) * double(dw);
-    dir += glm::dvec3(texelDirection(i % w, i / w, w, h)) * double(lum(excess) * dw);
+    dir += glm::dvec3(texelDirection(i % w, i / w, w, h)) * double(luminance(excess) * dw);
   }
   if (!(glm::length(dir) > 0.0)) return HdrSun{};
   sun.found = true;
@@ -130,14 +124,8 @@ void removeHdrSun(ImageRGBf& img, const HdrSun& sun) {
 const HdrSun& hdrSunOf(const Environment& env) {
   static const HdrSun none;
   if (env.kind != EnvironmentKind::HdrFile) return none;
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::path p = fs::absolute(env.path, ec);
-  const auto size = fs::file_size(p, ec);
-  if (ec) return none;
-  const auto mtime = fs::last_write_time(p, ec).time_since_epoch().count();
-  if (ec) return none;
-  const std::string key = p.string() + "|" + std::to_string(size) + "|" + std::to_string(mtime);
+  const std::string key = hdrFileIdentity(env.path);
+  if (key.empty()) return none;
   static std::mutex mutex;
   static std::map<std::string, HdrSun> found;
   std::lock_guard<std::mutex> lock(mutex);
@@ -153,7 +141,7 @@ const HdrSun& hdrSunOf(const Environment& env) {
 }
 
 Light hdrSunLight(const Environment& env, const HdrSun& sun) {
-  const float e = lum(sun.illuminance);
+  const float e = luminance(sun.illuminance);
   Light l;
   l.type = LightType::Directional;
   l.direction = -environmentToWorld(env, sun.direction);

@@ -117,11 +117,22 @@ size_t minScanlineBytes(int w) {
   return std::min(old_style, 4 + 4 * 2 * size_t((w + 126) / 127));
 }
 
+}  // namespace
+
 float luminance(glm::vec3 c) {
   return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
 }
 
-}  // namespace
+std::string hdrFileIdentity(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path p = fs::absolute(path, ec);
+  const auto size = fs::file_size(p, ec);
+  if (ec) return {};
+  const auto mtime = fs::last_write_time(p, ec).time_since_epoch().count();
+  if (ec) return {};
+  return p.string() + "|" + std::to_string(size) + "|" + std::to_string(mtime);
+}
 
 ImageRGBf decodeHdr(const uint8_t* b, size_t size, const std::string& path, int max_width) {
   size_t pos = 0;

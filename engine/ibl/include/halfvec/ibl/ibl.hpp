@@ -102,6 +102,11 @@ ImageRGBf loadHdr(const std::string& path);
 // lower it to keep each run small).
 ImageRGBf decodeHdr(const uint8_t* bytes, size_t size, const std::string& path,
                     int max_width = kMaxHdrWidth);
+// What identifies an HDR file's contents to the caches built from it (the bake's, the sun's):
+// its absolute path, size and modification time; empty where the file cannot be read.
+std::string hdrFileIdentity(const std::string& path);
+// Rec. 709 luminance, the weight the IBL code gives colours.
+float luminance(glm::vec3 c);
 
 // Source of an Environment (loads the .hdr for HdrFile). Throws IblError for kind None.
 EnvSource makeEnvSource(const Environment& env, const SkyParams& sky = {});
