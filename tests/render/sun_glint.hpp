@@ -12,15 +12,12 @@
 #include <iostream>
 #include <string>
 
+#include "halfvec/ibl/ibl.hpp"
 #include "halfvec/reference/reference.hpp"
 #include "halfvec/shading/shading.hpp"
 #include "render_fixture.hpp"
 
 namespace hv::test {
-
-inline float glintLuminance(glm::vec3 c) {
-  return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
-}
 
 // A glossy metal sphere of radius 1 at the origin seen from 4 m on the sun's side, a little off
 // its line (the glint near the image's middle, the camera not along the glint's axis), the
@@ -58,7 +55,7 @@ inline Glint glintError(const ImageRGBf& engine, const ImageRGBf& ref, int radiu
   const int w = ref.width, h = ref.height;
   size_t peak = 0;
   for (size_t i = 0; i < ref.px.size(); ++i) {
-    if (glintLuminance(ref.px[i]) > glintLuminance(ref.px[peak])) peak = i;
+    if (luminance(ref.px[i]) > luminance(ref.px[peak])) peak = i;
   }
   const int px = int(peak) % w, py = int(peak) / w;
   Glint g;
@@ -67,7 +64,7 @@ inline Glint glintError(const ImageRGBf& engine, const ImageRGBf& ref, int radiu
   for (int y = std::max(py - radius, 0); y <= std::min(py + radius, h - 1); ++y) {
     for (int x = std::max(px - radius, 0); x <= std::min(px + radius, w - 1); ++x) {
       const size_t i = size_t(y) * size_t(w) + size_t(x);
-      const double e = glintLuminance(engine.px[i]), r = glintLuminance(ref.px[i]);
+      const double e = luminance(engine.px[i]), r = luminance(ref.px[i]);
       se += e;
       sr += r;
       g.mean_error += std::abs(e / std::max(r, 1e-6) - 1.0);
@@ -76,7 +73,7 @@ inline Glint glintError(const ImageRGBf& engine, const ImageRGBf& ref, int radiu
   }
   g.sum_ratio = se / sr;
   g.mean_error /= n;
-  g.peak_ratio = glintLuminance(engine.px[peak]) / glintLuminance(ref.px[peak]);
+  g.peak_ratio = luminance(engine.px[peak]) / luminance(ref.px[peak]);
   return g;
 }
 

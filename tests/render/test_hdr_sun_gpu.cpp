@@ -76,11 +76,10 @@ TEST(HdrSunGpu, ReferenceBooksTheSunUnderDirectTermsWithTheSameTotal) {
   const auto DD = size_t(ReferenceAov::DirectDiffuse), DS = size_t(ReferenceAov::DirectSpecular);
   double direct_split = 0.0, direct_whole = 0.0, total = 0.0, diff = 0.0;
   for (size_t i = 0; i < split.image.px.size(); ++i) {
-    direct_split += test::glintLuminance(split.aov[DD].px[i] + split.aov[DS].px[i]);
-    direct_whole += test::glintLuminance(whole.aov[DD].px[i] + whole.aov[DS].px[i]);
-    total += test::glintLuminance(whole.image.px[i]);
-    diff +=
-        std::abs(test::glintLuminance(split.image.px[i]) - test::glintLuminance(whole.image.px[i]));
+    direct_split += luminance(split.aov[DD].px[i] + split.aov[DS].px[i]);
+    direct_whole += luminance(whole.aov[DD].px[i] + whole.aov[DS].px[i]);
+    total += luminance(whole.image.px[i]);
+    diff += std::abs(luminance(split.image.px[i]) - luminance(whole.image.px[i]));
   }
   EXPECT_EQ(direct_whole, 0.0);
   EXPECT_GT(direct_split, 0.01 * total) << "the sun lights the sphere";

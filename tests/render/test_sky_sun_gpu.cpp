@@ -104,9 +104,9 @@ TEST(SkySunGpu, ShadowedSunDarkensTheFloorUnderASphereAsTheReference) {
       const glm::vec3 oc = P - glm::vec3(0.0f, 0.5f, 0.0f);
       const float b = glm::dot(oc, to_sun), c = glm::dot(oc, oc) - 0.25f;
       if (b * b - c < 0.01f || b > 0.0f) continue;  // not well inside the shadow
-      e_shadowed += test::glintLuminance(shadowed.hdr.px[i]);
-      e_open += test::glintLuminance(open.hdr.px[i]);
-      r += test::glintLuminance(ref.px[i]);
+      e_shadowed += luminance(shadowed.hdr.px[i]);
+      e_open += luminance(open.hdr.px[i]);
+      r += luminance(ref.px[i]);
       ++pixels;
     }
   }
