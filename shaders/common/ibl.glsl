@@ -30,6 +30,24 @@ float mipToRoughness(float mip, float maxMip) {
   return 1.0f - sqrt(saturate(1.0f - mip / maxMip));
 }
 
+// The mip a surface of perceptual roughness r reads its ambient specular from. From mip 1 up, the
+// mip prefiltered at r (roughnessToMip). Below mip 1's roughness r1 the lobe is narrower than any
+// prefiltered one, and a blend of mip 0 (the environment) and mip 1 stands in for it. GGX far from
+// its peak is D ~ alpha^2 / (pi tan^4 theta) (Walter et al. 2007, eq. 33, for tan theta >> alpha),
+// so the lobe's tail is (alpha / alpha1)^2 times mip 1's while its core lies within a texel of mip
+// 0: a weight (alpha / alpha1)^2 = (r / r1)^4 of mip 1 keeps the tail's light, where the linear
+// blend of roughnessToMip (lod 0.44 at roughness 0.045 for a 256^2 cube) gave small bright sources
+// a halo 2-14 times the reference's around a dimmed core (docs/ibl.md, "Glossy lookups").
+float specularLookupMip(float roughness, float maxMip) {
+  if (maxMip < 1.0f) return roughnessToMip(roughness, maxMip);
+  float r1 = mipToRoughness(1.0f, maxMip);
+  float r = saturate(roughness);
+  if (r >= r1) return roughnessToMip(r, maxMip);
+  float q = r / r1;
+  q *= q;
+  return q * q;
+}
+
 // --- Prefiltered radiance: the direction it is read along -----------------------------------
 // The prefilter assumes n = v = r (Karis 2013 eq. 7), so its lobe is centred on R. The lobe of a
 // rough BRDF times NoL is not: its peak moves from R towards N as roughness grows (the

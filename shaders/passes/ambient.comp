@@ -186,7 +186,7 @@ void main() {
   vec3 R = reflect(-V, N);
   if (!background) {
     dir = prefilteredDirection(N, R, s.alpha);
-    lod = roughnessToMip(s.roughness, u_env.x);
+    lod = specularLookupMip(s.roughness, u_env.x);
   }
 #endif
   // The environment seen along the view ray (background) or prefiltered along R (surface).
@@ -245,7 +245,7 @@ void main() {
       float NoVc = clamp(dot(Nc, V), 1e-4, 1.0);
       vec3 Rc = reflect(-V, Nc);
       vec3 coat_radiance = textureLod(t_radiance, prefilteredDirection(Nc, Rc, cs.alpha),
-                                      roughnessToMip(cs.roughness, u_env.x)).rgb;
+                                      specularLookupMip(cs.roughness, u_env.x)).rgb;
 #if HV_ENV_BRDF_ANALYTIC
       vec2 abc = EnvBRDFApproxScaleBias(cs.roughness, NoVc);
 #else

@@ -65,7 +65,7 @@ vec3 ambientSpecularOf(Surface s, vec3 V) {
   float NoV = clamp(dot(s.N, V), 1e-4, 1.0);
   vec3 R = reflect(-V, s.N);
   vec3 radiance = textureLod(t_radiance, prefilteredDirection(s.N, R, s.alpha),
-                             roughnessToMip(s.roughness, u_env.x)).rgb;
+                             specularLookupMip(s.roughness, u_env.x)).rgb;
 #if HV_ENV_BRDF_ANALYTIC
   vec2 ab = EnvBRDFApproxScaleBias(s.roughness, NoV);
 #else

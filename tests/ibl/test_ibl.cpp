@@ -10,6 +10,7 @@
 
 #include "halfvec/ibl/ibl.hpp"
 #include "halfvec/ibl/ibl_math.hpp"
+#include "hdr_file.hpp"
 #include "shared_assets.hpp"
 
 namespace fs = std::filesystem;
@@ -125,6 +126,27 @@ TEST(IblMath, MipRoughnessInverseAndFinite) {
 // The dominant direction of Lagarde & de Rousiers 2014 (listing 22): R for a mirror, N at alpha 1,
 // in between it moves monotonically from R to N in the plane of N and R, and it is a unit vector.
 // The default lookup (prefilteredDirection, no HV_IBL_DIRECTION define) is that direction.
+// The lookup's mip: roughnessToMip from mip 1's roughness up; below it a weight (r / r1)^4 of
+// mip 1, continuous at r1 and rising with roughness.
+TEST(IblMath, SpecularLookupMipBlendsMipOneByItsTail) {
+  for (float max_mip : {4.0f, 5.0f, 7.0f}) {
+    const float r1 = g::mipToRoughness(1.0f, max_mip);
+    EXPECT_NEAR(g::specularLookupMip(r1, max_mip), 1.0f, 1e-5f);
+    EXPECT_NEAR(g::specularLookupMip(r1 * (1.0f - 1e-4f), max_mip), 1.0f, 1e-3f);
+    EXPECT_EQ(g::specularLookupMip(0.0f, max_mip), 0.0f);
+    EXPECT_NEAR(g::specularLookupMip(0.5f * r1, max_mip), 1.0f / 16.0f, 1e-6f);
+    for (float r : {0.3f, 0.6f, 1.0f})
+      EXPECT_EQ(g::specularLookupMip(r, max_mip), g::roughnessToMip(r, max_mip));
+    float last = -1.0f;
+    for (float r = 0.0f; r <= 1.0f; r += 1.0f / 64.0f) {
+      const float m = g::specularLookupMip(r, max_mip);
+      EXPECT_GT(m, last) << "roughness " << r;
+      last = m;
+    }
+  }
+  EXPECT_EQ(g::specularLookupMip(0.5f, 0.0f), 0.0f);  // one mip: the environment alone
+}
+
 TEST(IblMath, DominantDirectionGoesFromRToN) {
   const glm::vec3 N(0.0f, 0.0f, 1.0f);
   const glm::vec3 V = glm::normalize(glm::vec3(0.9f, 0.0f, 0.2f));  // grazing: N.V = 0.22
@@ -609,4 +631,65 @@ TEST(Ibl, RoughMipsOfTheSkyHaveNoSampleNoise) {
                 double(worst));
     EXPECT_LT(worst, 0.025f) << "mip " << m;
   }
+}
+
+// A glossy surface near a small bright source (a studio lamp): the engine's lookup against the
+// lobe it stands for, Karis 2013 eq. 7's prefiltered radiance (n = v = r) integrated over the
+// source texels, for roughness 0.045 (the least) with R at the lamp and 1 to 8 degrees from it.
+// In the tail the linear blend of roughnessToMip reads mip 1's lobe, whose tail is (alpha1 /
+// alpha)^2 = 77 times as strong: the halo around every glint (docs/ibl.md, "Glossy lookups").
+TEST(Ibl, GlossyLookupKeepsABrightSourcesCoreAndTail) {
+  const glm::vec3 to_lamp = glm::normalize(glm::vec3(0.3f, 0.5f, -0.8f));
+  const hv::ImageRGBf src =
+      hv::test::skyWithSun(512, to_lamp, 2000.0f, 3, glm::vec3(0.2f), glm::vec3(0.2f));
+  const fs::path path = tmpPath("lamp.hdr");
+  hv::test::writeHdrFile(path, src);
+  hv::Environment env;
+  env.kind = hv::EnvironmentKind::HdrFile;
+  env.path = path.string();
+  hv::BakeOptions o = fastOptions();
+  o.cube_size = 128;
+  o.prefilter_samples = 1024;
+  const hv::IblBake b = hv::bakeEnvironment(env, o);
+  const float max_mip = float(b.radiance.mipCount() - 1);
+  const float r = 0.045f, alpha = r * r;
+  // The lobe over the source's texels, as read back from the file (RGBE-rounded).
+  const hv::ImageRGBf file = hv::loadHdr(path.string());
+  auto exact = [&](glm::vec3 R) {
+    glm::dvec3 sum(0.0);
+    double wsum = 0.0;
+    for (int y = 0; y < file.height; ++y) {
+      const float theta = kPi * (float(y) + 0.5f) / float(file.height);
+      const double texel = std::sin(theta) * (kPi / file.height) * (2.0 * kPi / file.width);
+      for (int x = 0; x < file.width; ++x) {
+        const glm::vec3 L = hv::equirectDirection(glm::vec2(
+            (float(x) + 0.5f) / float(file.width), (float(y) + 0.5f) / float(file.height)));
+        const float NoL = glm::dot(R, L);
+        if (NoL <= 0.0f) continue;
+        const double w = double(g::D_GGX(alpha, glm::dot(R, glm::normalize(R + L)))) * NoL * texel;
+        sum += glm::dvec3(file.at(x, y)) * w;
+        wsum += w;
+      }
+    }
+    return glm::vec3(sum / wsum);
+  };
+  const glm::vec3 side = glm::normalize(glm::cross(to_lamp, glm::vec3(0.0f, 1.0f, 0.0f)));
+  // The lamp is 3 texels (2.1 degrees) wide: R at 0 and 1 degree sees its core, at 4 to 16 degrees
+  // the lobe's tail. (One texel outside its edge, at 2 degrees, the lookup reads 0.3 times the
+  // lobe and the linear blend 3.8 times: mip 0's texels are as wide as the lobe's shoulder there.)
+  float worst_linear = 1.0f;
+  for (float deg : {0.0f, 1.0f, 4.0f, 8.0f, 16.0f}) {
+    const float a = deg * kPi / 180.0f;
+    const glm::vec3 R = glm::normalize(std::cos(a) * to_lamp + std::sin(a) * side);
+    const float want = exact(R).x;
+    const float got = b.radiance.sampleLod(R, g::specularLookupMip(r, max_mip)).x;
+    const float linear = b.radiance.sampleLod(R, g::roughnessToMip(r, max_mip)).x;
+    std::printf("%4.1f deg: lobe %9.3f, lookup %9.3f, linear blend %9.3f\n", double(deg),
+                double(want), double(got), double(linear));
+    const float tolerance = deg < 2.0f ? 1.25f : 2.0f;
+    EXPECT_GT(got, want / tolerance) << deg << " degrees from the lamp";
+    EXPECT_LT(got, want * tolerance) << deg << " degrees from the lamp";
+    worst_linear = std::max({worst_linear, linear / want, want / linear});
+  }
+  EXPECT_GT(worst_linear, 3.0f);  // what the test tells apart: the linear blend's halo
 }
