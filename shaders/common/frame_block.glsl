@@ -21,7 +21,8 @@ HV_BLOCK_MEMBER(uint, debug_view)     // hv::DebugView (debug_view.frag)
 HV_BLOCK_MEMBER(uint, frame_flags)    // HV_FRAME_* bits (bindings.glsl)
 // exposure, dither strength, environment intensity, environment rotation (rad)
 HV_BLOCK_MEMBER(vec4, output)
-// near plane, settings.max_error (error_budget.glsl; 0: no budget), unused, unused
+// near plane, settings.max_error (error_budget.glsl; 0: no budget), settings.ao_radius (the
+// traced specular occlusion's reach, ambient.comp), unused
 HV_BLOCK_MEMBER(vec4, frame_params)
 // The directional lights (HV_LIGHT_DIRECTIONAL), which the culling does not bin: their indices in
 // the light buffer + 1, in scene order, 0 after the last (at most hv::kMaxDirectionalLights, the

@@ -82,10 +82,11 @@
 #define HV_AO_RESOLUTION_FULL 0
 #define HV_AO_RESOLUTION_HALF 1
 
-// ao_specular (HV_AO_SPECULAR): none, lagarde, cone
+// ao_specular (HV_AO_SPECULAR): none, lagarde, cone, traced
 #define HV_AO_SPECULAR_NONE 0
 #define HV_AO_SPECULAR_LAGARDE 1
 #define HV_AO_SPECULAR_CONE 2
+#define HV_AO_SPECULAR_TRACED 3
 
 // shadow_filter (HV_SHADOW_FILTER): hard, pcf, pcss
 #define HV_SHADOW_FILTER_HARD 0

@@ -46,7 +46,8 @@
 // Screen-space ambient occlusion (settings.ao; docs/ambient-occlusion.md): HV_AO 1 reads the AO
 // pass's output (visibility, view distance, bent normal) on HV_UNIT_AO; it occludes ambient
 // diffuse (with the cavity: combineOcclusion; optionally through the multi-bounce fit) and ambient
-// specular (HV_AO_SPECULAR: none, Lagarde & de Rousiers 2014, or the cone-cone form).
+// specular (HV_AO_SPECULAR: none, Lagarde & de Rousiers 2014, the cone-cone form, or for narrow
+// lobes the visibility traced along the lobe through the depth buffer).
 #ifndef HV_AO
 #define HV_AO 0
 #endif
@@ -139,11 +140,53 @@ vec4 aoAt(ivec2 px) {
   return wsum > 1e-4 ? sum / wsum : nearest;
 }
 
+#if HV_AO_SPECULAR == HV_AO_SPECULAR_TRACED
+// The traced specular occlusion (ao_specular: traced; constants and weight: ao.glsl, HV_AO_TRACE_*)
+// of a lobe of perceptual roughness r along dir (world, unit) from the surface in pixel px at
+// `depth`: the visibility of the environment along that ray, 0 where something on screen lies
+// across it within HV_AO_TRACE_REACH ao_radius, else 1, weighted against Lagarde's occlusion from
+// the AO (`lagarde`) by aoTraceWeight: a ray stands for a narrow lobe, not a wide one. Points off
+// screen or behind the camera end the march unoccluded (the depth buffer knows nothing there).
+// Depth is read bilinearly (GpuEnvironment::bilinear): a plane's reversed-Z depth is affine in
+// screen space, so a floor seen at a grazing angle does not occlude itself between texel centres.
+// The march's count is 0 where the weight is (rough lobes): a SIMD row of them skips it.
+float tracedSpecularOcclusion(ivec2 px, float depth, vec3 dir, float roughness, float lagarde) {
+  float weight = aoTraceWeight(roughness);
+  vec2 uv0 = (vec2(px) + 0.5) / vec2(u_viewport.xy);
+  vec3 P = reconstructWorldPosition(uv0, depth, u_inv_view_proj);
+  float radius = u_frame_params.z;
+  float reach = HV_AO_TRACE_REACH * radius;
+  float start = HV_AO_TRACE_START * u_frame_params.x / max(depth, 1e-9);
+  float visible = 1.0;
+  int steps = weight > 0.0 && depth > 0.0 ? HV_AO_TRACE_STEPS : 0;
+  for (int k = 0; k < steps; ++k) {
+    float u = (float(k) + 0.5) / float(HV_AO_TRACE_STEPS);
+    float t = start + reach * u * u;
+    vec4 c = u_view_proj * vec4(P + dir * t, 1.0);
+    if (c.w <= 0.0) break;
+    vec2 s = c.xy / c.w * 0.5 + 0.5;
+    if (any(lessThan(s, vec2(0.0))) || any(greaterThan(s, vec2(1.0)))) break;
+    float d = textureLod(t_depth, s, 0.0).r;
+    // Reversed Z: view distance = near / depth; the point lies c.w from the camera.
+    float gap = c.w - u_frame_params.x / max(d, 1e-9);
+    if (d > 0.0 && gap > HV_AO_TRACE_EPSILON * c.w && gap < aoTraceThickness(radius, t)) {
+      visible = 0.0;
+      break;
+    }
+  }
+  return mix(lagarde, visible, weight);
+}
+#endif
+
 // The screen-space AO's occlusion of the coat's ambient specular: the base's rule (settings.
 // ao_specular) on the coat's normal, roughness and reflection.
-float coatSpecularOcclusion(Surface cs, float NoVc, vec3 Rc, vec4 ao, float vis) {
+float coatSpecularOcclusion(ivec2 px, Surface cs, float NoVc, vec3 Rc, vec4 ao, float vis) {
 #if HV_AO_SPECULAR == HV_AO_SPECULAR_LAGARDE
   return specularOcclusion(NoVc, vis, cs.alpha);
+#elif HV_AO_SPECULAR == HV_AO_SPECULAR_TRACED
+  return tracedSpecularOcclusion(px, texelFetch(t_depth, px, 0).r,
+                                 prefilteredDirection(cs.N, Rc, cs.alpha), cs.roughness,
+                                 specularOcclusion(NoVc, vis, cs.alpha));
 #elif HV_AO_SPECULAR == HV_AO_SPECULAR_CONE
   return specularOcclusionCone(safeNormalize(ao.yzw), cs.N, Rc, vis, cs.alpha);
 #else
@@ -217,6 +260,9 @@ void main() {
     float specular_vis = 1.0;
 #if HV_AO_SPECULAR == HV_AO_SPECULAR_LAGARDE
     specular_vis = specularOcclusion(NoV, vis, s.alpha);
+#elif HV_AO_SPECULAR == HV_AO_SPECULAR_TRACED
+    specular_vis = tracedSpecularOcclusion(px, texelFetch(t_depth, px, 0).r, dir, s.roughness,
+                                           specularOcclusion(NoV, vis, s.alpha));
 #elif HV_AO_SPECULAR == HV_AO_SPECULAR_CONE
     specular_vis = specularOcclusionCone(safeNormalize(ao.yzw), N, R, vis, s.alpha);
 #endif
@@ -227,7 +273,7 @@ void main() {
     vec3 specular = ambientSpecularFromCube(t_radiance, s, V, radiance, ab, NoV, u_env.x,
                                             HV_ENERGY_COMPENSATION != 0, false) *
                     specular_vis;
-#define HV_COAT_OCCLUSION(cs, NoVc, Rc) coatSpecularOcclusion(cs, NoVc, Rc, ao, vis)
+#define HV_COAT_OCCLUSION(cs, NoVc, Rc) coatSpecularOcclusion(px, cs, NoVc, Rc, ao, vis)
 #else
     vec3 diffuse = ambientDiffuse(s, E);
     vec3 specular = ambientSpecularFromCube(t_radiance, s, V, radiance, ab, NoV, u_env.x,

@@ -226,6 +226,7 @@ std::vector<std::pair<std::string, RenderSettings>> occlusionConfigs(const Rende
   variant("ao_specular=lagarde", [](RenderSettings& v) { v.ao_specular = AoSpecular::Lagarde; });
   variant("ao_specular=none", [](RenderSettings& v) { v.ao_specular = AoSpecular::None; });
   variant("ao_specular=cone", [](RenderSettings& v) { v.ao_specular = AoSpecular::Cone; });
+  variant("ao_specular=traced", [](RenderSettings& v) { v.ao_specular = AoSpecular::Traced; });
   variant("ao_resolution=full", [](RenderSettings& v) { v.ao_resolution = AoResolution::Full; });
   variant("ao_quality=high", [](RenderSettings& v) { v.ao_quality = AoQuality::High; });
   variant("ao_radius=2", [](RenderSettings& v) { v.ao_radius = 2.0f; });

@@ -166,7 +166,8 @@ void addShadowOptions(std::vector<Option>& o) {
 // Screen-space AO (docs/ambient-occlusion.md) on its edge-case scene: each specular occlusion,
 // full resolution with the multi-bounce fit, and radii far below and far above the scene.
 void addOcclusionOptions(std::vector<Option>& o) {
-  for (AoSpecular so : {AoSpecular::Cone, AoSpecular::Lagarde, AoSpecular::None}) {
+  for (AoSpecular so :
+       {AoSpecular::Cone, AoSpecular::Lagarde, AoSpecular::Traced, AoSpecular::None}) {
     o.push_back({"ao=gtao, ao_specular=" + std::string(toString(so)),
                  [so](RenderSettings& s) {
                    s.ao = AmbientOcclusion::Gtao;
@@ -207,6 +208,12 @@ void addClearCoatOptions(std::vector<Option>& o) {
                [](RenderSettings& s) {
                  s.ao = AmbientOcclusion::Gtao;
                  s.ao_specular = AoSpecular::Cone;
+               },
+               false, true, true});
+  o.push_back({"clear coat, ao=gtao, ao_specular=traced",
+               [](RenderSettings& s) {
+                 s.ao = AmbientOcclusion::Gtao;
+                 s.ao_specular = AoSpecular::Traced;
                },
                false, true, true});
 }

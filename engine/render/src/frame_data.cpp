@@ -88,7 +88,7 @@ FrameBlock makeFrameBlock(const Scene& scene, int width, int height) {
   f.light_count = static_cast<uint32_t>(scene.lights.size());
   f.output = glm::vec4(scene.settings.exposure, scene.settings.dither ? 1.0f : 0.0f,
                        scene.environment.intensity, glm::radians(scene.environment.rotation_deg));
-  f.frame_params = glm::vec4(c.near_plane, scene.settings.max_error, 0, 0);
+  f.frame_params = glm::vec4(c.near_plane, scene.settings.max_error, scene.settings.ao_radius, 0);
   return f;
 }
 

@@ -232,11 +232,14 @@ class GpuEnvironment {
   // missing texture is replaced by one of the right type (`fallback_2d`, a black cube).
   void bind(gl::PassBindings& b, GLuint fallback_2d,
             const EnvironmentUnits& units = EnvironmentUnits{}) const;
+  // Bilinear, clamped, no mips: the depth as the traced specular occlusion reads it (a plane's
+  // reversed-Z depth is affine in screen space, so a bilinear read lies on it; ambient.comp).
+  GLuint bilinear() const { return bilinear_.id(); }
 
  private:
   gl::Texture radiance_, irradiance_, env_brdf_, black_cube_;
   gl::Buffer block_;
-  gl::Sampler trilinear_;
+  gl::Sampler trilinear_, bilinear_;
   bool present_ = false;
   BakeTimings timings_;
 };

@@ -162,7 +162,8 @@ HV_SETTING_ENUM(AoResolution, HV_AO_RESOLUTIONS);
 #define HV_AO_SPECULARS(V)                      \
   V(None, "none", HV_AO_SPECULAR_NONE)          \
   V(Lagarde, "lagarde", HV_AO_SPECULAR_LAGARDE) \
-  V(Cone, "cone", HV_AO_SPECULAR_CONE)
+  V(Cone, "cone", HV_AO_SPECULAR_CONE)          \
+  V(Traced, "traced", HV_AO_SPECULAR_TRACED)
 HV_SETTING_ENUM(AoSpecular, HV_AO_SPECULARS);
 
 // What part of a scene makes a setting change code. Without it the variant key resets the setting
