@@ -139,7 +139,7 @@ void measureCase(const AccuracyOptions& o, Case& c, OcclusionScene& out) {
   const auto AD = size_t(ReferenceAov::AmbientDiffuse);
   out.width = o.quick ? 48 : 160;
   out.height = out.width;
-  out.samples = o.quick ? 16 : 256;
+  out.samples = o.quick ? 16 : 1024;
   render::Renderer r;
   Scene& s = c.scene;
   const auto configs = occlusionConfigs(s.settings, environmentHasSun(s.environment));
