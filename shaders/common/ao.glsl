@@ -129,10 +129,9 @@ float specularOcclusionCone(vec3 B, vec3 N, vec3 R, float visibility, float alph
 // The traced specular occlusion (ao_specular: traced; the march is ambient.comp's, GPU only). A
 // glossy lobe's occlusion is where its dominant direction goes, which the AO, a cosine-weighted
 // mean over the hemisphere, does not say: on DamagedHelmet the visor and trims reflect the
-// helmet's own parts: with the reference's own visibility per pixel applied to the engine's
-// specular alone its environment light is 5.3% from the reference with visibility, applied to
-// its diffuse alone 11.1% (docs/ambient-occlusion.md, "Traced specular occlusion"). The ray is marched through the depth
-// buffer at HV_AO_TRACE_STEPS points t = start + reach ((k + 0.5) / steps)^2 (dense near the
+// helmet's own parts (docs/ambient-occlusion.md, "Traced specular occlusion", measures how much
+// of the error that is). The ray is marched through the depth buffer at HV_AO_TRACE_STEPS
+// points t = start + reach ((k + 0.5) / steps)^2 (dense near the
 // surface, where a seam's occluder is), reach = HV_AO_TRACE_REACH ao_radius, the first
 // HV_AO_TRACE_START of the view distance out (past the surface's own depth: a curved surface
 // would occlude itself). A point behind the depth buffer's surface by more than
