@@ -95,8 +95,9 @@ layout(binding = HV_UNIT_AO) uniform sampler2D t_ao;
 // occlusion). At full resolution its texel; at half, the four nearest texels with bilinear
 // weights times a depth weight (5% of the distance), so that an edge does not take
 // the occlusion of the surface across it; where no texel is within that, the nearest in distance.
-// The four texels come as one textureGather per channel at the corner they share.
-vec4 aoAt(ivec2 px) {
+// The four texels come as one textureGather per channel at the corner they share. `depth`: the
+// pixel's reversed-Z depth.
+vec4 aoAt(ivec2 px, float depth) {
   ivec2 size = textureSize(t_ao, 0);
   if (size.x >= int(u_viewport.x)) {
     vec4 a = texelFetch(t_ao, px, 0);
@@ -107,7 +108,7 @@ vec4 aoAt(ivec2 px) {
 #endif
   }
   // Inverse view distances (1 / m), as the AO target holds them (gtao.comp).
-  float inv_dist = texelFetch(t_depth, px, 0).r / u_frame_params.x;
+  float inv_dist = depth / u_frame_params.x;
   // Texel q holds pixel 2q (gtao.comp): the four nearest texels (half_res.glsl).
   vec2 uv;
   vec4 wb;
@@ -147,7 +148,7 @@ vec4 aoAt(ivec2 px) {
 // across it within HV_AO_TRACE_REACH ao_radius, else 1, weighted against Lagarde's occlusion from
 // the AO (`lagarde`) by aoTraceWeight: a ray stands for a narrow lobe, not a wide one. Points off
 // screen or behind the camera end the march unoccluded (the depth buffer knows nothing there).
-// Depth is read bilinearly (GpuEnvironment::bilinear): a plane's reversed-Z depth is affine in
+// Depth is read bilinearly (PassContext::bilinear): a plane's reversed-Z depth is affine in
 // screen space, so a floor seen at a grazing angle does not occlude itself between texel centres.
 // The march's count is 0 where the weight is (rough lobes): a SIMD row of them skips it.
 float tracedSpecularOcclusion(ivec2 px, float depth, vec3 dir, float roughness, float lagarde) {
@@ -179,13 +180,13 @@ float tracedSpecularOcclusion(ivec2 px, float depth, vec3 dir, float roughness, 
 #endif
 
 // The screen-space AO's occlusion of the coat's ambient specular: the base's rule (settings.
-// ao_specular) on the coat's normal, roughness and reflection.
-float coatSpecularOcclusion(ivec2 px, Surface cs, float NoVc, vec3 Rc, vec4 ao, float vis) {
+// ao_specular) on the coat's normal, roughness, reflection and lookup direction (dirc).
+float coatSpecularOcclusion(ivec2 px, float depth, Surface cs, float NoVc, vec3 Rc, vec3 dirc,
+                            vec4 ao, float vis) {
 #if HV_AO_SPECULAR == HV_AO_SPECULAR_LAGARDE
   return specularOcclusion(NoVc, vis, cs.alpha);
 #elif HV_AO_SPECULAR == HV_AO_SPECULAR_TRACED
-  return tracedSpecularOcclusion(px, texelFetch(t_depth, px, 0).r,
-                                 prefilteredDirection(cs.N, Rc, cs.alpha), cs.roughness,
+  return tracedSpecularOcclusion(px, depth, dirc, cs.roughness,
                                  specularOcclusion(NoVc, vis, cs.alpha));
 #elif HV_AO_SPECULAR == HV_AO_SPECULAR_CONE
   return specularOcclusionCone(safeNormalize(ao.yzw), cs.N, Rc, vis, cs.alpha);
@@ -250,7 +251,8 @@ void main() {
     vec2 ab = texture(t_env_brdf, vec2(NoV, s.roughness)).rg;
 #endif
 #if HV_AO
-    vec4 ao = aoAt(px);
+    float depth = texelFetch(t_depth, px, 0).r;  // the AO upsample's and the march's
+    vec4 ao = aoAt(px, depth);
     float vis = combineOcclusion(s.cavity, ao.x);
 #if HV_AO_MULTI_BOUNCE
     vec3 diffuse_vis = gtaoMultiBounce(vis, s.diffuse_color);
@@ -261,8 +263,8 @@ void main() {
 #if HV_AO_SPECULAR == HV_AO_SPECULAR_LAGARDE
     specular_vis = specularOcclusion(NoV, vis, s.alpha);
 #elif HV_AO_SPECULAR == HV_AO_SPECULAR_TRACED
-    specular_vis = tracedSpecularOcclusion(px, texelFetch(t_depth, px, 0).r, dir, s.roughness,
-                                           specularOcclusion(NoV, vis, s.alpha));
+    specular_vis =
+        tracedSpecularOcclusion(px, depth, dir, s.roughness, specularOcclusion(NoV, vis, s.alpha));
 #elif HV_AO_SPECULAR == HV_AO_SPECULAR_CONE
     specular_vis = specularOcclusionCone(safeNormalize(ao.yzw), N, R, vis, s.alpha);
 #endif
@@ -273,13 +275,14 @@ void main() {
     vec3 specular = ambientSpecularFromCube(t_radiance, s, V, radiance, ab, NoV, u_env.x,
                                             HV_ENERGY_COMPENSATION != 0, false) *
                     specular_vis;
-#define HV_COAT_OCCLUSION(cs, NoVc, Rc) coatSpecularOcclusion(px, cs, NoVc, Rc, ao, vis)
+#define HV_COAT_OCCLUSION(cs, NoVc, Rc, dirc) \
+  coatSpecularOcclusion(px, depth, cs, NoVc, Rc, dirc, ao, vis)
 #else
     vec3 diffuse = ambientDiffuse(s, E);
     vec3 specular = ambientSpecularFromCube(t_radiance, s, V, radiance, ab, NoV, u_env.x,
                                             HV_ENERGY_COMPENSATION != 0,
                                             HV_SPECULAR_OCCLUSION != 0);
-#define HV_COAT_OCCLUSION(cs, NoVc, Rc) 1.0
+#define HV_COAT_OCCLUSION(cs, NoVc, Rc, dirc) 1.0
 #endif
 #if HV_HAS_CLEAR_COAT
     // The coat (clear_coat.glsl): the base under it scaled, its own split-sum lobe added, with
@@ -290,8 +293,9 @@ void main() {
       Surface cs = makeCoatSurface(Nc, ct.w, bc.a);
       float NoVc = clamp(dot(Nc, V), 1e-4, 1.0);
       vec3 Rc = reflect(-V, Nc);
-      vec3 coat_radiance = textureLod(t_radiance, prefilteredDirection(Nc, Rc, cs.alpha),
-                                      specularLookupMip(cs.roughness, u_env.x)).rgb;
+      vec3 dirc = prefilteredDirection(Nc, Rc, cs.alpha);
+      vec3 coat_radiance =
+          textureLod(t_radiance, dirc, specularLookupMip(cs.roughness, u_env.x)).rgb;
 #if HV_ENV_BRDF_ANALYTIC
       vec2 abc = EnvBRDFApproxScaleBias(cs.roughness, NoVc);
 #else
@@ -303,7 +307,7 @@ void main() {
                  ambientSpecularFromCube(t_radiance, cs, V, coat_radiance, abc, NoVc, u_env.x,
                                          HV_ENERGY_COMPENSATION != 0,
                                          HV_AO == 0 && HV_SPECULAR_OCCLUSION != 0) *
-                     (ct.z * HV_COAT_OCCLUSION(cs, NoVc, Rc));
+                     (ct.z * HV_COAT_OCCLUSION(cs, NoVc, Rc, dirc));
     }
 #endif
 #if (HV_AMBIENT_TERMS & 1) == 0

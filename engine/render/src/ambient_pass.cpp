@@ -42,11 +42,6 @@ GpuEnvironment::GpuEnvironment(const Scene& scene) {
     glSamplerParameteri(trilinear_.id(), w, GL_CLAMP_TO_EDGE);
   }
   glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
-  bilinear_ = gl::createSampler("depth bilinear");
-  glSamplerParameteri(bilinear_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glSamplerParameteri(bilinear_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glSamplerParameteri(bilinear_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glSamplerParameteri(bilinear_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   EnvironmentBlock block{};
   if (scene.environment.kind != EnvironmentKind::None) {
     BakeOptions opt;
@@ -96,7 +91,7 @@ void runAmbientPass(const PassContext& ctx, const AmbientPassInput& in, GLuint h
     b.texture(HV_UNIT_AO, in.ao, ctx.nearest);
     // The AO upsample reads depth texels (texelFetch, unfiltered); the traced specular occlusion
     // reads it bilinearly between them.
-    b.texture(HV_UNIT_DEPTH, in.gbuffer.depth, in.environment.bilinear());
+    b.texture(HV_UNIT_DEPTH, in.gbuffer.depth, ctx.bilinear);
   }
   b.image(HV_IMAGE_HDR, hdr, GL_READ_WRITE, GL_RGBA16F);
   glDispatchCompute((width + kTileSize - 1) / kTileSize, (height + kTileSize - 1) / kTileSize, 1);

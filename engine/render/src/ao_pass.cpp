@@ -45,14 +45,7 @@ GLuint AoPass::run(const PassContext& ctx, const GBufferView& gbuffer,
   glProgramUniform4f(gtao, HV_LOC_AO_PARAMS, settings.ao_radius, float(scale), float(w), float(h));
   bindGBuffer(b, gbuffer, ctx.nearest);
   // The horizon search filters depth bilinearly (gtao.comp, horizonCos); texelFetch ignores it.
-  if (!linear_) {
-    linear_ = gl::createSampler("ao bilinear");
-    glSamplerParameteri(linear_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glSamplerParameteri(linear_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glSamplerParameteri(linear_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glSamplerParameteri(linear_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  }
-  b.texture(HV_UNIT_DEPTH, gbuffer.depth, linear_.id());
+  b.texture(HV_UNIT_DEPTH, gbuffer.depth, ctx.bilinear);
   b.image(HV_IMAGE_AO, raw_.id(), GL_WRITE_ONLY, GL_RGBA16F);
   glDispatchCompute(groups_x, groups_y, 1);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
@@ -62,7 +55,7 @@ GLuint AoPass::run(const PassContext& ctx, const GBufferView& gbuffer,
   glProgramUniform4f(denoise, HV_LOC_AO_PARAMS, settings.ao_radius, float(scale), float(w),
                      float(h));
   // The denoise reads the raw target's 2x2 quads as bilinear fetches (ao_denoise.comp).
-  b.texture(HV_UNIT_AO, raw_.id(), linear_.id());
+  b.texture(HV_UNIT_AO, raw_.id(), ctx.bilinear);
   b.image(HV_IMAGE_AO, denoised_.id(), GL_WRITE_ONLY, GL_RGBA16F);
   glDispatchCompute(groups_x, groups_y, 1);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);

@@ -37,7 +37,10 @@ class ShadowMaps;  // shadow_pass.hpp
 struct PassContext {
   gl::ProgramCache& programs;
   gl::PassTimer& timer;
-  GLuint nearest = 0;  // nearest, clamp to edge: for texelFetch-style reads
+  GLuint nearest = 0;   // nearest, clamp to edge: for texelFetch-style reads
+  GLuint bilinear = 0;  // bilinear, clamp to edge, no mips: depth between texels (a plane's
+                        // reversed-Z depth is affine in screen space: the AO horizon search, the
+                        // traced specular occlusion), the AO denoise's quads
 };
 
 // The per-frame uniform block and its buffer (binding HV_UBO_FRAME for the whole frame). A pass
@@ -232,14 +235,11 @@ class GpuEnvironment {
   // missing texture is replaced by one of the right type (`fallback_2d`, a black cube).
   void bind(gl::PassBindings& b, GLuint fallback_2d,
             const EnvironmentUnits& units = EnvironmentUnits{}) const;
-  // Bilinear, clamped, no mips: the depth as the traced specular occlusion reads it (a plane's
-  // reversed-Z depth is affine in screen space, so a bilinear read lies on it; ambient.comp).
-  GLuint bilinear() const { return bilinear_.id(); }
 
  private:
   gl::Texture radiance_, irradiance_, env_brdf_, black_cube_;
   gl::Buffer block_;
-  gl::Sampler trilinear_, bilinear_;
+  gl::Sampler trilinear_;
   bool present_ = false;
   BakeTimings timings_;
 };
@@ -305,7 +305,6 @@ class AoPass {
  private:
   gl::ProgramDesc gtao_, denoise_;
   gl::Texture raw_, denoised_;
-  gl::Sampler linear_;  // bilinear: the horizon search's depth, the denoise's quads
   int width_ = 0, height_ = 0;
 };
 

@@ -77,6 +77,11 @@ Renderer::Renderer() : targets_(std::make_unique<Targets>()), passes_(std::make_
   glSamplerParameteri(nearest_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glSamplerParameteri(nearest_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glSamplerParameteri(nearest_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  bilinear_ = gl::createSampler("bilinear clamp");
+  glSamplerParameteri(bilinear_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glSamplerParameteri(bilinear_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glSamplerParameteri(bilinear_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(bilinear_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
 Renderer::~Renderer() = default;
@@ -220,7 +225,7 @@ FrameStats Renderer::render(int width, int height, DebugView view,
   if (!(scene_->settings == key_settings_) || terms_changed) refreshVariants();
   programs_.beginFrame();
   FrameUniforms frame = frameUniforms(width, height, view);
-  const PassContext ctx{programs_, timer_, nearest_.id()};
+  const PassContext ctx{programs_, timer_, nearest_.id(), bilinear_.id()};
   const FrameLighting lit = lightFrame(ctx, frame, view);
   Targets& t = *targets_;
   const bool post = postPassesActive(view);

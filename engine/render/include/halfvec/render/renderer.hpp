@@ -245,7 +245,7 @@ class Renderer {
   gl::PassTimer timer_;
   gl::Buffer frame_ubo_;
   gl::VertexArray empty_vao_;
-  gl::Sampler nearest_;
+  gl::Sampler nearest_, bilinear_;
   size_t tile_entries_ = 0;  // entries the last culling pass produced (read at frame end)
   DebugOptions debug_;
   bool lightPassNeedsLtc() const;   // the light program reads the LTC table (lights.glsl)
