@@ -4,8 +4,8 @@
 // (shadow_mask.comp) by the weights of shadowMaskWeights, computed once per pixel for every light,
 // into that light's layer of a full-resolution array the light pass reads. A pixel none of whose
 // four texels is of its own surface looks the maps up itself (the light pass's full-resolution
-// lookup, shadows.glsl), in a loop of one pass or none: only SIMD rows where some pixel needs it
-// pay for it. Doing this here rather than in the light pass keeps the weights out of the light
+// lookup, shadows.glsl), in a loop over the lights of its own that runs only where some pixel of
+// the invocation needs it. Doing this here rather than in the light pass keeps the weights out of the light
 // loops, where they stayed live across every light (docs/lights.md, "Half resolution").
 #define HV_SHADOW_MASK_PASS 2
 #include "../common/frame.glsl"
@@ -37,22 +37,26 @@ void main() {
     bool own = shadowMaskWeights(p, P[j], N[j], u_camera_pos.xyz, uv[j], w[j]);
     miss[j] = use[j] && !own;
   }
-  int lookups = any(miss) ? 1 : 0;
+  // The upsample for every light first; then, only where some pixel missed, the maps' lookup in
+  // a loop of its own, whose count is 0 elsewhere: inside the loop over lights, the lookup's
+  // code cost every SIMD row about 2x the floor pass on llvmpipe although almost no row runs it
+  // (docs/lights.md, "Half resolution").
   for (uint i = 0u; i < u_mask_lights; ++i) {
+    int layer = shadowMaskLayer(lights[mask_lights[i]]);
+    for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
+      float vis = dot(textureGather(t_shadow_mask, vec3(uv[j], float(layer)), 0), w[j]);
+      if (px[j].x < int(u_viewport.x) && px[j].y < int(u_viewport.y) && !miss[j]) {
+        imageStore(i_resolved, ivec3(px[j], layer), vec4(vis));
+      }
+    }
+  }
+  uint lookups = any(miss) ? u_mask_lights : 0u;
+  for (uint i = 0u; i < lookups; ++i) {
     GpuLight l = lights[mask_lights[i]];
     int layer = shadowMaskLayer(l);
-    vec4 vis;
+    vec4 direct = anyLightShadow(l, P, N, miss);
     for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
-      vis[j] = dot(textureGather(t_shadow_mask, vec3(uv[j], float(layer)), 0), w[j]);
-    }
-    for (int f = 0; f < lookups; ++f) {
-      vec4 direct = anyLightShadow(l, P, N, miss);
-      for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) vis[j] = miss[j] ? direct[j] : vis[j];
-    }
-    for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
-      if (px[j].x < int(u_viewport.x) && px[j].y < int(u_viewport.y)) {
-        imageStore(i_resolved, ivec3(px[j], layer), vec4(vis[j]));
-      }
+      if (miss[j]) imageStore(i_resolved, ivec3(px[j], layer), vec4(direct[j]));
     }
   }
 }
