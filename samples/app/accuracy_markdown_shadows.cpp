@@ -15,11 +15,13 @@ std::string cm(double metres) {
 }
 
 std::string lightName(const eval::ShadowCase& c) {
+  const std::string off =
+      c.light_offset > 0.0f ? ", " + num(c.light_offset) + " m off (contact)" : std::string();
   if (c.light_length > 0.0f) {
     return "capsule r " + num(c.light_radius) + ", len " + num(c.light_length) + ", axis " +
-           (std::abs(c.axis.x) > 0.5f ? "along" : "across");
+           (std::abs(c.axis.x) > 0.5f ? "along" : "across") + off;
   }
-  return "sphere r " + num(c.light_radius);
+  return "sphere r " + num(c.light_radius) + off;
 }
 
 }  // namespace
@@ -33,8 +35,11 @@ std::string shadowsMarkdown(const eval::ShadowAccuracy& a) {
         "tests/eval/test_shadow_accuracy.cpp). A sphere occluder (radius "
      << num(eval::kShadowOccluderRadius) << " m, center at height h) over a white matte floor, lit "
      << "by a sphere light or a capsule light centered " << num(eval::kShadowLightHeight)
-     << " m above the floor over the occluder; the frame (" << o.size << "x" << o.size << ", "
-     << o.samples << " reference samples per pixel, shadow maps of " << o.map_size
+     << " m above the floor over the occluder, or (contact rows) off to -x by the given distance "
+        "with the occluder resting on the floor (h = its radius), the shadow running along +x "
+        "from under it; the frame ("
+     << o.size << "x" << o.size << ", " << o.samples
+     << " reference samples per pixel, shadow maps of " << o.map_size
      << "^2 texels per face) looks down at the +x half of the shadow. Pixels: the floor's, "
         "except the umbra (the engine below 2% of its frame without shadows and the reference "
         "below 2% of its value without visibility). Mean = sum |E - R| / sum R over them; "

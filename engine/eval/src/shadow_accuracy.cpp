@@ -26,7 +26,15 @@ constexpr float kSectorDeg = 25.0f;
 float outerPenumbra(const ShadowCase& c) {
   const float H = kShadowLightHeight, h = c.occluder_height, a = kShadowOccluderRadius;
   const float ext = c.light_radius + 0.5f * c.light_length * std::abs(c.axis.x);
-  return (a * H + ext * h) / (H - h);
+  if (c.light_offset <= 0.0f) return (a * H + ext * h) / (H - h);
+  // A light off to -x: the line from the emitter's far end (x = -offset - ext) over the top of
+  // the occluder, tangent to it, meets the floor at the shadow's far tip.
+  const glm::vec2 L(-c.light_offset - ext, H), C(0.0f, h);
+  const glm::vec2 v = C - L;
+  const float beta = std::asin(std::min(a / glm::length(v), 1.0f));
+  const float angle = std::atan2(v.y, v.x) + beta;     // rotated up: above the occluder
+  const float dy = std::min(std::sin(angle), -0.05f);  // a grazing line: a long, finite frame
+  return L.x - H * std::cos(angle) / dy;
 }
 
 glm::vec3 floorPoint(const glm::mat4& inv_view_proj, int w, int h, int x, int y) {
@@ -74,7 +82,11 @@ ShadowProfile makeProfile(const std::vector<glm::vec3>& floor, const std::vector
 
 Scene shadowCaseScene(const ShadowCase& c, ShadowFilter filter, int map_size) {
   Scene s;
-  const float S = 1.35f * outerPenumbra(c) + 0.1f;  // the frame's side on the floor
+  float S = 1.35f * outerPenumbra(c) + 0.1f;  // the frame's side on the floor
+  // With the light off to the side the camera stays above the occluder (a resting occluder
+  // reaches 2 a; the frame's camera is at height S / 2).
+  if (c.light_offset > 0.0f)
+    S = std::max(S, 2.0f * (c.occluder_height + kShadowOccluderRadius) + 0.4f);
   // Straight down from S/2 over x = S/2 with a 90-degree field: the floor from x = 0 to S, the
   // occluder projected away from the measured +x half (or behind the camera).
   s.camera.position = {0.5f * S, 0.5f * S, 0.0f};
@@ -92,7 +104,7 @@ Scene shadowCaseScene(const ShadowCase& c, ShadowFilter filter, int map_size) {
   l.type = c.light_radius <= 0.0f  ? LightType::Point
            : c.light_length > 0.0f ? LightType::Tube
                                    : LightType::Sphere;
-  l.position = {0.0f, kShadowLightHeight, 0.0f};
+  l.position = {-c.light_offset, kShadowLightHeight, 0.0f};
   l.radius = c.light_radius;
   l.length = c.light_length;
   l.axis = glm::normalize(c.axis);
@@ -323,6 +335,16 @@ ShadowAccuracy measureShadows(const AccuracyOptions& o) {
   for (float h : o.quick ? std::vector<float>{1.0f} : std::vector<float>{0.5f, 1.0f}) {
     cases.push_back({0.05f, 0.6f, {1.0f, 0.0f, 0.0f}, h});
     cases.push_back({0.05f, 0.6f, {0.0f, 0.0f, 1.0f}, h});
+  }
+  // Contact shadows: the occluder resting on the floor, the light 1.5 m off to -x (a sphere
+  // light; a capsule of shadows.json's tube, radius 0.08 m and segment 1.2 m, along and across
+  // the shadow's direction). The search then sees the occluder's side down to the floor,
+  // blockers at every distance from the light.
+  const float rest = kShadowOccluderRadius;
+  cases.push_back({0.15f, 0.0f, {1.0f, 0.0f, 0.0f}, rest, 1.5f});
+  if (!o.quick) {
+    cases.push_back({0.08f, 1.2f, {1.0f, 0.0f, 0.0f}, rest, 1.5f});
+    cases.push_back({0.08f, 1.2f, {0.0f, 0.0f, 1.0f}, rest, 1.5f});
   }
   for (const ShadowCase& c : cases) a.rows.push_back(measureShadowCase(c, a.options));
   a.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -14,14 +14,17 @@
 namespace hv::eval {
 
 // One configuration: the light (radius 0: a point light; length > 0: a capsule along `axis`)
-// centered kShadowLightHeight above the floor at x = z = 0, the occluder (a sphere of radius
-// kShadowOccluderRadius) centered `occluder_height` above the floor under it. The frame looks
-// down at the +x half of the shadow, where the penumbra is measured.
+// centered kShadowLightHeight above the floor at x = -light_offset, z = 0, the occluder (a sphere
+// of radius kShadowOccluderRadius) centered `occluder_height` above the floor at x = z = 0. The
+// frame looks down at the +x half of the shadow, where the penumbra is measured. With an offset
+// the light shines in from -x and the shadow runs along +x from under the occluder; an occluder
+// at height kShadowOccluderRadius rests on the floor (a contact shadow).
 struct ShadowCase {
   float light_radius = 0.1f;
   float light_length = 0.0f;
   glm::vec3 axis{1.0f, 0.0f, 0.0f};
   float occluder_height = 1.0f;
+  float light_offset = 0.0f;
 };
 constexpr float kShadowLightHeight = 3.0f;
 constexpr float kShadowOccluderRadius = 0.3f;
@@ -81,7 +84,8 @@ ShadowCaseResult measureShadowCase(const ShadowCase& c, const ShadowCaseOptions&
 
 struct ShadowAccuracy {
   ShadowCaseOptions options;
-  std::vector<ShadowCaseResult> rows;  // sphere lights (radius x height), then capsules
+  // sphere lights (radius x height), capsules, then contact shadows (ShadowCase::light_offset)
+  std::vector<ShadowCaseResult> rows;
   double seconds = 0.0;
 };
 ShadowAccuracy measureShadows(const AccuracyOptions& o);
