@@ -253,9 +253,13 @@ vec4 shadowVisibility(vec3 Lpos, float far, float layer, float radius, vec3 axis
         // pulled towards the light by the occluder's near side, widens the penumbra
         // (docs/accuracy.md, "Shadows"). Each gather's four texels lie within a texel of its
         // point, whose plane distance they are compared with: the slope-scaled bias covers the
-        // plane's change over a texel.
-        float search = clamp(HV_PCSS_SEARCH_SCALE * ext.x / d, HV_SHADOW_PCF_RADIUS * texel,
-                             HV_SHADOW_MAX_FILTER);
+        // plane's change over a texel. The search region is the emitter's ellipse (a capsule's
+        // half-axes differ), scaled: only a blocker inside it hides part of the emitter; a disk of
+        // the larger half-axis spread the 8 gathers so thinly across a long capsule that a
+        // resting sphere's blockers were missed, lit wedges inside its shadow (docs/lights.md,
+        // "Shadows").
+        vec2 search = clamp(HV_PCSS_SEARCH_SCALE * ext / d, vec2(HV_SHADOW_PCF_RADIUS * texel),
+                            vec2(HV_SHADOW_MAX_FILTER));
         float blocker_far = 0.0f;  // over far; 0: no blocker
         vec2 rot = vec2(1.0f, 0.0f);
         for (int g = 0; g < HV_PCSS_SEARCH_GATHERS * lookup; ++g) {
