@@ -151,8 +151,9 @@ layout(binding = HV_UNIT_SHADOW_COMPARE) uniform samplerCubeArrayShadow t_shadow
 // (light_shade.comp checks that the two agree).
 #define HV_SHADOW_RECEIVERS 4
 
-// The taps of PCSS's filter (a Vogel disk of bilinear comparisons) and of its blocker search
-// (a Vogel disk of gathers, each the 2 x 2 texels around its point: four distances per fetch).
+// The taps of PCSS's filter (a Vogel disk of bilinear comparisons; twice as many over an ellipse
+// more than twice as long as wide) and of its blocker search (a Vogel disk of gathers, each the
+// 2 x 2 texels around its point: four distances per fetch).
 #define HV_PCSS_FILTER_TAPS 16
 #define HV_PCSS_SEARCH_GATHERS 8
 
@@ -177,18 +178,18 @@ float shadowTapRef(ShadowReceiver r, vec2 o, float far, float inv_far) {
 }
 
 // Percentage-closer filtering over the ellipse of half-axes `radii` (radians) along u and v:
-// the mean of HV_PCSS_FILTER_TAPS bilinear comparisons on a Vogel disk (PCSS step 3); n, the
-// loop's count, is HV_PCSS_FILTER_TAPS (see shadowVisibility).
+// the mean of n bilinear comparisons on a Vogel disk of n points (PCSS step 3); n, the loop's
+// count, is set at run time (shadowVisibility).
 float shadowPcfDisk(ShadowReceiver r, vec2 radii, float far, float inv_far, float layer, int n) {
   float lit = 0.0f;
   vec2 rot = vec2(1.0f, 0.0f);
   for (int i = 0; i < n; ++i) {
-    vec2 o = sqrt((float(i) + 0.5f) / float(HV_PCSS_FILTER_TAPS)) * rot * radii;
+    vec2 o = sqrt((float(i) + 0.5f) / float(n)) * rot * radii;
     rot = vogelNext(rot);
     vec3 dir = r.D + r.u * o.x + r.v * o.y;
     lit += texture(t_shadow_compare, vec4(dir, layer), shadowTapRef(r, o, far, inv_far));
   }
-  return lit / float(HV_PCSS_FILTER_TAPS);
+  return lit / float(max(n, 1));
 }
 
 // Visibility (0 shadowed .. 1 lit) of a light centered at Lpos whose map is cube `layer` of the
@@ -278,7 +279,11 @@ vec4 shadowVisibility(vec3 Lpos, float far, float layer, float radius, vec3 axis
         // No blocker: lit, nothing to filter.
         int filters = blocker_far > 0.0f ? 1 : 0;
         for (int f = 0; f < filters; ++f) {
-          vis[j] = shadowPcfDisk(r, radii, far, inv_far, layer, HV_PCSS_FILTER_TAPS * lookup);
+          // An ellipse more than twice as long as wide (a capsule seen across its axis) gets
+          // twice the taps: spread along a long axis, 16 left bands in a tube's penumbra
+          // (docs/lights.md, "Contact shadows of a long capsule").
+          int taps = radii.x > 2.0f * radii.y ? 2 * HV_PCSS_FILTER_TAPS : HV_PCSS_FILTER_TAPS;
+          vis[j] = shadowPcfDisk(r, radii, far, inv_far, layer, taps * lookup);
         }
       }
 #endif
