@@ -5,8 +5,9 @@
 // into that light's layer of a full-resolution array the light pass reads. A pixel none of whose
 // four texels is of its own surface looks the maps up itself (the light pass's full-resolution
 // lookup, shadows.glsl), in a loop over the lights of its own that runs only where some pixel of
-// the invocation needs it. Doing this here rather than in the light pass keeps the weights out of the light
-// loops, where they stayed live across every light (docs/lights.md, "Half resolution").
+// the invocation needs it. Doing this here rather than in the light pass keeps the weights out of
+// the light loops, where they stayed live across every light (docs/lights.md, "Half
+// resolution").
 #define HV_SHADOW_MASK_PASS 2
 #include "../common/frame.glsl"
 #include "../common/gbuffer.glsl"
