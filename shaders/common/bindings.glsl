@@ -25,6 +25,7 @@
 #define HV_BINDING_CULL_BOUNDS 7  // culling: per tile, block and group, the surface AABB
 #define HV_BINDING_FORWARD_LIGHTS 3  // forward pass: per blended draw, the lights that reach it
 #define HV_BINDING_SHADOW_MASK_LIGHTS 4  // shadow mask pass: per dispatch layer, its light
+#define HV_BINDING_SHADOW_FALLBACK 5  // shadow resolve: the indirect dispatch, then its groups
 #define HV_BINDING_EMITTERS 0          // emitter culling: every sphere and tube light's instance
 #define HV_BINDING_VISIBLE_EMITTERS 1  // emitter culling: those that can cover a pixel, drawn
 #define HV_BINDING_EMITTER_DRAW 2      // emitter culling: the indirect draw, instances counted

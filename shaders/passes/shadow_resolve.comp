@@ -4,10 +4,12 @@
 // (shadow_mask.comp) by the weights of shadowMaskWeights, computed once per pixel for every light,
 // into that light's layer of a full-resolution array the light pass reads. A pixel none of whose
 // four texels is of its own surface looks the maps up itself (the light pass's full-resolution
-// lookup, shadows.glsl), in a loop over the lights of its own that runs only where some pixel of
-// the invocation needs it. Doing this here rather than in the light pass keeps the weights out of
-// the light loops, where they stayed live across every light (docs/lights.md, "Half
-// resolution").
+// lookup, shadows.glsl), in a dispatch of its own (HV_SHADOW_RESOLVE_FALLBACK 1): the resolve
+// lists the workgroups that have such a pixel, and an indirect dispatch over that list runs the
+// lookup there alone. Inside the resolve, even in a loop that no invocation entered, the
+// lookup's code cost every SIMD row (docs/lights.md, "Half resolution"). Doing this here rather
+// than in the light pass keeps the weights out of the light loops, where they stayed live across
+// every light.
 #define HV_SHADOW_MASK_PASS 2
 #include "../common/frame.glsl"
 #include "../common/gbuffer.glsl"
@@ -21,7 +23,30 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(location = HV_LOC_SHADOW_MASK_LIGHTS) uniform uint u_mask_lights;
 layout(r8, binding = HV_IMAGE_SHADOW_MASK) uniform writeonly image2DArray i_resolved;
 
+#ifndef HV_SHADOW_RESOLVE_FALLBACK
+#define HV_SHADOW_RESOLVE_FALLBACK 0
+#endif
+// The workgroups with a pixel that no texel holds: an indirect dispatch's (x, 1, 1), x counted
+// by the resolve, then the groups' IDs (x + y << 16), one per workgroup of the fallback.
+layout(std430, binding = HV_BINDING_SHADOW_FALLBACK) buffer FallbackBlock {
+  uint fallback_dispatch[3];
+  uint fallback_groups[];
+};
+
+#if !HV_SHADOW_RESOLVE_FALLBACK
+shared uint group_missed;  // 1 when some pixel of the workgroup missed
+#endif
+
 void main() {
+#if HV_SHADOW_RESOLVE_FALLBACK
+  uint listed = fallback_groups[gl_WorkGroupID.x];
+  uvec2 group = uvec2(listed & 0xffffu, listed >> 16);
+#else
+  uvec2 group = gl_WorkGroupID.xy;
+  if (gl_LocalInvocationIndex == 0u) group_missed = 0u;
+  barrier();
+#endif
+  uvec2 id = group * gl_WorkGroupSize.xy + gl_LocalInvocationID.xy;
   ivec2 px[HV_SHADOW_RECEIVERS];
   vec3 P[HV_SHADOW_RECEIVERS];
   vec3 N[HV_SHADOW_RECEIVERS];
@@ -30,7 +55,7 @@ void main() {
   bvec4 use = bvec4(false);
   bvec4 miss = bvec4(false);
   for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
-    px[j] = ivec2(gl_GlobalInvocationID.x, gl_GlobalInvocationID.y * HV_SHADOW_RECEIVERS + j);
+    px[j] = ivec2(id.x, id.y * HV_SHADOW_RECEIVERS + j);
     ivec2 p = min(px[j], ivec2(u_viewport.xy) - 1);
     vec2 code;
     bool lit = shadowMaskSurface(p, P[j], N[j], code);
@@ -38,19 +63,9 @@ void main() {
     bool own = shadowMaskWeights(p, P[j], N[j], u_camera_pos.xyz, uv[j], w[j]);
     miss[j] = use[j] && !own;
   }
-  // The upsample for every light first; then, only where some pixel missed, the maps' lookup in
-  // a loop of its own, whose count is 0 elsewhere: inside the loop over lights, the lookup's
-  // code cost every SIMD row about 2x the floor pass on llvmpipe although almost no row runs it
-  // (docs/lights.md, "Half resolution").
-  for (uint i = 0u; i < u_mask_lights; ++i) {
-    int layer = shadowMaskLayer(lights[mask_lights[i]]);
-    for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
-      float vis = dot(textureGather(t_shadow_mask, vec3(uv[j], float(layer)), 0), w[j]);
-      if (px[j].x < int(u_viewport.x) && px[j].y < int(u_viewport.y) && !miss[j]) {
-        imageStore(i_resolved, ivec3(px[j], layer), vec4(vis));
-      }
-    }
-  }
+#if HV_SHADOW_RESOLVE_FALLBACK
+  // The maps' lookup for this group's missed pixels (their invocations' loop count is 0
+  // elsewhere), stored where the resolve stored nothing.
   uint lookups = any(miss) ? u_mask_lights : 0u;
   for (uint i = 0u; i < lookups; ++i) {
     GpuLight l = lights[mask_lights[i]];
@@ -60,4 +75,22 @@ void main() {
       if (miss[j]) imageStore(i_resolved, ivec3(px[j], layer), vec4(direct[j]));
     }
   }
+#else
+  for (uint i = 0u; i < u_mask_lights; ++i) {
+    int layer = shadowMaskLayer(lights[mask_lights[i]]);
+    for (int j = 0; j < HV_SHADOW_RECEIVERS; ++j) {
+      float vis = dot(textureGather(t_shadow_mask, vec3(uv[j], float(layer)), 0), w[j]);
+      if (px[j].x < int(u_viewport.x) && px[j].y < int(u_viewport.y) && !miss[j]) {
+        imageStore(i_resolved, ivec3(px[j], layer), vec4(vis));
+      }
+    }
+  }
+  // The group's first invocation lists the group when some pixel of it missed.
+  if (any(miss)) group_missed = 1u;
+  barrier();
+  if (gl_LocalInvocationIndex == 0u && group_missed != 0u) {
+    uint k = atomicAdd(fallback_dispatch[0], 1u);
+    fallback_groups[k] = group.x | (group.y << 16);
+  }
+#endif
 }

@@ -181,9 +181,11 @@ class ShadowMaskPass {
   Output run(const PassContext& ctx, const Input& in, int width, int height);
 
  private:
-  gl::Texture mask_, geometry_;              // step 1: half resolution
-  gl::Texture resolved_;                     // step 2: the frame's resolution
-  gl::Buffer lights_;                        // per dispatch layer: its light's index
+  gl::Texture mask_, geometry_;   // step 1: half resolution
+  gl::Texture resolved_;          // step 2: the frame's resolution
+  gl::Buffer lights_;             // per dispatch layer: its light's index
+  gl::Buffer fallback_;           // the resolve's indirect dispatch and the workgroups it lists
+  size_t fallback_capacity_ = 0;  // workgroups
   int width_ = 0, height_ = 0, layers_ = 0;  // the frame's size, the layers
   size_t lights_capacity_ = 0;
 };

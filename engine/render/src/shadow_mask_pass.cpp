@@ -58,16 +58,38 @@ ShadowMaskPass::Output ShadowMaskPass::run(const PassContext& ctx, const Input& 
   // 8 x 8 invocations of 4 texels a column each (shadow_mask.comp).
   glDispatchCompute(GLuint((w + 7) / 8), GLuint((h + 31) / 32), GLuint(in.mapped.size()));
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-  // Step 2: every pixel's visibility of every light, upsampled (shadow_resolve.comp).
-  const GLuint resolve = ctx.programs.get(
-      {"shadow resolve", {{GL_COMPUTE_SHADER, "passes/shadow_resolve.comp"}}, in.defines});
-  b.use(resolve);
-  glProgramUniform1ui(resolve, HV_LOC_SHADOW_MASK_LIGHTS, GLuint(in.mapped.size()));
+  // Step 2: every pixel's visibility of every light, upsampled (shadow_resolve.comp), in 8 x 8
+  // invocations of 4 pixels a column each; the workgroups with a pixel that no texel holds are
+  // listed for step 3.
+  const GLuint gx = GLuint((width + 7) / 8), gy = GLuint((height + 31) / 32);
+  if (size_t(gx) * gy > fallback_capacity_) {
+    fallback_capacity_ = size_t(gx) * gy;
+    fallback_ = gl::createBuffer("shadow resolve fallback (indirect dispatch, workgroups)",
+                                 (3 + fallback_capacity_) * sizeof(uint32_t));
+  }
+  const uint32_t reset[3] = {0, 1, 1};  // no workgroup yet
+  glNamedBufferSubData(fallback_.id(), 0, sizeof reset, reset);
+  b.storage(HV_BINDING_SHADOW_FALLBACK, fallback_.id());
   b.texture(HV_UNIT_SHADOW_MASK, mask_.id(), ctx.nearest);
   b.texture(HV_UNIT_SHADOW_MASK_GEOMETRY, geometry_.id(), ctx.nearest);
   b.image(HV_IMAGE_SHADOW_MASK, resolved_.id(), GL_WRITE_ONLY, GL_R8, 0, GL_TRUE);
-  // 8 x 8 invocations of 4 pixels a column each.
-  glDispatchCompute(GLuint((width + 7) / 8), GLuint((height + 31) / 32), 1);
+  for (const char* step : {"0", "1"}) {
+    gl::DefineSet defines = in.defines;
+    defines.push_back({"HV_SHADOW_RESOLVE_FALLBACK", step});
+    const GLuint resolve = ctx.programs.get(
+        {"shadow resolve", {{GL_COMPUTE_SHADER, "passes/shadow_resolve.comp"}}, defines});
+    b.use(resolve);
+    glProgramUniform1ui(resolve, HV_LOC_SHADOW_MASK_LIGHTS, GLuint(in.mapped.size()));
+    if (step[0] == '0') {
+      glDispatchCompute(gx, gy, 1);
+      glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+      continue;
+    }
+    // Step 3: the maps' lookup in the listed workgroups alone (an indirect dispatch).
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, fallback_.id());
+    glDispatchComputeIndirect(0);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  }
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
   return {resolved_.id()};
 }
