@@ -26,10 +26,16 @@ layout(r8, binding = HV_IMAGE_SHADOW_MASK) uniform writeonly image2DArray i_reso
 #ifndef HV_SHADOW_RESOLVE_FALLBACK
 #define HV_SHADOW_RESOLVE_FALLBACK 0
 #endif
-// The workgroups with a pixel that no texel holds: an indirect dispatch's (x, 1, 1), x counted
-// by the resolve, then the groups' IDs (x + y << 16), one per workgroup of the fallback.
+// The workgroups with a pixel that no texel holds: the indirect dispatch's (x, y, 1), which the
+// resolve grows as it lists them (at most HV_SHADOW_FALLBACK_ROW workgroups a row, under GL's
+// least maximum of 65535 per dimension), their count, then the groups' IDs (x + y << 16), one per
+// workgroup of the fallback.
+#ifndef HV_SHADOW_FALLBACK_ROW
+#define HV_SHADOW_FALLBACK_ROW 65535u
+#endif
 layout(std430, binding = HV_BINDING_SHADOW_FALLBACK) buffer FallbackBlock {
   uint fallback_dispatch[3];
+  uint fallback_count;
   uint fallback_groups[];
 };
 
@@ -39,7 +45,9 @@ shared uint group_missed;  // 1 when some pixel of the workgroup missed
 
 void main() {
 #if HV_SHADOW_RESOLVE_FALLBACK
-  uint listed = fallback_groups[gl_WorkGroupID.x];
+  uint slot = gl_WorkGroupID.y * HV_SHADOW_FALLBACK_ROW + gl_WorkGroupID.x;
+  if (slot >= fallback_count) return;  // the last row's rest (the whole workgroup)
+  uint listed = fallback_groups[slot];
   uvec2 group = uvec2(listed & 0xffffu, listed >> 16);
 #else
   uvec2 group = gl_WorkGroupID.xy;
@@ -89,8 +97,10 @@ void main() {
   if (any(miss)) group_missed = 1u;
   barrier();
   if (gl_LocalInvocationIndex == 0u && group_missed != 0u) {
-    uint k = atomicAdd(fallback_dispatch[0], 1u);
+    uint k = atomicAdd(fallback_count, 1u);
     fallback_groups[k] = group.x | (group.y << 16);
+    atomicMax(fallback_dispatch[0], min(k + 1u, HV_SHADOW_FALLBACK_ROW));
+    atomicMax(fallback_dispatch[1], k / HV_SHADOW_FALLBACK_ROW + 1u);
   }
 #endif
 }

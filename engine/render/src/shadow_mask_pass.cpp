@@ -65,9 +65,9 @@ ShadowMaskPass::Output ShadowMaskPass::run(const PassContext& ctx, const Input& 
   if (size_t(gx) * gy > fallback_capacity_) {
     fallback_capacity_ = size_t(gx) * gy;
     fallback_ = gl::createBuffer("shadow resolve fallback (indirect dispatch, workgroups)",
-                                 (3 + fallback_capacity_) * sizeof(uint32_t));
+                                 (4 + fallback_capacity_) * sizeof(uint32_t));
   }
-  const uint32_t reset[3] = {0, 1, 1};  // no workgroup yet
+  const uint32_t reset[4] = {0, 0, 1, 0};  // no workgroup yet: a dispatch of none
   glNamedBufferSubData(fallback_.id(), 0, sizeof reset, reset);
   b.storage(HV_BINDING_SHADOW_FALLBACK, fallback_.id());
   b.texture(HV_UNIT_SHADOW_MASK, mask_.id(), ctx.nearest);
