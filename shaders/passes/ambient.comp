@@ -142,8 +142,9 @@ vec4 aoAt(ivec2 px, float depth) {
 }
 
 #if HV_AO_SPECULAR == HV_AO_SPECULAR_TRACED
-// The traced specular occlusion (ao_specular: traced; constants and weight: ao.glsl, HV_AO_TRACE_*)
-// of a lobe of perceptual roughness r along dir (world, unit) from the surface in pixel px at
+// The traced specular occlusion (ao_specular: traced; constants and weight: ao.glsl,
+// HV_AO_TRACE_*) of a lobe of perceptual roughness r along dir (world, unit) from the surface
+// point P (world; main reconstructs it once for the base and the coat) whose reversed-Z depth is
 // `depth`: the visibility of the environment along that ray, 0 where something on screen lies
 // across it within HV_AO_TRACE_REACH ao_radius, else 1, weighted against Lagarde's occlusion from
 // the AO (`lagarde`) by aoTraceWeight: a ray stands for a narrow lobe, not a wide one. Points off
@@ -151,10 +152,8 @@ vec4 aoAt(ivec2 px, float depth) {
 // Depth is read bilinearly (PassContext::bilinear): a plane's reversed-Z depth is affine in
 // screen space, so a floor seen at a grazing angle does not occlude itself between texel centres.
 // The march's count is 0 where the weight is (rough lobes): a SIMD row of them skips it.
-float tracedSpecularOcclusion(ivec2 px, float depth, vec3 dir, float roughness, float lagarde) {
+float tracedSpecularOcclusion(vec3 P, float depth, vec3 dir, float roughness, float lagarde) {
   float weight = aoTraceWeight(roughness);
-  vec2 uv0 = (vec2(px) + 0.5) / vec2(u_viewport.xy);
-  vec3 P = reconstructWorldPosition(uv0, depth, u_inv_view_proj);
   float radius = u_frame_params.z;
   float reach = HV_AO_TRACE_REACH * radius;
   float start = HV_AO_TRACE_START * u_frame_params.x / max(depth, 1e-9);
@@ -181,12 +180,12 @@ float tracedSpecularOcclusion(ivec2 px, float depth, vec3 dir, float roughness, 
 
 // The screen-space AO's occlusion of the coat's ambient specular: the base's rule (settings.
 // ao_specular) on the coat's normal, roughness, reflection and lookup direction (dirc).
-float coatSpecularOcclusion(ivec2 px, float depth, Surface cs, float NoVc, vec3 Rc, vec3 dirc,
+float coatSpecularOcclusion(vec3 P, float depth, Surface cs, float NoVc, vec3 Rc, vec3 dirc,
                             vec4 ao, float vis) {
 #if HV_AO_SPECULAR == HV_AO_SPECULAR_LAGARDE
   return specularOcclusion(NoVc, vis, cs.alpha);
 #elif HV_AO_SPECULAR == HV_AO_SPECULAR_TRACED
-  return tracedSpecularOcclusion(px, depth, dirc, cs.roughness,
+  return tracedSpecularOcclusion(P, depth, dirc, cs.roughness,
                                  specularOcclusion(NoVc, vis, cs.alpha));
 #elif HV_AO_SPECULAR == HV_AO_SPECULAR_CONE
   return specularOcclusionCone(safeNormalize(ao.yzw), cs.N, Rc, vis, cs.alpha);
@@ -253,6 +252,11 @@ void main() {
 #if HV_AO
     float depth = texelFetch(t_depth, px, 0).r;  // the AO upsample's and the march's
     vec4 ao = aoAt(px, depth);
+#if HV_AO_SPECULAR == HV_AO_SPECULAR_TRACED
+    vec3 P = reconstructWorldPosition(uv, depth, u_inv_view_proj);  // the base's and coat's march
+#else
+    vec3 P = vec3(0.0);
+#endif
     float vis = combineOcclusion(s.cavity, ao.x);
 #if HV_AO_MULTI_BOUNCE
     vec3 diffuse_vis = gtaoMultiBounce(vis, s.diffuse_color);
@@ -264,7 +268,7 @@ void main() {
     specular_vis = specularOcclusion(NoV, vis, s.alpha);
 #elif HV_AO_SPECULAR == HV_AO_SPECULAR_TRACED
     specular_vis =
-        tracedSpecularOcclusion(px, depth, dir, s.roughness, specularOcclusion(NoV, vis, s.alpha));
+        tracedSpecularOcclusion(P, depth, dir, s.roughness, specularOcclusion(NoV, vis, s.alpha));
 #elif HV_AO_SPECULAR == HV_AO_SPECULAR_CONE
     specular_vis = specularOcclusionCone(safeNormalize(ao.yzw), N, R, vis, s.alpha);
 #endif
@@ -276,7 +280,7 @@ void main() {
                                             HV_ENERGY_COMPENSATION != 0, false) *
                     specular_vis;
 #define HV_COAT_OCCLUSION(cs, NoVc, Rc, dirc) \
-  coatSpecularOcclusion(px, depth, cs, NoVc, Rc, dirc, ao, vis)
+  coatSpecularOcclusion(P, depth, cs, NoVc, Rc, dirc, ao, vis)
 #else
     vec3 diffuse = ambientDiffuse(s, E);
     vec3 specular = ambientSpecularFromCube(t_radiance, s, V, radiance, ab, NoV, u_env.x,
