@@ -136,6 +136,36 @@ vec3 ltcCorrection(Surface s, ShadingPoint sp, vec3 c, vec3 along, float sin2, f
   float diagonal = clamp(v_side * (1.0f / HV_LTC_CORRECTION_MIRROR_BAND), -1.0f, 1.0f);
   return ltcCorrectionDiagonal(s, sp, c, along, sin2, omega, I, diagonal);
 }
+
+// The lobe's far tail: a sphere many footprints off the mirror direction sees a part of the lobe
+// that varies smoothly over it, but the LTC, fitted to the lobe's bulk, can be off there by a
+// factor of 4 to 100 at grazing views, and the light correction's two points then disagree with it
+// from pixel to pixel (stripes across a glossy floor: docs/lights.md, "The far tail at grazing
+// views"). There the lobe's own quadrature over the sphere's solid angle replaces the LTC: two
+// points at +-tan(sigma) / 2 from the center toward and away from R, along which the lobe
+// varies most (on a disk of radius t, x = +-t/2 has the second moment t^2 / 4 of the disk's x:
+// exact for a lobe quadratic along that line and linear across it). The weight is 0 within
+// HV_LTC_TAIL_START footprints (2 alpha + sigma, the error budget's unit) of R and 1 beyond
+// HV_LTC_TAIL_END, smooth between; both chosen on the far-tail scene
+// (samples/scenes/checks/ltc_far_tail.json) and checked on the sphere sweep.
+const float HV_LTC_TAIL_START = 2.0f;
+const float HV_LTC_TAIL_END = 3.0f;
+float ltcTailWeight(Surface s, ShadingPoint sp, vec3 L, float sin2) {
+  float footprint = 2.0f * s.alpha + asin(min(sqrt(sin2), 1.0f));
+  float offset = acos(clamp(dot(L, sp.R), -1.0f, 1.0f)) / footprint;
+  return smoothstep(HV_LTC_TAIL_START, HV_LTC_TAIL_END, offset);
+}
+// The lobe's mean over the sphere's cone (sin^2 sigma = sin2, center L) by those two points.
+vec3 ltcTailLobeMean(Surface s, ShadingPoint sp, vec3 L, float sin2) {
+  float s2 = min(sin2, 0.9f);
+  float k = 0.70710678f * sqrt(s2 / (1.0f - s2));
+  vec3 g = safeNormalize(sp.R - L * dot(L, sp.R));
+  vec3 h = cross(L, g);
+  vec3 f = specularTerm(s, sp, normalize(L + k * g), 1.0f, 1.0f) +
+           specularTerm(s, sp, normalize(L + k * (-0.5f * g + 0.8660254f * h)), 1.0f, 1.0f) +
+           specularTerm(s, sp, normalize(L + k * (-0.5f * g - 0.8660254f * h)), 1.0f, 1.0f);
+  return f * (1.0f / 3.0f);
+}
 #endif
 
 // Sphere light specular (HV_SPHERE_SPECULAR_LTC): the integral of the pixel's LTC over the
@@ -158,8 +188,15 @@ vec3 ltcSphereSpecular(Surface s, ShadingPoint sp, vec3 Lc, vec3 L, float d2, fl
   float omega = sphereSolidAngle(sin2);
   // Inside the sphere the integral is exact (the whole hemisphere emits): no correction there
   // (a select; LtcLights.InsideTheSphereTheWholeHemisphereEmits).
+  bool inside = d2 <= r_eff * r_eff;
   specular = specular * mix(ltcCorrection(s, sp, L, vec3(0.0f), sin2, omega, I), vec3(1.0f),
-                            bvec3(d2 <= r_eff * r_eff));
+                            bvec3(inside));
+  // The far tail: the lobe's quadrature (ltcTailWeight). Not inside the sphere, nor for a sphere
+  // that straddles the horizon, whose part above the surface the straddling correction computes
+  // from this whole cone's LTC (sphereLightStraddleCorrection).
+  float tail = inside || ltcSphereStraddles(s.N, Lc, r_eff) ? 0.0f : ltcTailWeight(s, sp, L, sin2);
+  vec3 lobe = ltcTailLobeMean(s, sp, L, sin2) * (omega * falloff * d2c / (PI * r_eff * r_eff));
+  specular = mix(specular, lobe, vec3(tail));
 #endif
   return specular;
 }
