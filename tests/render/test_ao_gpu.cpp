@@ -136,9 +136,10 @@ TEST(AoGpu, RestingSphereFloorMatchesAnalytic) {
       }
       EXPECT_GT(checked, size * size / 2);
       // The goal (every pixel within 10%) is missed in a ring just outside the sphere's outline
-      // (x ~ 0.56 m, seen from above): a depth buffer holds the sphere as a column down to the
-      // floor, which hides more sky low over the horizon than the sphere does. Asserted: the mean,
-      // at most 0.5% of the pixels over 10%, none over 25%.
+      // (x ~ 0.56 m, seen from above), both ways: too dark where a depth buffer's column under
+      // the sphere hides sky that the sphere leaves open, too bright where the first step misses
+      // the silhouette (docs/ambient-occlusion.md). Asserted: the mean, at most 0.5% of the
+      // pixels over 10%, none over 25%.
       EXPECT_LT(sum / std::max(checked, 1), 0.02) << toString(q) << ", " << toString(res);
       EXPECT_LE(over, checked / 200) << toString(q) << ", " << toString(res);
       EXPECT_LT(worst, 0.25) << toString(q) << ", " << toString(res);
