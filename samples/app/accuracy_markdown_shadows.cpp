@@ -59,9 +59,11 @@ std::string shadowsMarkdown(const eval::ShadowAccuracy& a) {
      << headerRow({"light", "h (m)", "pixels (penumbra)", "ref. noise", "unshadowed",
                    "hard: mean / penumbra / worst (at cm)", "pcf: mean / penumbra / worst (at cm)",
                    "pcss: mean / penumbra / worst (at cm)",
+                   "pcss, shadow_quality high: mean / penumbra / worst (at cm)",
                    "pcss, shadow_resolution half: mean / penumbra / worst (at cm)",
-                   "width (cm): ref / hard / pcf / pcss / pcss half"});
-  double pcss_sum = 0.0, pcss_max = 0.0, half_sum = 0.0, half_max = 0.0;
+                   "width (cm): ref / hard / pcf / pcss / pcss high / pcss half"});
+  double pcss_sum = 0.0, pcss_max = 0.0, half_sum = 0.0, half_max = 0.0, high_sum = 0.0,
+         high_max = 0.0;
   for (const eval::ShadowCaseResult& r : a.rows) {
     std::vector<std::string> cells = {
         lightName(r.c), num(r.c.occluder_height),
@@ -73,9 +75,10 @@ std::string shadowsMarkdown(const eval::ShadowAccuracy& a) {
                       pct(f.worst_rel) + " (" + cm(f.worst_rho) + ")");
       widths += " / " + cm(f.width);
       const bool half = f.resolution == ShadowResolution::Half;
+      const bool high = f.quality == ShadowQuality::High;
       if (f.filter == ShadowFilter::Pcss) {
-        (half ? half_sum : pcss_sum) += f.mean_rel;
-        double& m = half ? half_max : pcss_max;
+        (half ? half_sum : high ? high_sum : pcss_sum) += f.mean_rel;
+        double& m = half ? half_max : high ? high_max : pcss_max;
         m = std::max(m, f.mean_rel);
       }
     }
@@ -90,7 +93,10 @@ std::string shadowsMarkdown(const eval::ShadowAccuracy& a) {
      << pct(pcss_sum / rows) << ", worst row " << pct(pcss_max) << " ("
      << verdict(pcss_sum / rows, pcss_max) << "); with shadow_resolution half (the visibility "
      << "once per 2x2 pixels, upsampled: docs/lights.md, \"Shadows\") mean " << pct(half_sum / rows)
-     << ", worst row " << pct(half_max) << " (" << verdict(half_sum / rows, half_max) << ").\n\n";
+     << ", worst row " << pct(half_max) << " (" << verdict(half_sum / rows, half_max)
+     << "); with shadow_quality high (32 gathers in the blocker search: docs/lights.md, \"Shadow "
+     << "quality\") mean " << pct(high_sum / rows) << ", worst row " << pct(high_max) << " ("
+     << verdict(high_sum / rows, high_max) << ").\n\n";
   return md.str();
 }
 

@@ -11,6 +11,7 @@
 //  HV_SHADOW_MAP_SIZE 512     texels per cube face side (settings.shadow_map_size)
 //  HV_SHADOW_RESOLUTION       full: the light pass looks the maps up per pixel; half: the shadow
 //                             mask pass does, per 2x2 pixels (shadow_mask.glsl)
+//  HV_SHADOW_QUALITY          medium | high: PCSS's blocker search, HV_PCSS_SEARCH_GATHERS
 #ifndef HV_SHADOWS_GLSL
 #define HV_SHADOWS_GLSL
 
@@ -30,6 +31,9 @@
 #endif
 #ifndef HV_SHADOW_RESOLUTION
 #define HV_SHADOW_RESOLUTION HV_SHADOW_RESOLUTION_FULL
+#endif
+#ifndef HV_SHADOW_QUALITY
+#define HV_SHADOW_QUALITY HV_SHADOW_QUALITY_MEDIUM
 #endif
 // Bias, in texels of the map at the receiver's distance (measured: docs/lights.md, "Shadows",
 // acne at 80 degrees from the normal against light leaking at contact). The receiver moves along
@@ -153,9 +157,16 @@ layout(binding = HV_UNIT_SHADOW_COMPARE) uniform samplerCubeArrayShadow t_shadow
 
 // The taps of PCSS's filter (a Vogel disk of bilinear comparisons; twice as many over an ellipse
 // more than twice as long as wide) and of its blocker search (a Vogel disk of gathers, each the
-// 2 x 2 texels around its point: four distances per fetch).
+// 2 x 2 texels around its point: four distances per fetch). `shadow_quality: high` searches with
+// 32 gathers: the farthest blocker is found more surely, penumbrae come closer to the traced
+// reference's widths and the bands that 8 gathers leave under a long tube go, for a light pass
+// some 70-80% dearer wherever pcss shadows are looked up (docs/lights.md, "Shadow quality").
 #define HV_PCSS_FILTER_TAPS 16
+#if HV_SHADOW_QUALITY == HV_SHADOW_QUALITY_HIGH
+#define HV_PCSS_SEARCH_GATHERS 32
+#else
 #define HV_PCSS_SEARCH_GATHERS 8
+#endif
 
 // What the taps of one receiver share (computed once per receiver and light): its direction D
 // from the light and the frame u, v across it, the receiver plane's coefficients

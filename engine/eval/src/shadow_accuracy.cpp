@@ -288,22 +288,30 @@ ShadowCaseResult measureShadowCase(const ShadowCase& c, const ShadowCaseOptions&
   const ImageRGBf EU = engineDiffuse(unshadowed, n);
   res.unshadowed_mean_rel = meanRelError(EU, ref.unshadowed, floor.use);
 
-  const std::pair<ShadowFilter, ShadowResolution> configs[] = {
-      {ShadowFilter::Hard, ShadowResolution::Full},
-      {ShadowFilter::Pcf, ShadowResolution::Full},
-      {ShadowFilter::Pcss, ShadowResolution::Full},
-      {ShadowFilter::Pcss, ShadowResolution::Half}};
-  for (const auto& [f, resolution] : configs) {
+  struct Config {
+    ShadowFilter filter;
+    ShadowResolution resolution;
+    ShadowQuality quality;
+  };
+  const Config configs[] = {{ShadowFilter::Hard, ShadowResolution::Full, ShadowQuality::Medium},
+                            {ShadowFilter::Pcf, ShadowResolution::Full, ShadowQuality::Medium},
+                            {ShadowFilter::Pcss, ShadowResolution::Full, ShadowQuality::Medium},
+                            {ShadowFilter::Pcss, ShadowResolution::Full, ShadowQuality::High},
+                            {ShadowFilter::Pcss, ShadowResolution::Half, ShadowQuality::Medium}};
+  for (const auto& [f, resolution, quality] : configs) {
     scene.settings.shadow_filter = f;
     scene.settings.shadow_resolution = resolution;
+    scene.settings.shadow_quality = quality;
     const ImageRGBf E = engineDiffuse(scene, n);
     const ShadowSums s = shadowSums(E, EU, ref, floor.use);
     ShadowFilterError fe;
     fe.filter = f;
     fe.resolution = resolution;
+    fe.quality = quality;
     fe.mean_rel = s.ref > 0.0 ? s.abs / s.ref : 0.0;
     fe.penumbra_mean_rel = s.pen_ref > 0.0 ? s.pen_abs / s.pen_ref : 0.0;
-    if (f == ShadowFilter::Pcss && resolution == ShadowResolution::Full) {
+    if (f == ShadowFilter::Pcss && resolution == ShadowResolution::Full &&
+        quality == ShadowQuality::Medium) {
       res.pixels = s.pixels;
       res.penumbra_pixels = s.pen_pixels;
       res.reference_noise = s.ref > 0.0 ? s.se / s.ref : 0.0;

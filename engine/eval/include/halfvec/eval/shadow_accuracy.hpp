@@ -61,6 +61,7 @@ double penumbraWidth(const ShadowProfile& p);
 struct ShadowFilterError {
   ShadowFilter filter = ShadowFilter::Pcss;
   ShadowResolution resolution = ShadowResolution::Full;  // half: the shadow mask, upsampled
+  ShadowQuality quality = ShadowQuality::Medium;         // high: pcss's 32-gather search
   double mean_rel = 0.0;           // sum |E - R| / sum R over lit and penumbra pixels
   double penumbra_mean_rel = 0.0;  // the same over penumbra pixels (either between 2% and 98%)
   double worst_rel = 0.0;          // largest |E - R| / R of a profile bin with R >= 10% unlit
@@ -78,7 +79,8 @@ struct ShadowCaseResult {
   double unshadowed_mean_rel = 0.0;
   double pixel_metres = 0.0;  // a pixel's footprint on the floor
   ShadowProfile reference_profile;
-  std::vector<ShadowFilterError> filters;  // hard, pcf, pcss, then pcss at half resolution
+  // hard, pcf, pcss, pcss with shadow_quality high, then pcss at half resolution
+  std::vector<ShadowFilterError> filters;
 };
 ShadowCaseResult measureShadowCase(const ShadowCase& c, const ShadowCaseOptions& o);
 

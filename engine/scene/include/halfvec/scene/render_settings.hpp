@@ -147,6 +147,11 @@ HV_SETTING_ENUM(ShadowFilter, HV_SHADOW_FILTERS);
 #define HV_SHADOW_RESOLUTIONS(V) \
   V(Full, "full", HV_SHADOW_RESOLUTION_FULL) V(Half, "half", HV_SHADOW_RESOLUTION_HALF)
 HV_SETTING_ENUM(ShadowResolution, HV_SHADOW_RESOLUTIONS);
+// How densely PCSS's blocker search covers the emitter (docs/lights.md, "Shadow quality"): 8
+// gathers, or 32 (more accurate penumbrae, no bands under long tubes, a dearer light pass).
+#define HV_SHADOW_QUALITIES(V) \
+  V(Medium, "medium", HV_SHADOW_QUALITY_MEDIUM) V(High, "high", HV_SHADOW_QUALITY_HIGH)
+HV_SETTING_ENUM(ShadowQuality, HV_SHADOW_QUALITIES);
 // Screen-space ambient occlusion (docs/ambient-occlusion.md): none, or GTAO (Jimenez, Wu, Pesce,
 // Jarabo 2016), its quality (directions x steps), resolution and specular occlusion.
 #define HV_AMBIENT_OCCLUSIONS(V) V(None, "none", HV_AO_NONE) V(Gtao, "gtao", HV_AO_GTAO)
@@ -366,6 +371,10 @@ struct SettingInfo {
     (SettingInfo{.feature = SettingFeature::ShadowedLights, .define = "HV_SHADOW_RESOLUTION",      \
                  .pass = SettingPass::Light, .trade = true, .trade_group = "lights",               \
                  .label = "shadow resolution"}))                                                   \
+  X(ShadowQuality, shadow_quality, ShadowQuality::Medium, "shadow_quality",                        \
+    (SettingInfo{.feature = SettingFeature::ShadowedLights, .define = "HV_SHADOW_QUALITY",         \
+                 .pass = SettingPass::Light, .trade = true, .trade_group = "lights",               \
+                 .label = "shadow quality"}))                                                      \
   /* every feature compiled in, chosen at run time (docs/variants.md) */                           \
   X(bool, uber, false, "uber", (SettingInfo{}))
 // clang-format on
