@@ -150,7 +150,8 @@ void addLightOptions(std::vector<Option>& o) {
 }
 
 // Shadowed lights (docs/lights.md, "Shadows"): each filter, PCSS with the smallest maps (the
-// largest texels, so the largest biases and filters) and with the half-resolution mask.
+// largest texels, so the largest biases and filters), with the half-resolution mask and with the
+// high quality search.
 void addShadowOptions(std::vector<Option>& o) {
   for (ShadowFilter f : {ShadowFilter::Pcss, ShadowFilter::Pcf, ShadowFilter::Hard}) {
     o.push_back({"shadows, shadow_filter=" + std::string(toString(f)),
@@ -161,6 +162,9 @@ void addShadowOptions(std::vector<Option>& o) {
   // The shadow mask: PCSS once per 2x2 pixels, upsampled (shadow_mask.glsl).
   o.push_back({"shadows, shadow_resolution=half",
                [](RenderSettings& s) { s.shadow_resolution = ShadowResolution::Half; }, true});
+  // PCSS's 32-gather blocker search.
+  o.push_back({"shadows, shadow_quality=high",
+               [](RenderSettings& s) { s.shadow_quality = ShadowQuality::High; }, true});
 }
 
 // Screen-space AO (docs/ambient-occlusion.md) on its edge-case scene: each specular occlusion,
