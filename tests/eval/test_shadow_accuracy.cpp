@@ -33,6 +33,16 @@ const ShadowFilterError& pcssHalf(const ShadowCaseResult& r) {
   return r.filters.back();
 }
 
+// shadows.json's tube (r 0.08, 1.2 m long, its axis `axis`) 1.5 m off to the side of a resting
+// sphere, measured at 96 x 96 with 16 reference samples per pixel (the contact rows of
+// `halfvec accuracy`, smaller).
+ShadowCaseResult contactTube(glm::vec3 axis) {
+  ShadowCaseOptions o;
+  o.size = 96;
+  o.samples = 16;
+  return measureShadowCase({0.08f, 1.2f, axis, kShadowOccluderRadius, 1.5f}, o);
+}
+
 }  // namespace
 
 // A synthetic profile: 0 up to 1 m, a linear ramp to 1 at 2 m: the 10%-90% width is 0.8 m.
@@ -94,11 +104,7 @@ TEST(ShadowAccuracy, PenumbraWidensWithRadiusAndDistanceInEngineAndReference) {
 // search finds them.
 TEST(ShadowAccuracy, LongCapsuleContactShadowKeepsItsPenumbra) {
   auto ctx = createHeadlessContext();
-  ShadowCaseOptions o;
-  o.size = 96;
-  o.samples = 16;
-  const ShadowCaseResult r =
-      measureShadowCase({0.08f, 1.2f, {1, 0, 0}, kShadowOccluderRadius, 1.5f}, o);
+  const ShadowCaseResult r = contactTube({1, 0, 0});
   std::printf(
       "capsule contact: width ref %.4f pcss %.4f half %.4f m; mean rel hard %.3f pcss "
       "%.3f half %.3f; worst pcss %.3f\n",
@@ -121,11 +127,7 @@ TEST(ShadowAccuracy, LongCapsuleContactShadowKeepsItsPenumbra) {
 // error over the penumbra are the lower.
 TEST(ShadowAccuracy, HighQualitySearchSmoothsALongTubesPenumbra) {
   auto ctx = createHeadlessContext();
-  ShadowCaseOptions o;
-  o.size = 96;
-  o.samples = 16;
-  const ShadowCaseResult r =
-      measureShadowCase({0.08f, 1.2f, {0, 0, 1}, kShadowOccluderRadius, 1.5f}, o);
+  const ShadowCaseResult r = contactTube({0, 0, 1});
   std::printf(
       "capsule across, contact: worst bin pcss %.3f high %.3f; penumbra pcss %.3f high %.3f; "
       "width ref %.4f pcss %.4f high %.4f m\n",
