@@ -138,16 +138,17 @@ vec3 ltcCorrection(Surface s, ShadingPoint sp, vec3 c, vec3 along, float sin2, f
 }
 
 // The lobe's far tail: a sphere many footprints off the mirror direction sees a part of the lobe
-// that varies smoothly over it, but the LTC, fitted to the lobe's bulk, can be off there by a
-// factor of 4 to 100 at grazing views, and the light correction's two points then disagree with it
-// from pixel to pixel (stripes across a glossy floor: docs/lights.md, "The far tail at grazing
-// views"). There the lobe's own quadrature over the sphere's solid angle replaces the LTC: two
-// points at +-tan(sigma) / 2 from the center toward and away from R, along which the lobe
-// varies most (on a disk of radius t, x = +-t/2 has the second moment t^2 / 4 of the disk's x:
-// exact for a lobe quadratic along that line and linear across it). The weight is 0 within
-// HV_LTC_TAIL_START footprints (2 alpha + sigma, the error budget's unit) of R and 1 beyond
-// HV_LTC_TAIL_END, smooth between; both chosen on the far-tail scene
-// (samples/scenes/checks/ltc_far_tail.json) and checked on the sphere sweep.
+// that varies smoothly over it, but the LTC, fitted to the lobe's bulk, can be far from the lobe
+// there at grazing views (the LTC with its light correction read 5-7% of the lobe's integral in
+// LtcLights.FarTailAtGrazingViewsFollowsTheLobe), and the correction's weight swings from pixel
+// to pixel (stripes across a glossy floor: docs/lights.md, "The far tail at grazing views").
+// There the lobe's own quadrature over the sphere's solid angle replaces the LTC: the disk's
+// 3-point rule, points at tan(sigma) / sqrt(2) from the center, 120 degrees apart, one toward R
+// (on a disk of radius t each coordinate's second moment is t^2 / 4, which three such points
+// match: exact for a lobe quadratic over the disk). The weight is 0 within HV_LTC_TAIL_START
+// footprints (2 alpha + sigma, the error budget's unit) of R and 1 beyond HV_LTC_TAIL_END, smooth
+// between; both chosen on the far-tail scene (samples/scenes/checks/ltc_far_tail.json) and
+// checked on the sphere sweep.
 const float HV_LTC_TAIL_START = 2.0f;
 const float HV_LTC_TAIL_END = 3.0f;
 float ltcTailWeight(Surface s, ShadingPoint sp, vec3 L, float sin2) {
@@ -155,7 +156,7 @@ float ltcTailWeight(Surface s, ShadingPoint sp, vec3 L, float sin2) {
   float offset = acos(clamp(dot(L, sp.R), -1.0f, 1.0f)) / footprint;
   return smoothstep(HV_LTC_TAIL_START, HV_LTC_TAIL_END, offset);
 }
-// The lobe's mean over the sphere's cone (sin^2 sigma = sin2, center L) by those two points.
+// The lobe's mean over the sphere's cone (sin^2 sigma = sin2, center L) by those three points.
 vec3 ltcTailLobeMean(Surface s, ShadingPoint sp, vec3 L, float sin2) {
   float s2 = min(sin2, 0.9f);
   float k = 0.70710678f * sqrt(s2 / (1.0f - s2));
