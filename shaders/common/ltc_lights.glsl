@@ -194,10 +194,15 @@ vec3 ltcSphereSpecular(Surface s, ShadingPoint sp, vec3 Lc, vec3 L, float d2, fl
                             bvec3(inside));
   // The far tail: the lobe's quadrature (ltcTailWeight). Not inside the sphere, nor for a sphere
   // that straddles the horizon, whose part above the surface the straddling correction computes
-  // from this whole cone's LTC (sphereLightStraddleCorrection).
+  // from this whole cone's LTC (sphereLightStraddleCorrection). Behind a branch: a GPU skips the
+  // three lobe evaluations where no pixel of a wave is in the tail (llvmpipe runs them anyway,
+  // at the same cost as without the branch: docs/lights.md, "The far tail by the lobe's
+  // quadrature").
   float tail = inside || ltcSphereStraddles(s.N, Lc, r_eff) ? 0.0f : ltcTailWeight(s, sp, L, sin2);
-  vec3 lobe = ltcTailLobeMean(s, sp, L, sin2) * (omega * falloff * d2c / (PI * r_eff * r_eff));
-  specular = mix(specular, lobe, vec3(tail));
+  if (tail > 0.0f) {
+    vec3 lobe = ltcTailLobeMean(s, sp, L, sin2) * (omega * falloff * d2c / (PI * r_eff * r_eff));
+    specular = mix(specular, lobe, vec3(tail));
+  }
 #endif
   return specular;
 }

@@ -73,23 +73,23 @@ ShadowMaskPass::Output ShadowMaskPass::run(const PassContext& ctx, const Input& 
   b.texture(HV_UNIT_SHADOW_MASK, mask_.id(), ctx.nearest);
   b.texture(HV_UNIT_SHADOW_MASK_GEOMETRY, geometry_.id(), ctx.nearest);
   b.image(HV_IMAGE_SHADOW_MASK, resolved_.id(), GL_WRITE_ONLY, GL_R8, 0, GL_TRUE);
-  for (const char* step : {"0", "1"}) {
+  // The resolve (HV_SHADOW_RESOLVE_FALLBACK 0) or its fallback (1), bound.
+  const auto useResolve = [&](const char* fallback) {
     gl::DefineSet defines = in.defines;
-    defines.push_back({"HV_SHADOW_RESOLVE_FALLBACK", step});
+    defines.push_back({"HV_SHADOW_RESOLVE_FALLBACK", fallback});
     const GLuint resolve = ctx.programs.get(
         {"shadow resolve", {{GL_COMPUTE_SHADER, "passes/shadow_resolve.comp"}}, defines});
     b.use(resolve);
     glProgramUniform1ui(resolve, HV_LOC_SHADOW_MASK_LIGHTS, GLuint(in.mapped.size()));
-    if (step[0] == '0') {
-      glDispatchCompute(gx, gy, 1);
-      glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-      continue;
-    }
-    // Step 3: the maps' lookup in the listed workgroups alone (an indirect dispatch).
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, fallback_.id());
-    glDispatchComputeIndirect(0);
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-  }
+  };
+  useResolve("0");
+  glDispatchCompute(gx, gy, 1);
+  glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  // Step 3: the maps' lookup in the listed workgroups alone (an indirect dispatch).
+  useResolve("1");
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, fallback_.id());
+  glDispatchComputeIndirect(0);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
   return {resolved_.id()};
 }
